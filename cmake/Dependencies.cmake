@@ -1,0 +1,23 @@
+# Every dependency comes from Debian's packages; ci/install-deps.sh lists them.
+find_package(Vulkan REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(OpenImageIO REQUIRED)
+find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+
+# Debian's OpenImageIO 2.4.7 exports /usr/include/opencv4 as an include directory
+# although the package does not depend on OpenCV; CMake refuses to generate with a
+# missing include path, so drop every entry that does not exist.
+foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
+  if(dirs)
+    set(kept "")
+    foreach(dir IN LISTS dirs)
+      if(EXISTS "${dir}")
+        list(APPEND kept "${dir}")
+      endif()
+    endforeach()
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${kept}")
+  endif()
+endforeach()

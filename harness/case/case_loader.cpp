@@ -1,0 +1,87 @@
+#include "case/case_loader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "case/case_error.h"
+#include "case/case_validate.h"
+#include "case/json_reader.h"
+#include "case/json_writer.h"
+#include "core/sha256.h"
+
+namespace taa::cases {
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+LoadedCase parseCase(const std::string& text, const std::filesystem::path& file) {
+  const std::string where = file.string();
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // nlohmann reports a byte offset; turn it into line:column for the user.
+    const size_t offset = std::min<size_t>(e.byte, text.size());
+    int line = 1, column = 1;
+    for (size_t i = 0; i + 1 < offset; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    throw CaseError({where + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                     ": not valid JSON (" + e.what() + "); fix the syntax at that position"});
+  }
+  if (!root.is_object()) throw CaseError({where + ": the case must be a JSON object {...}"});
+
+  LoadedCase out;
+  out.spec.file = file;
+  out.spec.name = file.stem().string();
+  ReadContext ctx{where, {}, {}};
+  JsonReader reader(root, "", ctx);
+  fields(reader, out.spec);
+  reader.finish();
+  if (!ctx.problems.empty()) throw CaseError(ctx.problems);
+  out.present = std::move(ctx.present);
+  validateCase(out.spec, out.present);
+  out.sha256 = sha256Hex(text.data(), text.size());
+  return out;
+}
+
+LoadedCase loadCase(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw CaseError({file.string() + ": cannot open the case file; check the path"});
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parseCase(buffer.str(), file);
+}
+
+nlohmann::json resolvedJson(const spec::CaseSpec& spec) {
+  nlohmann::json out;
+  JsonWriter writer(out);
+  auto copy = spec;
+  fields(writer, copy);
+  return out;
+}
+
+nlohmann::json settingsSchema() {
+  auto rows = nlohmann::json::array();
+  SchemaLister lister(rows, "");
+  spec::CaseSpec defaults;
+  fields(lister, defaults);
+  return rows;
+}
+
+}  // namespace taa::cases

@@ -1,0 +1,31 @@
+// Case files: JSON in, a fully resolved CaseSpec out, or a CaseError listing every
+// problem with its file, key path and fix.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "spec/case_spec.h"
+
+namespace taa::cases {
+
+struct LoadedCase {
+  spec::CaseSpec spec;
+  std::set<std::string> present;  // key paths the file sets; the rest are defaults
+  std::string sha256;             // of the file's bytes, for stale-golden detection
+};
+
+LoadedCase loadCase(const std::filesystem::path& file);
+
+// Parses JSON text as if read from `file` (tests and in-memory cases use this).
+LoadedCase parseCase(const std::string& text, const std::filesystem::path& file);
+
+// Every value in force, as JSON (taa-harness validate --print).
+nlohmann::json resolvedJson(const spec::CaseSpec& spec);
+
+// One row per setting of the case format (taa-harness techniques --json).
+nlohmann::json settingsSchema();
+
+}  // namespace taa::cases

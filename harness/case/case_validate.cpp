@@ -1,0 +1,151 @@
+#include "case/case_validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <glm/geometric.hpp>
+
+#include "case/case_error.h"
+
+namespace taa::cases {
+
+namespace {
+
+using namespace taa::spec;
+
+class Problems {
+ public:
+  explicit Problems(std::string file) : file_(std::move(file)) {}
+  void add(const std::string& key, const std::string& msg) { list_.push_back(file_ + ": " + key + ": " + msg); }
+  void throwIfAny() {
+    if (!list_.empty()) throw CaseError(list_);
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::string> list_;
+};
+
+// Relative asset paths must stay inside the case's folder tree, so a case never
+// reads arbitrary files and stays portable across checkouts.
+void checkAssetPath(Problems& p, const std::string& key, const std::string& value) {
+  if (value.find("://") != std::string::npos) {
+    p.add(key, "'" + value + "' is a URI; only local files next to the case are allowed");
+    return;
+  }
+  const std::filesystem::path path(value);
+  if (path.is_absolute()) {
+    p.add(key, "'" + value + "' is absolute; give a path relative to the case file");
+    return;
+  }
+  for (const auto& part : path.lexically_normal())
+    if (part == "..") {
+      p.add(key, "'" + value + "' leaves the case's folder; move the asset under it");
+      return;
+    }
+}
+
+template <class T>
+void checkFrames(Problems& p, const std::string& key, const std::vector<T>& frames, int count) {
+  for (size_t i = 0; i < frames.size(); ++i)
+    if (frames[i] >= count)
+      p.add(key + "[" + std::to_string(i) + "]",
+            "frame " + std::to_string(frames[i]) + " is past the last frame " + std::to_string(count - 1) +
+                "; lower it or raise script.frames");
+}
+
+void validateCamera(Problems& p, CameraSpec& cam, int frames) {
+  if (cam.near_plane >= cam.far_plane)
+    p.add("camera.near", "near (" + std::to_string(cam.near_plane) + ") must be below far (" +
+                             std::to_string(cam.far_plane) + ")");
+  if (glm::length(cam.target - cam.position) <= 0.0f)
+    p.add("camera.target", "target equals position; the view direction is undefined");
+  const auto& path = cam.path;
+  const size_t n = path.points.size();
+  const size_t needed = path.type == CurveType::BSpline3 ? 4 : path.type == CurveType::BSpline2 ? 3 : 2;
+  if (n > 0 && n < needed)
+    p.add("camera.path.points", std::to_string(n) + " points given; a " + enumToString(path.type) +
+                                    " path needs at least " + std::to_string(needed));
+  for (size_t i = 0; i < cam.cuts.size(); ++i) {
+    const auto& c = cam.cuts[i];
+    const std::string key = "camera.cuts[" + std::to_string(i) + "]";
+    if (c.frame >= frames) p.add(key + ".frame", "past the last frame; lower it or raise script.frames");
+    if (i > 0 && c.frame <= cam.cuts[i - 1].frame)
+      p.add(key + ".frame", "cuts must be listed in increasing frame order");
+    if (glm::length(c.target - c.position) <= 0.0f) p.add(key + ".target", "target equals position");
+  }
+}
+
+void validateMovers(Problems& p, std::vector<MoverSpec>& movers, const std::set<std::string>& present) {
+  for (size_t i = 0; i < movers.size(); ++i) {
+    const auto& m = movers[i];
+    const std::string key = "movers[" + std::to_string(i) + "]";
+    if (m.shape == MoverShape::Gltf && m.gltf.empty())
+      p.add(key + ".gltf", "shape is gltf but no file is given; set gltf to a .gltf/.glb path");
+    if (m.shape != MoverShape::Gltf && !m.gltf.empty())
+      p.add(key + ".gltf", "a file is given but shape is '" + std::string(enumToString(m.shape)) +
+                               "'; set shape to gltf or remove gltf");
+    if (!m.gltf.empty()) checkAssetPath(p, key + ".gltf", m.gltf);
+    if (present.count(key + ".animation_speed") && m.shape != MoverShape::Gltf)
+      p.add(key + ".animation_speed", "only glTF movers have animations; remove it");
+    if (m.rotation_speed_deg != 0.0f && glm::length(m.rotation_axis) <= 0.0f)
+      p.add(key + ".rotation_axis", "a zero axis cannot rotate; give a non-zero axis");
+  }
+}
+
+void validateJitter(Problems& p, JitterSpec& j, const std::set<std::string>& present) {
+  if (j.pattern == JitterPattern::Manual && j.points.empty())
+    p.add("jitter.points", "the manual pattern needs at least one point, e.g. [[0.25, -0.25]]");
+  if (j.pattern != JitterPattern::Manual && present.count("jitter.points"))
+    p.add("jitter.points", "points are used only by the manual pattern; set jitter.pattern to manual");
+  if (j.pattern != JitterPattern::Halton && present.count("jitter.length"))
+    p.add("jitter.length", "length applies only to the halton pattern; remove it");
+  for (size_t i = 0; i < j.points.size(); ++i)
+    if (std::fabs(j.points[i].x) > 0.5f || std::fabs(j.points[i].y) > 0.5f)
+      p.add("jitter.points[" + std::to_string(i) + "]", "offsets are in pixels and must lie in [-0.5, 0.5]");
+}
+
+void validateRender(Problems& p, RenderSpec& r) {
+  const auto renderW = static_cast<int>(std::lround(float(r.width) / r.upsample));
+  const auto renderH = static_cast<int>(std::lround(float(r.height) / r.upsample));
+  if (renderW < 1 || renderH < 1)
+    p.add("render.upsample", "renders below one pixel; lower upsample or raise the resolution");
+  for (size_t i = 1; i < r.scale_schedule.size(); ++i)
+    if (r.scale_schedule[i].frame <= r.scale_schedule[i - 1].frame)
+      p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
+}
+
+}  // namespace
+
+void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
+  Problems p(spec.file.string());
+  const int frames = spec.script.frames;
+  if (!spec.scene.gltf.empty()) {
+    if (present.count("scene.builtin") && spec.scene.builtin != BuiltinScene::None)
+      p.add("scene.builtin", "both a built-in scene and a glTF file are given; set builtin to none");
+    spec.scene.builtin = BuiltinScene::None;
+    checkAssetPath(p, "scene.gltf", spec.scene.gltf);
+  } else if (spec.scene.builtin == BuiltinScene::None) {
+    p.add("scene", "no scene: set scene.builtin or scene.gltf");
+  }
+  if (glm::length(spec.lighting.direction) <= 0.0f) p.add("lighting.direction", "must be non-zero");
+  validateRender(p, spec.render);
+  validateCamera(p, spec.camera, frames);
+  validateMovers(p, spec.movers, present);
+  validateJitter(p, spec.jitter, present);
+  checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
+  checkFrames(p, "output.frames", spec.output.frames, frames);
+  for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
+    if (spec.render.scale_schedule[i].frame >= frames)
+      p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
+  p.throwIfAny();
+
+  // Canonical forms the renderer relies on.
+  if (spec.output.frames.empty()) spec.output.frames.push_back(frames - 1);
+  std::sort(spec.output.frames.begin(), spec.output.frames.end());
+  spec.output.frames.erase(std::unique(spec.output.frames.begin(), spec.output.frames.end()),
+                           spec.output.frames.end());
+  std::sort(spec.script.reset_history_at.begin(), spec.script.reset_history_at.end());
+}
+
+}  // namespace taa::cases

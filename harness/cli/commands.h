@@ -1,0 +1,17 @@
+// Subcommands of taa-harness. Each takes the arguments after its name and returns
+// an exit code from exit_codes.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace taa::cli {
+
+using Args = std::vector<std::string>;
+
+int dispatch(int argc, char** argv);
+int cmdValidate(const Args& args);
+int cmdTechniques(const Args& args);
+int cmdRender(const Args& args);
+
+}  // namespace taa::cli

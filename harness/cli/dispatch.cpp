@@ -1,0 +1,58 @@
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <map>
+
+#include "case/case_error.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+namespace taa::cli {
+
+namespace {
+struct Command {
+  int (*run)(const Args&);
+  const char* summary;
+};
+
+const std::map<std::string, Command>& commands() {
+  static const std::map<std::string, Command> table = {
+      {"validate", {cmdValidate, "check case files; --print shows every value in force"}},
+      {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader)"}},
+      {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
+  };
+  return table;
+}
+
+void usage(std::ostream& out) {
+  out << "usage: taa-harness <command> [args]\n\ncommands:\n";
+  for (const auto& [name, cmd] : commands()) out << "  " << name << std::string(12 - name.size(), ' ') << cmd.summary << "\n";
+  out << "\nexit codes: 0 pass, 1 regression, 2 bad input, 3 environment (no Vulkan device, ...)\n";
+}
+}  // namespace
+
+int dispatch(int argc, char** argv) {
+  if (argc < 2) {
+    usage(std::cerr);
+    return kBadInput;
+  }
+  const std::string name = argv[1];
+  if (name == "-h" || name == "--help" || name == "help") {
+    usage(std::cout);
+    return kPass;
+  }
+  const auto it = commands().find(name);
+  if (it == commands().end()) {
+    std::cerr << "taa-harness: unknown command '" << name << "'\n";
+    usage(std::cerr);
+    return kBadInput;
+  }
+  try {
+    return it->second.run(Args(argv + 2, argv + argc));
+  } catch (const cases::CaseError& e) {
+    for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
+    return kBadInput;
+  }
+}
+
+}  // namespace taa::cli

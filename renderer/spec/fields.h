@@ -1,0 +1,56 @@
+// The one description of every case-file setting. Each spec struct has a
+// `fields(V&, S&)` template that names its keys, ranges and documentation once;
+// visitors (JSON reader, JSON writer, schema lister) walk it, so parsing,
+// `validate --print` and `techniques --json` can never disagree.
+#pragma once
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace taa::spec {
+
+// Documentation carried by a setting: what it does and where it is implemented.
+struct Meta {
+  const char* doc = "";
+  const char* impl = "";  // shader or C++ unit that implements the setting
+};
+
+template <class T>
+struct Range {
+  T lo;
+  T hi;
+};
+
+template <class E>
+struct EnumName {
+  E value;
+  const char* name;
+};
+
+// Looks up the name table of an enum through ADL: every enum used in a spec
+// declares `std::span<const EnumName<E>> enumNames(E)` next to itself.
+template <class E>
+const char* enumToString(E value) {
+  for (const auto& n : enumNames(E{}))
+    if (n.value == value) return n.name;
+  return "?";
+}
+
+template <class E>
+bool enumFromString(std::string_view text, E& out) {
+  for (const auto& n : enumNames(E{}))
+    if (text == n.name) {
+      out = n.value;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace taa::spec
+
+#define TAA_ENUM_NAMES(E, ...)                                             \
+  inline std::span<const ::taa::spec::EnumName<E>> enumNames(E) {          \
+    static constexpr ::taa::spec::EnumName<E> kNames[] = {__VA_ARGS__};   \
+    return kNames;                                                         \
+  }

@@ -1,0 +1,74 @@
+// Resolution, render path and what a run writes out.
+#pragma once
+
+#include <vector>
+
+#include "spec/fields.h"
+
+namespace taa::spec {
+
+enum class RenderPath { Forward, Deferred };
+TAA_ENUM_NAMES(RenderPath, {RenderPath::Forward, "forward"}, {RenderPath::Deferred, "deferred"})
+
+struct ScaleKey {
+  int frame = 0;
+  float scale = 1.0f;
+};
+
+template <class V>
+void fields(V& v, ScaleKey& s) {
+  const char* impl = "renderer/script/frame_state.cpp";
+  v.field("frame", s.frame, Range<int>{0, 99999}, Meta{"first frame rendered at this scale", impl});
+  v.field("scale", s.scale, Range<float>{0.05f, 1.0f}, Meta{"render size / full render size", impl});
+}
+
+struct RenderSpec {
+  int width = 320;  // output size; the scene renders at width / upsample
+  int height = 180;
+  float upsample = 1.0f;
+  RenderPath path = RenderPath::Forward;
+  std::vector<ScaleKey> scale_schedule;
+};
+
+template <class V>
+void fields(V& v, RenderSpec& s) {
+  v.field("width", s.width, Range<int>{1, 8192}, Meta{"output width in pixels", "renderer/renderer.cpp"});
+  v.field("height", s.height, Range<int>{1, 8192}, Meta{"output height in pixels", "renderer/renderer.cpp"});
+  v.field("upsample", s.upsample, Range<float>{1.0f, 8.0f},
+          Meta{"temporal upsampling: the scene renders at output size / upsample",
+               "shaders/taa/current_sample.glsl"});
+  v.field("path", s.path, Meta{"forward shading in the raster pass, or a deferred lighting pass",
+                               "shaders/deferred_lighting.comp"});
+  v.list("scale_schedule", s.scale_schedule,
+         Meta{"dynamic resolution: piecewise-constant render scale from each key's frame on",
+              "renderer/script/frame_state.cpp"});
+}
+
+enum class AuxBuffer { Depth, Velocity, Normal, MaterialId };
+TAA_ENUM_NAMES(AuxBuffer, {AuxBuffer::Depth, "depth"}, {AuxBuffer::Velocity, "velocity"},
+               {AuxBuffer::Normal, "normal"}, {AuxBuffer::MaterialId, "material_id"})
+
+struct OutputSpec {
+  std::vector<int> frames;  // empty: the last frame
+  std::vector<AuxBuffer> aux;
+};
+
+template <class V>
+void fields(V& v, OutputSpec& s) {
+  v.field("frames", s.frames, Range<int>{0, 99999},
+          Meta{"frames written and checked against goldens; empty = the last frame", "renderer/readback.cpp"});
+  v.field("aux", s.aux, Meta{"auxiliary G-buffer images written beside each frame", "renderer/readback.cpp"});
+}
+
+struct ReferenceSpec {
+  int samples = 64;
+};
+
+template <class V>
+void fields(V& v, ReferenceSpec& s) {
+  v.field("samples", s.samples, Range<int>{1, 4096},
+          Meta{"stratified sub-pixel samples averaged per pixel for the supersampled ground truth",
+               "renderer/passes/reference.cpp"});
+}
+
+}  // namespace taa::spec

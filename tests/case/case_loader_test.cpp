@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include "case/case_error.h"
+#include "case/case_loader.h"
+
+using taa::cases::CaseError;
+using taa::cases::parseCase;
+
+namespace {
+std::vector<std::string> problemsOf(const std::string& json) {
+  try {
+    parseCase(json, "cases/t.json");
+  } catch (const CaseError& e) {
+    return e.problems();
+  }
+  return {};
+}
+}  // namespace
+
+TEST(CaseLoader, EmptyObjectGivesDefaults) {
+  const auto loaded = parseCase("{}", "cases/defaults.json");
+  EXPECT_EQ(loaded.spec.name, "defaults");
+  EXPECT_EQ(loaded.spec.render.width, 320);
+  EXPECT_EQ(loaded.spec.script.frames, 16);
+  ASSERT_EQ(loaded.spec.output.frames.size(), 1u);
+  EXPECT_EQ(loaded.spec.output.frames[0], 15);  // the last frame by default
+}
+
+TEST(CaseLoader, UnknownKeySuggestsNearMiss) {
+  const auto p = problemsOf(R"({"render": {"widht": 64}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("cases/t.json: render.widht: unknown key; did you mean 'render.width'?"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, OutOfRangeNamesKeyAndRange) {
+  const auto p = problemsOf(R"({"render": {"width": 9000}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("render.width: 9000 is out of range; allowed [1, 8192]"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, FrameCountBounded) {
+  const auto p = problemsOf(R"({"script": {"frames": 100001}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("script.frames"), std::string::npos);
+}
+
+TEST(CaseLoader, WrongTypeIsReported) {
+  const auto p = problemsOf(R"({"script": {"fps": 59.5}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("script.fps: expected an integer"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, BadEnumSuggestsName) {
+  const auto p = problemsOf(R"({"jitter": {"pattern": "haltn"}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("did you mean 'halton'"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, SyntaxErrorGivesLineAndColumn) {
+  const auto p = problemsOf("{\n  \"render\": {\"width\": 64,}\n}");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("cases/t.json:2:"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, AllProblemsReportedTogether) {
+  const auto p = problemsOf(R"({"render": {"width": 0, "height": -1}, "bogus": 1})");
+  EXPECT_EQ(p.size(), 3u);
+}
+
+TEST(CaseLoader, OutputFramePastEndIsRejected) {
+  const auto p = problemsOf(R"({"script": {"frames": 4}, "output": {"frames": [4]}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("output.frames[0]"), std::string::npos) << p[0];
+}
+
+TEST(CaseLoader, SceneOutsideCaseFolderIsRefused) {
+  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "../secret.gltf"}})").empty());
+  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "http://example.com/a.gltf"}})").empty());
+  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "/etc/a.gltf"}})").empty());
+}
+
+TEST(CaseLoader, SettingIgnoredByChosenPatternIsAnError) {
+  const auto p = problemsOf(R"({"jitter": {"pattern": "uniform4", "length": 16}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("jitter.length"), std::string::npos);
+}
+
+TEST(CaseLoader, SchemaListsEveryLeafWithDefault) {
+  const auto rows = taa::cases::settingsSchema();
+  bool foundWidth = false;
+  for (const auto& r : rows)
+    if (r["key"] == "render.width") {
+      foundWidth = true;
+      EXPECT_EQ(r["default"], 320);
+      EXPECT_EQ(r["range"][1], 8192);
+    }
+  EXPECT_TRUE(foundWidth);
+}

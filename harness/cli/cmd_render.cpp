@@ -1,13 +1,65 @@
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
+#include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "cli/run_support.h"
+#include "core/image_io.h"
+#include "renderer.h"
 
 namespace taa::cli {
 
-int cmdRender(const Args&) {
-  std::cerr << "render: not built yet\n";
-  return kEnvironment;
+namespace fs = std::filesystem;
+
+namespace {
+const char* kUsage =
+    "taa-harness render CASE --out DIR [--device NAME] [--validate]\n"
+    "  writes DIR/CASE/frame_NNNN.exr (linear half float) and .png (tonemapped sRGB) for each\n"
+    "  frame in output.frames, aux buffers from output.aux, records.json and run.log";
+
+std::string frameName(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "frame_%04d", frame);
+  return buf;
+}
+}  // namespace
+
+int cmdRender(const Args& args) {
+  const auto a = parseArgs(args, {"--validate"}, {"--out", "--device"}, kUsage);
+  if (a.positional.size() != 1 || !a.values.count("--out")) throw UsageError(std::string("usage: ") + kUsage);
+  const auto loaded = cases::loadCase(a.positional[0]);
+  const auto& spec = loaded.spec;
+  const fs::path dir = fs::path(a.value("--out")) / spec.name;
+  fs::create_directories(dir);
+
+  RunContext run(spec, dir, a.value("--device"), a.has("--validate"));
+  std::ofstream log(dir / "run.log");
+  for (const auto& line : run.renderer().log()) {
+    log << line << "\n";
+    std::cerr << spec.name << ": " << line << "\n";
+  }
+  auto records = nlohmann::json::array();
+  renderSequence(run.renderer(), spec, [&](FrameRecord& r) {
+    nlohmann::json j = {{"frame", r.frame}, {"render_size", {r.renderSize.x, r.renderSize.y}},
+                        {"camera_cut", r.cameraCut}, {"history_reset", r.historyReset}};
+    for (const auto& [pass, ms] : r.gpuMs) j["gpu_ms"][pass] = ms;
+    if (r.hasImages) {
+      const std::string base = frameName(r.frame);
+      writeExr(dir / (base + ".exr"), r.color);
+      writePng(dir / (base + ".png"), r.color);
+      for (const auto& aux : r.aux) writeExr(dir / (base + "." + aux.name + ".exr"), aux.image);
+      j["sha256"] = r.colorSha256;
+      std::cout << spec.name << " frame " << r.frame << " sha256 " << r.colorSha256 << "\n";
+    }
+    records.push_back(std::move(j));
+  }, run.progress());
+  std::ofstream(dir / "records.json") << records.dump(1) << "\n";
+  return run.finish();
 }
 
 }  // namespace taa::cli

@@ -6,6 +6,10 @@
 #include "case/case_error.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "core/image_io.h"
+#include "scene/scene_error.h"
+#include "vk/check.h"
 
 namespace taa::cli {
 
@@ -52,6 +56,18 @@ int dispatch(int argc, char** argv) {
   } catch (const cases::CaseError& e) {
     for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
     return kBadInput;
+  } catch (const UsageError& e) {
+    std::cerr << "taa-harness " << name << ": " << e.what() << "\n";
+    return kBadInput;
+  } catch (const scene::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const vk::EnvironmentError& e) {
+    std::cerr << "environment: " << e.what() << "\n";
+    return kEnvironment;
+  } catch (const ImageIoError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kEnvironment;
   }
 }
 

@@ -1,0 +1,34 @@
+// Small argument parser shared by the subcommands: flags, valued options and
+// positional arguments, with an error (exit 2) for anything unknown.
+#pragma once
+
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace taa::cli {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ParsedArgs {
+  std::set<std::string> flags;
+  std::map<std::string, std::string> values;
+  std::vector<std::string> positional;
+
+  bool has(const std::string& flag) const { return flags.count(flag) > 0; }
+  std::string value(const std::string& key, const std::string& fallback = "") const {
+    const auto it = values.find(key);
+    return it == values.end() ? fallback : it->second;
+  }
+};
+
+// `flagNames` take no value; `valueNames` take the next argument (or --key=value).
+ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& flagNames,
+                     const std::set<std::string>& valueNames, const std::string& usage);
+
+}  // namespace taa::cli

@@ -1,0 +1,43 @@
+#include "cli/run_support.h"
+
+#include <unistd.h>
+
+#include <iostream>
+
+#include "cli/exit_codes.h"
+#include "scene/build_scene.h"
+
+namespace taa::cli {
+
+RunContext::RunContext(const spec::CaseSpec& spec, const std::filesystem::path& outDir, const std::string& device,
+                       bool validate)
+    : spec_(spec), validate_(validate) {
+  vk::ContextOptions options;
+  options.device = device;
+  options.validate = validate;
+  options.shaderCacheDir = outDir / ".shader-cache";
+  scene_ = scene::buildScene(spec);
+  ctx_ = std::make_unique<vk::Context>(options);
+  renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_);
+}
+
+RunContext::~RunContext() = default;
+
+std::function<void(int)> RunContext::progress() const {
+  if (!isatty(STDERR_FILENO)) return {};
+  const std::string name = spec_.name;
+  const int frames = spec_.script.frames;
+  return [name, frames](int f) {
+    std::cerr << "\r" << name << ": frame " << f + 1 << "/" << frames << (f + 1 == frames ? "\n" : "") << std::flush;
+  };
+}
+
+int RunContext::finish() const {
+  if (validate_ && ctx_->validationMessages() > 0) {
+    std::cerr << spec_.name << ": " << ctx_->validationMessages() << " validation message(s)\n";
+    return kRegression;
+  }
+  return kPass;
+}
+
+}  // namespace taa::cli

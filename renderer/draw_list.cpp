@@ -1,0 +1,55 @@
+#include "draw_list.h"
+
+#include <algorithm>
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace taa {
+
+DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& state) {
+  DrawList out;
+  struct Sortable {
+    Draw draw;
+    float distance;
+    size_t order;
+  };
+  std::vector<Sortable> blended;
+  uint32_t objectId = 0;
+  for (int m = 0; m < int(scene.models.size()); ++m) {
+    // models[0] is the static world; model m > 0 is mover m - 1.
+    const bool isMover = m > 0;
+    const glm::mat4 place = isMover ? state.movers[m - 1] : glm::mat4(1.0f);
+    const glm::mat4 prevPlace = isMover ? state.prevMovers[m - 1] : glm::mat4(1.0f);
+    const double animTime = isMover ? state.moverAnimTime[m - 1] : 0.0;
+    const double prevAnimTime = isMover ? state.prevMoverAnimTime[m - 1] : 0.0;
+    const auto now = scene::poseModel(scene, m, animTime);
+    const auto before = scene::poseModel(scene, m, prevAnimTime);
+    for (size_t i = 0; i < now.size(); ++i, ++objectId) {
+      gpu::InstanceData inst{};
+      inst.model = place * now[i].transform;
+      inst.prevModel = prevPlace * before[i].transform;
+      inst.normalMatrix = glm::mat4(glm::inverseTranspose(glm::mat3(inst.model)));
+      inst.ids = glm::uvec4(objectId, 0, 0, 0);
+      const auto instance = uint32_t(out.instances.size());
+      out.instances.push_back(inst);
+      const auto& mesh = scene.meshes[now[i].mesh];
+      for (int p = 0; p < int(mesh.primitives.size()); ++p) {
+        const Draw d{instance, now[i].mesh, p};
+        const auto& material = scene.materials[mesh.primitives[p].material];
+        if (material.alphaMode == scene::AlphaMode::Blend) {
+          const glm::vec3 centre = glm::vec3(inst.model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
+          blended.push_back({d, glm::length(centre - state.camera.position), blended.size()});
+        } else {
+          out.opaque.push_back(d);
+        }
+      }
+    }
+  }
+  // Far to near; equal distances keep scene order so the result never depends on sort internals.
+  std::sort(blended.begin(), blended.end(), [](const Sortable& a, const Sortable& b) {
+    return a.distance != b.distance ? a.distance > b.distance : a.order < b.order;
+  });
+  for (const auto& b : blended) out.blended.push_back(b.draw);
+  return out;
+}
+
+}  // namespace taa

@@ -1,0 +1,31 @@
+// Everything the harness learns about one rendered frame. The renderer fills it;
+// the harness never sees a Vulkan object.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.h"
+
+namespace taa {
+
+struct NamedImage {
+  std::string name;  // "depth", "velocity", "normal", "material_id", "reference", ...
+  Image image;
+};
+
+struct FrameRecord {
+  int frame = 0;
+  bool hasImages = false;  // colour and aux images are read back only for requested frames
+  Image color;             // the final output, linear HDR RGBA at output size
+  std::string colorSha256; // of the output's half-float pixel bytes (core/pixel_hash.h)
+  std::vector<NamedImage> aux;
+  std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
+  glm::ivec2 renderSize{0};
+  bool cameraCut = false;
+  bool historyReset = false;
+};
+
+}  // namespace taa

@@ -1,0 +1,57 @@
+#include "gpu_scene.h"
+
+#include "vk/context.h"
+#include "vk/transfer.h"
+
+namespace taa {
+
+namespace {
+// More levels than any texture can have: the sampler must not cap the mip chain.
+constexpr float kMaxLod = 16.0f;
+}  // namespace
+
+GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
+    : scene_(scene),
+      vertices_(vk::uploadBuffer(ctx, scene.vertices.data(), scene.vertices.size() * sizeof(scene::Vertex),
+                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT)),
+      indices_(vk::uploadBuffer(ctx, scene.indices.data(), scene.indices.size() * sizeof(uint32_t),
+                                VK_BUFFER_USAGE_INDEX_BUFFER_BIT)),
+      repeat_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, kMaxLod, true),
+      clamp_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, kMaxLod, true) {
+  for (const auto& t : scene.textures) {
+    vk::ImageDesc d;
+    d.name = "texture";
+    d.width = uint32_t(t.levels[0].width);
+    d.height = uint32_t(t.levels[0].height);
+    d.mipLevels = uint32_t(t.levels.size());
+    d.format = VK_FORMAT_R8G8B8A8_SRGB;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    vk::Image image(ctx, d);
+    std::vector<const void*> levels;
+    for (const auto& l : t.levels) {
+      levels.push_back(l.rgba.data());
+      textureBytes_ += l.rgba.size();
+    }
+    vk::uploadImage(ctx, image, levels);
+    textures_.push_back(std::move(image));
+  }
+  vk::ImageDesc d;
+  d.name = "white";
+  d.format = VK_FORMAT_R8G8B8A8_SRGB;
+  d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  white_ = vk::Image(ctx, d);
+  const uint8_t texel[4] = {255, 255, 255, 255};
+  vk::uploadImage(ctx, white_, {texel});
+}
+
+VkImageView GpuScene::textureView(int material) const {
+  const int t = scene_.materials[material].baseColorTexture;
+  return t >= 0 ? textures_[t].view() : white_.view();
+}
+
+VkSampler GpuScene::sampler(int material) const {
+  const int t = scene_.materials[material].baseColorTexture;
+  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
+}
+
+}  // namespace taa

@@ -1,0 +1,212 @@
+#include "passes/gbuffer.h"
+
+#include "common/shared.h"
+#include "vk/context.h"
+
+namespace taa {
+
+namespace {
+
+constexpr VkFormat kColor = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kDepth = VK_FORMAT_D32_SFLOAT;
+constexpr VkFormat kVelocity = VK_FORMAT_R16G16_SFLOAT;
+constexpr VkFormat kNormal = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kIds = VK_FORMAT_R32_UINT;
+constexpr VkFormat kAlbedo = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+vk::Image target(vk::Context& ctx, const char* name, const GBufferConfig& c, VkFormat format, VkImageUsageFlags usage) {
+  vk::ImageDesc d;
+  d.name = name;
+  d.width = c.width;
+  d.height = c.height;
+  d.format = format;
+  d.usage = usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  return vk::Image(ctx, d);
+}
+
+// Attachment formats in GBUF_OUT_* order; UNDEFINED where the case has no target,
+// so the fragment shader's write there is discarded.
+std::vector<VkFormat> colorFormats(const GBufferConfig& c) {
+  std::vector<VkFormat> f(GBUF_OUT_COUNT, VK_FORMAT_UNDEFINED);
+  f[GBUF_OUT_COLOR] = kColor;
+  if (c.velocity) f[GBUF_OUT_VELOCITY] = kVelocity;
+  if (c.normal) f[GBUF_OUT_NORMAL] = kNormal;
+  if (c.ids) f[GBUF_OUT_IDS] = kIds;
+  if (c.deferred) f[GBUF_OUT_ALBEDO] = kAlbedo;
+  return f;
+}
+
+const std::vector<VkDescriptorType> kBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+
+}  // namespace
+
+GBufferTargets::GBufferTargets(vk::Context& ctx, const GBufferConfig& c) {
+  color = target(ctx, "color", c, kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT);
+  depth = target(ctx, "depth", c, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  if (c.velocity) velocity = target(ctx, "velocity", c, kVelocity, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  if (c.normal) normal = target(ctx, "normal", c, kNormal, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  if (c.ids) ids = target(ctx, "ids", c, kIds, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  if (c.deferred) albedo = target(ctx, "albedo", c, kAlbedo, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+}
+
+std::vector<std::string> GBufferTargets::describe() const {
+  std::vector<std::string> out;
+  for (const vk::Image* i : {&color, &depth, &velocity, &normal, &ids, &albedo})
+    if (*i)
+      out.push_back(i->desc().name + " " + std::to_string(i->desc().width) + "x" + std::to_string(i->desc().height) +
+                    " (" + std::to_string(i->bytes() / 1024) + " KiB)");
+  return out;
+}
+
+GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferConfig& config)
+    : ctx_(ctx), scene_(scene), config_(config),
+      pointClamp_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+  vk::GraphicsDesc d;
+  d.vertexShader = "gbuffer.vert";
+  d.fragmentShader = "gbuffer.frag";
+  d.bindings = kBindings;
+  d.pushConstantBytes = sizeof(gpu::DrawPush);
+  d.spec.set(GBUF_SPEC_DEFERRED, config.deferred);
+  d.colorFormats = colorFormats(config);
+  d.depthFormat = kDepth;
+  // Back faces stay: foliage cards, fences and glTF double-sided materials are
+  // seen from both sides, and the shader flips their normals.
+  d.cullMode = VK_CULL_MODE_NONE;
+  opaque_ = vk::createGraphicsPipeline(ctx, "gbuffer", d);
+
+  // Blended surfaces are shaded forward even on the deferred path (after lighting),
+  // test depth without writing it, and leave the other targets alone.
+  vk::GraphicsDesc b = d;
+  b.spec = vk::SpecConstants().set(GBUF_SPEC_DEFERRED, false);
+  b.depthWrite = false;
+  b.blendFirstAttachment = true;
+  blended_ = vk::createGraphicsPipeline(ctx, "gbuffer_blend", b);
+
+  vk::GraphicsDesc s = d;
+  s.vertexShader = "sky.vert";
+  s.fragmentShader = "sky.frag";
+  s.vertexInput = false;
+  s.depthWrite = false;
+  s.depthCompare = VK_COMPARE_OP_EQUAL;  // only where no geometry moved depth off the far plane
+  sky_ = vk::createGraphicsPipeline(ctx, "sky", s);
+
+  if (config.deferred)
+    lighting_ = vk::createComputePipeline(
+        ctx, "deferred_lighting.comp",
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+        0);
+}
+
+void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
+                           VkBuffer frameUniforms, VkBuffer instances, float lodBias) {
+  if (draws.empty()) return;
+  pipeline.bind(cmd);
+  const VkDeviceSize offset = 0;
+  VkBuffer vb = scene_.vertices();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+  vkCmdBindIndexBuffer(cmd, scene_.indices(), 0, VK_INDEX_TYPE_UINT32);
+  const auto& cpu = scene_.cpu();
+  int boundMaterial = -1;
+  for (const auto& draw : draws) {
+    const auto& prim = cpu.meshes[draw.mesh].primitives[draw.primitive];
+    const auto& material = cpu.materials[prim.material];
+    if (prim.material != boundMaterial) {
+      vk::Bindings()
+          .uniform(GBUF_BINDING_FRAME, frameUniforms, 0, sizeof(gpu::FrameUniforms))
+          .storageBuffer(GBUF_BINDING_INSTANCES, instances, 0, VK_WHOLE_SIZE)
+          .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(prim.material), scene_.sampler(prim.material))
+          .push(ctx_, cmd, pipeline);
+      boundMaterial = prim.material;
+    }
+    gpu::DrawPush push{};
+    push.instance = draw.instance;
+    push.material = uint32_t(prim.material);
+    push.alphaCutoff = material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
+    push.lodBias = lodBias;
+    push.baseColor = material.baseColorFactor;
+    vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex, prim.vertexOffset, 0);
+  }
+}
+
+void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList& draws, VkBuffer frameUniforms,
+                         VkBuffer instances, glm::ivec2 size, float lodBias) {
+  vk::Image* outputs[GBUF_OUT_COUNT] = {&t.color, &t.velocity, &t.normal, &t.ids, &t.albedo};
+  VkRenderingAttachmentInfo color[GBUF_OUT_COUNT];
+  for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
+    color[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    if (!*outputs[i]) continue;  // imageView stays VK_NULL_HANDLE: writes are discarded
+    outputs[i]->use(cmd, vk::Use::ColorAttachment);
+    color[i].imageView = outputs[i]->view();
+    color[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  }
+  color[GBUF_OUT_IDS].clearValue.color.uint32[0] = 0xffffffffu;
+  t.depth.use(cmd, vk::Use::DepthAttachment);
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = t.depth.view();
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.clearValue.depthStencil = {0.0f, 0};  // reversed Z: 0 is the far plane
+
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, {uint32_t(size.x), uint32_t(size.y)}};
+  info.layerCount = 1;
+  info.colorAttachmentCount = GBUF_OUT_COUNT;
+  info.pColorAttachments = color;
+  info.pDepthAttachment = &depth;
+  const VkViewport viewport{0.0f, 0.0f, float(size.x), float(size.y), 0.0f, 1.0f};
+  const VkRect2D scissor = info.renderArea;
+
+  vkCmdBeginRendering(cmd, &info);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  drawList(cmd, opaque_, draws.opaque, frameUniforms, instances, lodBias);
+  sky_.bind(cmd);
+  vk::Bindings()
+      .uniform(GBUF_BINDING_FRAME, frameUniforms, 0, sizeof(gpu::FrameUniforms))
+      .storageBuffer(GBUF_BINDING_INSTANCES, instances, 0, VK_WHOLE_SIZE)
+      .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(0), scene_.sampler(0))
+      .push(ctx_, cmd, sky_);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  if (config_.deferred) {
+    vkCmdEndRendering(cmd);
+    lightDeferred(cmd, t, frameUniforms, size);
+    t.color.use(cmd, vk::Use::ColorAttachment);
+    t.depth.use(cmd, vk::Use::DepthAttachment);
+    for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
+      color[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+      if (i != GBUF_OUT_COLOR && *outputs[i]) outputs[i]->use(cmd, vk::Use::ColorAttachment);
+    }
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    vkCmdBeginRendering(cmd, &info);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  }
+  drawList(cmd, blended_, draws.blended, frameUniforms, instances, lodBias);
+  vkCmdEndRendering(cmd);
+}
+
+void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, VkBuffer frameUniforms, glm::ivec2 size) {
+  t.albedo.use(cmd, vk::Use::SampledCompute);
+  t.normal.use(cmd, vk::Use::SampledCompute);
+  t.depth.use(cmd, vk::Use::SampledCompute);
+  t.color.use(cmd, vk::Use::StorageWrite);
+  lighting_.bind(cmd);
+  vk::Bindings()
+      .uniform(0, frameUniforms, 0, sizeof(gpu::FrameUniforms))
+      .sampled(1, t.albedo.view(), pointClamp_.handle())
+      .sampled(2, t.normal.view(), pointClamp_.handle())
+      .sampled(3, t.depth.view(), pointClamp_.handle())
+      .storage(4, t.color.view())
+      .push(ctx_, cmd, lighting_);
+  vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+}
+
+}  // namespace taa

@@ -1,0 +1,61 @@
+// The raster pass: scene geometry then sky into colour, depth and whichever
+// auxiliary targets the case needs (velocity, normal, ids, albedo).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <string>
+#include <vector>
+
+#include "draw_list.h"
+#include "gpu_scene.h"
+#include "vk/pipeline.h"
+#include "vk/resources.h"
+
+namespace taa {
+
+struct GBufferConfig {
+  uint32_t width = 1;  // the largest render size of the run; frames may use less
+  uint32_t height = 1;
+  bool velocity = false;
+  bool normal = false;
+  bool ids = false;
+  bool deferred = false;  // albedo target + deferred lighting pass
+};
+
+struct GBufferTargets {
+  vk::Image color;     // RGBA16F, linear HDR
+  vk::Image depth;     // D32, reversed Z (1 near, 0 far)
+  vk::Image velocity;  // RG16F, pixels, un-jittered
+  vk::Image normal;    // RGBA16F, world-space normal in xyz
+  vk::Image ids;       // R32_UINT, object id << 16 | material id; sky = 0xffffffff
+  vk::Image albedo;    // RGBA16F, deferred only; alpha 0 marks sky
+
+  GBufferTargets(vk::Context& ctx, const GBufferConfig& config);
+  // Every allocated target as "name WxH format", for the run log.
+  std::vector<std::string> describe() const;
+};
+
+class GBufferPass {
+ public:
+  GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferConfig& config);
+
+  // Records the pass into `cmd` for a frame rendered at `size` (top-left of the targets).
+  void record(VkCommandBuffer cmd, GBufferTargets& targets, const DrawList& draws, VkBuffer frameUniforms,
+              VkBuffer instances, glm::ivec2 size, float lodBias);
+
+ private:
+  void drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
+                VkBuffer frameUniforms, VkBuffer instances, float lodBias);
+  void lightDeferred(VkCommandBuffer cmd, GBufferTargets& targets, VkBuffer frameUniforms, glm::ivec2 size);
+
+  vk::Context& ctx_;
+  const GpuScene& scene_;
+  GBufferConfig config_;
+  vk::Pipeline opaque_;
+  vk::Pipeline blended_;
+  vk::Pipeline sky_;
+  vk::Pipeline lighting_;  // deferred only
+  vk::Sampler pointClamp_;
+};
+
+}  // namespace taa

@@ -1,0 +1,140 @@
+#include "renderer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/pixel_hash.h"
+#include "draw_list.h"
+#include "frame_uniforms.h"
+#include "gpu_scene.h"
+#include "passes/gbuffer.h"
+#include "readback.h"
+#include "script/frame_state.h"
+#include "vk/context.h"
+#include "vk/timestamps.h"
+#include "vk/transfer.h"
+
+namespace taa {
+
+namespace {
+
+bool wants(const spec::CaseSpec& spec, spec::AuxBuffer b) {
+  return std::find(spec.output.aux.begin(), spec.output.aux.end(), b) != spec.output.aux.end();
+}
+
+// The largest render size over the run: targets are allocated once at this size and
+// dynamic-resolution frames draw into their top-left corner.
+glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
+  glm::ivec2 size(0);
+  std::vector<int> probe = {0};
+  for (const auto& k : spec.render.scale_schedule) probe.push_back(k.frame);
+  for (int f : probe) size = glm::max(size, script::frameState(spec, f).renderSize);
+  return size;
+}
+
+GBufferConfig gbufferConfig(const spec::CaseSpec& spec) {
+  GBufferConfig c;
+  const glm::ivec2 size = maxRenderSize(spec);
+  c.width = uint32_t(size.x);
+  c.height = uint32_t(size.y);
+  c.deferred = spec.render.path == spec::RenderPath::Deferred;
+  c.velocity = wants(spec, spec::AuxBuffer::Velocity);
+  c.normal = c.deferred || wants(spec, spec::AuxBuffer::Normal);
+  c.ids = wants(spec, spec::AuxBuffer::MaterialId);
+  return c;
+}
+
+}  // namespace
+
+struct Renderer::State {
+  vk::Context& ctx;
+  const spec::CaseSpec& spec;
+  const scene::Scene& scene;
+  GpuScene gpuScene;
+  GBufferConfig config;
+  GBufferTargets targets;
+  GBufferPass gbuffer;
+  vk::Buffer frameUniforms;
+  vk::Buffer instances;
+  vk::GpuTimer timer;
+  std::vector<std::string> log;
+  int nextFrame = 0;
+
+  State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc)
+      : ctx(c), spec(s), scene(sc), gpuScene(c, sc), config(gbufferConfig(s)), targets(c, config),
+        gbuffer(c, gpuScene, config),
+        frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+        instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
+                         sizeof(gpu::InstanceData),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+        timer(c) {
+    log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
+    log.push_back(std::string("pass gbuffer (") + (config.deferred ? "deferred" : "forward") + ")");
+    if (config.deferred) log.push_back("pass deferred_lighting");
+    for (const auto& t : targets.describe()) log.push_back("buffer " + t);
+    log.push_back("scene: " + std::to_string(sc.vertices.size()) + " vertices, " +
+                  std::to_string(sc.indices.size() / 3) + " triangles, " + std::to_string(sc.textures.size()) +
+                  " textures (" + std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
+  }
+};
+
+Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene)
+    : s_(std::make_unique<State>(ctx, spec, scene)) {}
+
+Renderer::~Renderer() = default;
+
+const std::vector<std::string>& Renderer::log() const { return s_->log; }
+
+FrameRecord Renderer::renderFrame(int frame, bool readImages) {
+  auto& s = *s_;
+  if (frame != s.nextFrame)
+    throw std::logic_error("Renderer: frame " + std::to_string(frame) + " requested, expected " +
+                           std::to_string(s.nextFrame));
+  ++s.nextFrame;
+  const script::FrameState state = script::frameState(s.spec, frame);
+  const DrawList draws = buildDrawList(s.scene, state);
+  const gpu::FrameUniforms uniforms = makeFrameUniforms(state, s.spec.lighting);
+  std::memcpy(s.frameUniforms.mapped(), &uniforms, sizeof(uniforms));
+  std::memcpy(s.instances.mapped(), draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+
+  const float lodBias = s.spec.material.lod_bias_taa_only ? 0.0f : s.spec.material.lod_bias;
+  s.timer.reset();
+  VkCommandBuffer cmd = s.ctx.beginCommands();
+  s.timer.begin(cmd, "gbuffer");
+  s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), s.instances.handle(), state.renderSize, lodBias);
+  s.timer.end(cmd);
+  s.ctx.submitAndWait(cmd);
+
+  FrameRecord record;
+  record.frame = frame;
+  record.renderSize = state.renderSize;
+  record.cameraCut = state.cameraCut;
+  record.historyReset = state.resetHistory;
+  record.gpuMs = s.timer.read();
+  if (readImages) {
+    const int w = state.renderSize.x, h = state.renderSize.y, tw = int(s.config.width);
+    auto read = [&](vk::Image& img) {
+      return decodeTarget(vk::readImage(s.ctx, img), img.desc().format, tw, w, h);
+    };
+    record.hasImages = true;
+    record.color = read(s.targets.color);
+    record.colorSha256 = pixelSha256(record.color);
+    if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
+    if (wants(s.spec, spec::AuxBuffer::Velocity)) record.aux.push_back({"velocity", read(s.targets.velocity)});
+    if (wants(s.spec, spec::AuxBuffer::Normal)) record.aux.push_back({"normal", read(s.targets.normal)});
+    if (wants(s.spec, spec::AuxBuffer::MaterialId)) record.aux.push_back({"material_id", read(s.targets.ids)});
+  }
+  return record;
+}
+
+void renderSequence(Renderer& renderer, const spec::CaseSpec& spec, const std::function<void(FrameRecord&)>& sink,
+                    const std::function<void(int)>& progress) {
+  const auto& wanted = spec.output.frames;
+  for (int f = 0; f < spec.script.frames; ++f) {
+    if (progress) progress(f);
+    FrameRecord record = renderer.renderFrame(f, std::binary_search(wanted.begin(), wanted.end(), f));
+    sink(record);
+  }
+}
+
+}  // namespace taa

@@ -1,0 +1,248 @@
+#include "vk/context.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+
+#include "vk/check.h"
+
+namespace taa::vk {
+
+namespace {
+
+const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+const char* kNoDeviceFix =
+    "install a Vulkan driver: on Debian, apt-get install mesa-vulkan-drivers libvulkan1 (lavapipe)";
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                   void* user) {
+  if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
+    ++*static_cast<std::atomic<int>*>(user);
+    std::cerr << "validation: " << data->pMessage << "\n";
+  }
+  return VK_FALSE;
+}
+
+bool hasLayer(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  for (const auto& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options) {
+  // Mesa reads these when the driver loads; set them before the instance exists.
+  if (options.shaderCacheDir.empty()) {
+    setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  } else {
+    setenv("MESA_SHADER_CACHE_DIR", options.shaderCacheDir.c_str(), 1);
+    unsetenv("MESA_SHADER_CACHE_DISABLE");
+  }
+  std::string wanted = options.device;
+  if (wanted.empty())
+    if (const char* env = std::getenv("TAA_DEVICE")) wanted = env;
+  createInstance(options.validate);
+  pickDevice(wanted);
+  createDevice();
+}
+
+Context::~Context() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyFence(device_, fence_, nullptr);
+    vkDestroyCommandPool(device_, pool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+void Context::createInstance(bool validate) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "taa-harness";
+  app.apiVersion = VK_API_VERSION_1_3;
+
+  std::vector<const char*> layers, extensions;
+  if (validate) {
+    if (!hasLayer(kValidationLayer))
+      throw EnvironmentError(
+          "--validate needs the Khronos validation layer: apt-get install vulkan-validationlayers");
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  }
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = uint32_t(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+  if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
+    throw EnvironmentError(std::string("no Vulkan 1.3 driver found (") + resultName(r) + "); " + kNoDeviceFix);
+  VK_CHECK(r);
+
+  if (validate) {
+    VkDebugUtilsMessengerCreateInfoEXT m{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    m.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    m.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                    VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    m.pfnUserCallback = onValidationMessage;
+    m.pUserData = &validationMessages_;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    VK_CHECK(create(instance_, &m, nullptr, &messenger_));
+  }
+}
+
+void Context::pickDevice(const std::string& wanted) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, devices.data()));
+  if (devices.empty()) throw EnvironmentError(std::string("no Vulkan device found; ") + kNoDeviceFix);
+
+  std::string names;
+  for (auto d : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    names += std::string(names.empty() ? "" : ", ") + p.deviceName;
+    const bool isCpu = p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const bool match = wanted.empty() ? isCpu : lower(p.deviceName).find(lower(wanted)) != std::string::npos;
+    if (match && VK_API_VERSION_MINOR(p.apiVersion) >= 3 && !physical_) physical_ = d;
+  }
+  if (!physical_) {
+    if (wanted.empty())
+      throw EnvironmentError("no lavapipe (llvmpipe) Vulkan 1.3 device among: " + names +
+                             "; apt-get install mesa-vulkan-drivers, or pick one with --device NAME");
+    throw EnvironmentError("no Vulkan 1.3 device matches '" + wanted + "' among: " + names +
+                           "; pass part of one of these names to --device (or $TAA_DEVICE)");
+  }
+
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
+  vkGetPhysicalDeviceProperties2(physical_, &props);
+  info_.name = props.properties.deviceName;
+  info_.driverName = driver.driverName;
+  info_.driverInfo = driver.driverInfo;
+  info_.apiVersion = props.properties.apiVersion;
+  info_.driverVersion = props.properties.driverVersion;
+  info_.vendorId = props.properties.vendorID;
+  info_.deviceId = props.properties.deviceID;
+  info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  info_.timestampPeriodNs = props.properties.limits.timestampPeriod;
+}
+
+void Context::createDevice() {
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, families.data());
+  bool found = false;
+  for (uint32_t i = 0; i < familyCount && !found; ++i) {
+    const auto f = families[i];
+    if ((f.queueFlags & VK_QUEUE_GRAPHICS_BIT) && (f.queueFlags & VK_QUEUE_COMPUTE_BIT) && f.timestampValidBits > 0) {
+      queueFamily_ = i;
+      found = true;
+    }
+  }
+  if (!found) throw EnvironmentError(info_.name + " has no graphics+compute queue with timestamps");
+
+  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+  vkGetPhysicalDeviceFeatures2(physical_, &supported);
+  if (!f13.dynamicRendering || !f13.synchronization2 || !f12.hostQueryReset)
+    throw EnvironmentError(info_.name + " lacks dynamicRendering, synchronization2 or hostQueryReset");
+
+  VkPhysicalDeviceVulkan13Features e13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  e13.dynamicRendering = VK_TRUE;
+  e13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features e12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &e13};
+  e12.hostQueryReset = VK_TRUE;
+  VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &e12};
+  enabled.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo q{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  q.queueFamilyIndex = queueFamily_;
+  q.queueCount = 1;
+  q.pQueuePriorities = &priority;
+  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &q;
+  info.enabledExtensionCount = 1;
+  info.ppEnabledExtensionNames = extensions;
+  const VkResult r = vkCreateDevice(physical_, &info, nullptr, &device_);
+  if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
+    throw EnvironmentError(info_.name + " lacks VK_KHR_push_descriptor, which the renderer needs");
+  VK_CHECK(r);
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  pushDescriptorSet_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+      vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+
+  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.queueFamilyIndex = queueFamily_;
+  VK_CHECK(vkCreateCommandPool(device_, &pool, nullptr, &pool_));
+  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VK_CHECK(vkCreateFence(device_, &fence, nullptr, &fence_));
+}
+
+uint32_t Context::memoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+  VkPhysicalDeviceMemoryProperties mem;
+  vkGetPhysicalDeviceMemoryProperties(physical_, &mem);
+  for (uint32_t i = 0; i < mem.memoryTypeCount; ++i)
+    if ((typeBits & (1u << i)) && (mem.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+  throw EnvironmentError(info_.name + " has no memory type with the required properties");
+}
+
+VkCommandBuffer Context::beginCommands() {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = pool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  return cmd;
+}
+
+void Context::submitAndWait(VkCommandBuffer cmd) {
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence_));
+  // A bounded wait: a wedged driver becomes an error (VK_TIMEOUT), never a hang.
+  constexpr uint64_t kTimeoutNs = 300ull * 1000 * 1000 * 1000;
+  VK_CHECK(vkWaitForFences(device_, 1, &fence_, VK_TRUE, kTimeoutNs));
+  VK_CHECK(vkResetFences(device_, 1, &fence_));
+  vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+}
+
+void Context::pushDescriptorSet(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout,
+                                uint32_t set, uint32_t count, const VkWriteDescriptorSet* writes) const {
+  pushDescriptorSet_(cmd, bindPoint, layout, set, count, writes);
+}
+
+}  // namespace taa::vk

@@ -1,0 +1,309 @@
+#include "vk/pipeline.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <utility>
+
+#include "scene/scene.h"
+#include "vk/check.h"
+#include "vk/context.h"
+
+namespace taa::vk {
+
+SpecConstants& SpecConstants::set(uint32_t id, uint32_t value) {
+  entries_.push_back({id, uint32_t(data_.size() * 4), 4});
+  data_.push_back(value);
+  return *this;
+}
+
+SpecConstants& SpecConstants::setFloat(uint32_t id, float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  return set(id, bits);
+}
+
+std::string SpecConstants::describe() const {
+  std::string out;
+  for (size_t i = 0; i < entries_.size(); ++i)
+    out += (i ? " " : "") + std::to_string(entries_[i].constantID) + "=" + std::to_string(data_[i]);
+  return out;
+}
+
+VkSpecializationInfo SpecConstants::info() const {
+  return {uint32_t(entries_.size()), entries_.data(), data_.size() * 4, data_.data()};
+}
+
+Pipeline::Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint, VkDescriptorSetLayout setLayout,
+                   VkPipelineLayout layout, VkPipeline pipeline)
+    : device_(device), name_(std::move(name)), bindPoint_(bindPoint), setLayout_(setLayout), layout_(layout),
+      pipeline_(pipeline) {}
+
+Pipeline::~Pipeline() { release(); }
+Pipeline::Pipeline(Pipeline&& o) noexcept { *this = std::move(o); }
+Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
+  if (this != &o) {
+    release();
+    device_ = std::exchange(o.device_, VK_NULL_HANDLE);
+    name_ = std::move(o.name_);
+    bindPoint_ = o.bindPoint_;
+    setLayout_ = std::exchange(o.setLayout_, VK_NULL_HANDLE);
+    layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
+    pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void Pipeline::release() {
+  if (!device_) return;
+  vkDestroyPipeline(device_, pipeline_, nullptr);
+  vkDestroyPipelineLayout(device_, layout_, nullptr);
+  vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+  device_ = VK_NULL_HANDLE;
+}
+
+std::vector<uint32_t> loadSpirv(const std::string& name) {
+  const char* env = std::getenv("TAA_SHADER_DIR");
+  const std::string dir = env && *env ? env : TAA_SHADER_DIR;
+  const std::string path = dir + "/" + name + ".spv";
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+    throw EnvironmentError("shader " + path + " not found; build the project (ninja -C build) or set TAA_SHADER_DIR");
+  const auto size = static_cast<size_t>(in.tellg());
+  std::vector<uint32_t> words(size / 4);
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
+  return words;
+}
+
+namespace {
+
+VkShaderModule createModule(VkDevice device, const std::string& name) {
+  const auto words = loadSpirv(name);
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = words.size() * 4;
+  info.pCode = words.data();
+  VkShaderModule module;
+  VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
+  return module;
+}
+
+void createLayouts(VkDevice device, const std::vector<VkDescriptorType>& bindings, VkShaderStageFlags stages,
+                   uint32_t pushBytes, VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+  std::vector<VkDescriptorSetLayoutBinding> b(bindings.size());
+  for (uint32_t i = 0; i < bindings.size(); ++i) b[i] = {i, bindings[i], 1, stages, nullptr};
+  VkDescriptorSetLayoutCreateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  set.bindingCount = uint32_t(b.size());
+  set.pBindings = b.data();
+  VK_CHECK(vkCreateDescriptorSetLayout(device, &set, nullptr, &setLayout));
+  VkPushConstantRange range{stages, 0, pushBytes};
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &setLayout;
+  info.pushConstantRangeCount = pushBytes ? 1 : 0;
+  info.pPushConstantRanges = &range;
+  VK_CHECK(vkCreatePipelineLayout(device, &info, nullptr, &layout));
+}
+
+}  // namespace
+
+Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
+                               uint32_t pushConstantBytes, const SpecConstants& spec) {
+  VkDevice device = ctx.device();
+  VkDescriptorSetLayout setLayout;
+  VkPipelineLayout layout;
+  createLayouts(device, bindings, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes, setLayout, layout);
+  VkShaderModule module = createModule(device, shader);
+  const VkSpecializationInfo specInfo = spec.info();
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = &specInfo;
+  info.layout = layout;
+  VkPipeline pipeline;
+  const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, module, nullptr);
+  VK_CHECK(r);
+  return Pipeline(device, shader, VK_PIPELINE_BIND_POINT_COMPUTE, setLayout, layout, pipeline);
+}
+
+Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& d) {
+  VkDevice device = ctx.device();
+  VkDescriptorSetLayout setLayout;
+  VkPipelineLayout layout;
+  createLayouts(device, d.bindings, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, d.pushConstantBytes,
+                setLayout, layout);
+  VkShaderModule vert = createModule(device, d.vertexShader);
+  VkShaderModule frag = createModule(device, d.fragmentShader);
+  const VkSpecializationInfo specInfo = d.spec.info();
+  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vert;
+  stages[0].pName = "main";
+  stages[0].pSpecializationInfo = &specInfo;
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = frag;
+  stages[1].pName = "main";
+  stages[1].pSpecializationInfo = &specInfo;
+
+  VkVertexInputBindingDescription binding{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  VkVertexInputAttributeDescription attributes[3] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}};
+  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  if (d.vertexInput) {
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexAttributeDescriptionCount = 3;
+    vertexInput.pVertexAttributeDescriptions = attributes;
+  }
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = d.cullMode;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = d.depthTest;
+  depth.depthWriteEnable = d.depthWrite;
+  depth.depthCompareOp = d.depthCompare;
+
+  std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size());
+  for (size_t i = 0; i < blends.size(); ++i) {
+    auto& b = blends[i];
+    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                       VK_COLOR_COMPONENT_A_BIT;
+    if (d.blendFirstAttachment) {
+      if (i == 0) {
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.colorBlendOp = VK_BLEND_OP_ADD;
+        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.alphaBlendOp = VK_BLEND_OP_ADD;
+      } else {
+        b.colorWriteMask = 0;  // blended surfaces leave the G-buffer's other targets alone
+      }
+    }
+  }
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = uint32_t(blends.size());
+  blend.pAttachments = blends.data();
+  const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 2;
+  dynamic.pDynamicStates = dynamicStates;
+  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+  rendering.colorAttachmentCount = uint32_t(d.colorFormats.size());
+  rendering.pColorAttachmentFormats = d.colorFormats.data();
+  rendering.depthAttachmentFormat = d.depthFormat;
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+  info.stageCount = 2;
+  info.pStages = stages;
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout;
+  VkPipeline pipeline;
+  const VkResult r = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, vert, nullptr);
+  vkDestroyShaderModule(device, frag, nullptr);
+  VK_CHECK(r);
+  return Pipeline(device, name, VK_PIPELINE_BIND_POINT_GRAPHICS, setLayout, layout, pipeline);
+}
+
+Bindings& Bindings::sampled(uint32_t binding, VkImageView view, VkSampler sampler) {
+  images_.push_back({sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  w.pImageInfo = &images_.back();
+  writes_.push_back(w);
+  return *this;
+}
+
+Bindings& Bindings::storage(uint32_t binding, VkImageView view) {
+  images_.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  w.pImageInfo = &images_.back();
+  writes_.push_back(w);
+  return *this;
+}
+
+Bindings& Bindings::uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  buffers_.push_back({buffer, offset, range});
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  w.pBufferInfo = &buffers_.back();
+  writes_.push_back(w);
+  return *this;
+}
+
+Bindings& Bindings::storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  buffers_.push_back({buffer, offset, range});
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  w.pBufferInfo = &buffers_.back();
+  writes_.push_back(w);
+  return *this;
+}
+
+void Bindings::push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline) const {
+  ctx.pushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), 0, uint32_t(writes_.size()), writes_.data());
+}
+
+Sampler::Sampler(Context& ctx, VkFilter filter, VkSamplerAddressMode address, float maxLod, bool mipLinear)
+    : device_(ctx.device()) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = mipLinear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = address;
+  info.maxLod = maxLod;
+  VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
+}
+
+Sampler::~Sampler() {
+  if (device_) vkDestroySampler(device_, sampler_, nullptr);
+}
+Sampler::Sampler(Sampler&& o) noexcept { *this = std::move(o); }
+Sampler& Sampler::operator=(Sampler&& o) noexcept {
+  if (this != &o) {
+    if (device_) vkDestroySampler(device_, sampler_, nullptr);
+    device_ = std::exchange(o.device_, VK_NULL_HANDLE);
+    sampler_ = std::exchange(o.sampler_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void dispatch2d(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t layers) {
+  vkCmdDispatch(cmd, (width + 7) / 8, (height + 7) / 8, layers);
+}
+
+}  // namespace taa::vk

@@ -1,0 +1,115 @@
+// Pipelines with one push-descriptor set each: a pass binds by pushing its
+// descriptors, so no pools or set lifetimes exist anywhere. Technique switches are
+// specialization constants, so disabled code is removed when the driver compiles.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace taa::vk {
+
+class Context;
+
+class SpecConstants {
+ public:
+  SpecConstants& set(uint32_t id, uint32_t value);
+  SpecConstants& set(uint32_t id, int32_t value) { return set(id, static_cast<uint32_t>(value)); }
+  SpecConstants& set(uint32_t id, bool value) { return set(id, value ? 1u : 0u); }
+  SpecConstants& setFloat(uint32_t id, float value);
+  // Human-readable "id=value" list, for the run log.
+  std::string describe() const;
+  VkSpecializationInfo info() const;
+
+ private:
+  std::vector<VkSpecializationMapEntry> entries_;
+  std::vector<uint32_t> data_;
+};
+
+class Pipeline {
+ public:
+  Pipeline() = default;
+  Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint, VkDescriptorSetLayout setLayout,
+           VkPipelineLayout layout, VkPipeline pipeline);
+  ~Pipeline();
+  Pipeline(Pipeline&& o) noexcept;
+  Pipeline& operator=(Pipeline&& o) noexcept;
+
+  VkPipeline handle() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+  VkPipelineBindPoint bindPoint() const { return bindPoint_; }
+  const std::string& name() const { return name_; }
+  void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+  explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  std::string name_;
+  VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+// SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp")
+// in $TAA_SHADER_DIR or the build's shader folder.
+std::vector<uint32_t> loadSpirv(const std::string& name);
+
+Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
+                               uint32_t pushConstantBytes, const SpecConstants& spec = {});
+
+struct GraphicsDesc {
+  std::string vertexShader;
+  std::string fragmentShader;
+  std::vector<VkDescriptorType> bindings;  // visible to both stages
+  uint32_t pushConstantBytes = 0;
+  SpecConstants spec;                      // applied to both stages
+  bool vertexInput = true;                 // scene::Vertex layout; false: positions from gl_VertexIndex
+  std::vector<VkFormat> colorFormats;      // VK_FORMAT_UNDEFINED: the shader's output is discarded
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  bool depthTest = true;
+  bool depthWrite = true;
+  VkCompareOp depthCompare = VK_COMPARE_OP_GREATER;  // reversed Z
+  VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
+  bool blendFirstAttachment = false;       // premultiplied-free "over" blending on attachment 0
+};
+
+Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& desc);
+
+// Descriptor writes for one push: collect, then push before a draw or dispatch.
+class Bindings {
+ public:
+  Bindings& sampled(uint32_t binding, VkImageView view, VkSampler sampler);
+  Bindings& storage(uint32_t binding, VkImageView view);
+  Bindings& uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+  Bindings& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+  void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline) const;
+
+ private:
+  std::vector<VkWriteDescriptorSet> writes_;
+  std::deque<VkDescriptorImageInfo> images_;  // deque: stable addresses for pImageInfo
+  std::deque<VkDescriptorBufferInfo> buffers_;
+};
+
+class Sampler {
+ public:
+  Sampler() = default;
+  Sampler(Context& ctx, VkFilter filter, VkSamplerAddressMode address, float maxLod = 0.0f, bool mipLinear = false);
+  ~Sampler();
+  Sampler(Sampler&& o) noexcept;
+  Sampler& operator=(Sampler&& o) noexcept;
+  VkSampler handle() const { return sampler_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
+// Groups of 8x8 covering width x height.
+void dispatch2d(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t layers = 1);
+
+}  // namespace taa::vk

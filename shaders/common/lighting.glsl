@@ -1,0 +1,15 @@
+// Directional + ambient Blinn-Phong, shared by forward shading and the deferred pass.
+#ifndef TAA_LIGHTING_GLSL
+#define TAA_LIGHTING_GLSL
+
+vec3 shadeBlinnPhong(vec3 albedo, vec3 n, vec3 worldPos, FrameUniforms f) {
+  vec3 l = f.lightDir.xyz;
+  vec3 v = normalize(f.cameraPos.xyz - worldPos);
+  float ndl = max(dot(n, l), 0.0);
+  vec3 h = normalize(l + v);
+  float spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), f.ambient.w) : 0.0;
+  vec3 light = f.lightColor.rgb * f.lightDir.w;
+  return albedo * (f.ambient.rgb + light * ndl) + light * (f.lightColor.w * spec);
+}
+
+#endif

@@ -1,0 +1,30 @@
+#version 450
+// Deferred path: shade each pixel from the G-buffer (albedo, normal, depth) with
+// the same Blinn-Phong as forward shading; sky pixels (albedo alpha 0) emit albedo.
+#extension GL_GOOGLE_include_directive : require
+#include "common/shared.h"
+#include "common/lighting.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std140, binding = 0) uniform FrameBlock { FrameUniforms frame; };
+layout(binding = 1) uniform sampler2D albedoTex;
+layout(binding = 2) uniform sampler2D normalTex;
+layout(binding = 3) uniform sampler2D depthTex;
+layout(binding = 4, rgba16f) uniform writeonly image2D colorOut;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, ivec2(frame.renderSize.xy)))) return;
+  vec4 albedo = texelFetch(albedoTex, p, 0);
+  if (albedo.a == 0.0) {
+    imageStore(colorOut, p, vec4(albedo.rgb, 1.0));
+    return;
+  }
+  // Reconstruct the world position from the jittered depth sample: the pixel centre
+  // shows the un-jittered position (centre - jitter).
+  float depth = texelFetch(depthTex, p, 0).r;
+  vec2 ndc = (vec2(p) + 0.5 - frame.jitter.xy) * frame.renderSize.zw * 2.0 - 1.0;
+  vec4 world = frame.invViewProjNoJitter * vec4(ndc, depth, 1.0);
+  vec3 n = normalize(texelFetch(normalTex, p, 0).xyz);
+  imageStore(colorOut, p, vec4(shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame), 1.0));
+}

@@ -1,0 +1,39 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "common/frame.glsl"
+#include "common/lighting.glsl"
+
+layout(constant_id = GBUF_SPEC_DEFERRED) const bool kDeferred = false;
+
+layout(set = 0, binding = GBUF_BINDING_TEXTURE) uniform sampler2D baseColorTexture;
+
+layout(location = 0) in vec3 inWorldPos;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inCurClip;
+layout(location = 4) in vec4 inPrevClip;
+
+layout(location = GBUF_OUT_COLOR) out vec4 outColor;
+layout(location = GBUF_OUT_VELOCITY) out vec2 outVelocity;
+layout(location = GBUF_OUT_NORMAL) out vec4 outNormal;
+layout(location = GBUF_OUT_IDS) out uint outIds;
+layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
+
+void main() {
+  vec4 base = draw.baseColor * texture(baseColorTexture, inUv, draw.lodBias);
+  if (draw.alphaCutoff >= 0.0 && base.a < draw.alphaCutoff) discard;
+
+  vec3 n = normalize(inNormal);
+  if (!gl_FrontFacing) n = -n;  // double-sided surfaces light their back face too
+
+  // Screen motion in pixels from last frame to this one, both un-jittered:
+  // history for this pixel lies at (pixel - velocity).
+  vec2 cur = inCurClip.xy / inCurClip.w;
+  vec2 prev = inPrevClip.xy / inPrevClip.w;
+  outVelocity = (cur - prev) * 0.5 * frame.renderSize.xy;
+  outNormal = vec4(n, 0.0);
+  InstanceData inst = instances[draw.instance];
+  outIds = (inst.ids.x << 16) | (draw.material & 0xffffu);
+  outAlbedo = vec4(base.rgb, 1.0);
+  outColor = kDeferred ? vec4(0.0) : vec4(shadeBlinnPhong(base.rgb, n, inWorldPos, frame), base.a);
+}

@@ -1,0 +1,25 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "common/frame.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+
+layout(location = 0) out vec3 outWorldPos;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec2 outUv;
+layout(location = 3) out vec4 outCurClip;   // un-jittered, for velocity
+layout(location = 4) out vec4 outPrevClip;
+
+void main() {
+  InstanceData inst = instances[draw.instance];
+  vec4 world = inst.model * vec4(inPosition, 1.0);
+  vec4 prevWorld = inst.prevModel * vec4(inPosition, 1.0);
+  outWorldPos = world.xyz;
+  outNormal = mat3(inst.normalMatrix) * inNormal;
+  outUv = inUv;
+  outCurClip = frame.viewProjNoJitter * world;
+  outPrevClip = frame.prevViewProjNoJitter * prevWorld;
+  gl_Position = frame.viewProj * world;
+}

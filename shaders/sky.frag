@@ -1,0 +1,37 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "common/frame.glsl"
+
+layout(constant_id = GBUF_SPEC_DEFERRED) const bool kDeferred = false;
+
+layout(location = GBUF_OUT_COLOR) out vec4 outColor;
+layout(location = GBUF_OUT_VELOCITY) out vec2 outVelocity;
+layout(location = GBUF_OUT_NORMAL) out vec4 outNormal;
+layout(location = GBUF_OUT_IDS) out uint outIds;
+layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
+
+vec3 skyColor(vec3 dir) {
+  float up = clamp(dir.y, -1.0, 1.0);
+  vec3 horizon = vec3(0.55, 0.62, 0.70);
+  vec3 zenith = vec3(0.18, 0.32, 0.62);
+  vec3 ground = vec3(0.22, 0.20, 0.18);
+  return up >= 0.0 ? mix(horizon, zenith, sqrt(up)) : mix(horizon, ground, sqrt(-up));
+}
+
+void main() {
+  // The fragment at pixel centre c shows the un-jittered position c - jitter.
+  vec2 pixel = gl_FragCoord.xy - frame.jitter.xy;
+  vec2 ndc = pixel * frame.renderSize.zw * 2.0 - 1.0;
+  vec4 far = frame.skyInvViewProj * vec4(ndc, 0.5, 1.0);
+  vec3 dir = normalize(far.xyz / far.w);
+  vec4 prevClip = frame.skyPrevViewProj * vec4(dir, 0.0);
+  vec2 prevPixel = (prevClip.xy / prevClip.w * 0.5 + 0.5) * frame.renderSize.xy;
+  // A direction behind last frame's camera has no previous pixel: report no motion
+  // rather than a mirrored one; TAA rejects such history through its other checks.
+  outVelocity = prevClip.w > 0.0 ? pixel - prevPixel : vec2(0.0);
+  vec3 c = skyColor(dir);
+  outColor = kDeferred ? vec4(0.0) : vec4(c, 1.0);
+  outAlbedo = vec4(c, 0.0);  // alpha 0 marks sky for the deferred pass: emit, do not shade
+  outNormal = vec4(0.0);
+  outIds = 0xffffffffu;
+}

@@ -94,7 +94,8 @@ double strafeOffset(const spec::StrafeSpec& strafe, double timeSeconds) {
   return phase <= 2.0 * d ? phase - d : 3.0 * d - phase;
 }
 
-CameraPose cameraPose(const spec::CameraSpec& camera, const Path& path, int frame, double timeSeconds) {
+CameraPose cameraPose(const spec::CameraSpec& camera, const Path& path, int frame,
+                      double timeSeconds) {
   glm::dvec3 basePos(camera.position), baseTarget(camera.target);
   if (const int cut = activeCut(camera, frame); cut >= 0) {
     basePos = glm::dvec3(camera.cuts[cut].position);
@@ -122,7 +123,8 @@ CameraPose cameraPose(const spec::CameraSpec& camera, const Path& path, int fram
 
   // Yaw about world up, pitch about the camera's own right axis: carrying the full
   // rotation (not a look-at) keeps the pose defined even when pitched vertical.
-  pose.orientation = rotationY(double(camera.rotate.yaw_deg_per_s) * timeSeconds) * pose.orientation *
+  pose.orientation = rotationY(double(camera.rotate.yaw_deg_per_s) * timeSeconds) *
+                     pose.orientation *
                      rotationX(pitchDegrees(camera.rotate.pitch_deg_per_s, timeSeconds));
   pose.position.y += bobOffset(camera.bob, timeSeconds);
   pose.position += strafeOffset(camera.strafe, timeSeconds) * pose.right();

@@ -50,7 +50,8 @@ double strafeOffset(const spec::StrafeSpec& strafe, double timeSeconds);
 
 // The pose at `frame` (time = frame / fps). `path` must be built from camera.path;
 // passing it lets callers evaluating several frames build the arc-length table once.
-CameraPose cameraPose(const spec::CameraSpec& camera, const Path& path, int frame, double timeSeconds);
+CameraPose cameraPose(const spec::CameraSpec& camera, const Path& path, int frame,
+                      double timeSeconds);
 CameraPose cameraPose(const spec::CameraSpec& camera, const spec::TimingSpec& timing, int frame);
 
 }  // namespace taa::script

@@ -88,7 +88,8 @@ CurvePoint catmullRom(const Points& pts, bool cyclic, double u) {
   const glm::dvec3 p0 = at(i - 1), p1 = at(i), p2 = at(i + 1), p3 = at(i + 2);
   const glm::dvec3 a = 2.0 * p1, b = p2 - p0, c = 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3;
   const glm::dvec3 d = -p0 + 3.0 * p1 - 3.0 * p2 + p3;
-  return {0.5 * (a + t * (b + t * (c + t * d))), 0.5 * (b + t * (2.0 * c + t * 3.0 * d)) * double(segments)};
+  return {0.5 * (a + t * (b + t * (c + t * d))),
+          0.5 * (b + t * (2.0 * c + t * 3.0 * d)) * double(segments)};
 }
 
 }  // namespace

@@ -84,7 +84,8 @@ FrameState frameState(const spec::CaseSpec& spec, int frame) {
   }
 
   const auto& resets = spec.script.reset_history_at;
-  fs.resetHistory = frame == 0 || fs.cameraCut || std::find(resets.begin(), resets.end(), frame) != resets.end();
+  fs.resetHistory =
+      frame == 0 || fs.cameraCut || std::find(resets.begin(), resets.end(), frame) != resets.end();
   return fs;
 }
 

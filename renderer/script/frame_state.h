@@ -24,16 +24,18 @@ struct CameraState {
 
 struct FrameState {
   int frame = 0;
-  double time = 0.0;                 // frame / fps, the only clock
-  glm::ivec2 renderSize{1};          // render resolution this frame: round(output/upsample), times the scale schedule's scale, at least 1
-  float renderScale = 1.0f;          // the scale schedule's value in force (1 without schedule)
-  CameraState camera, prevCamera;    // prev = frame-1; at frame 0 and at a cut prev equals current
-  glm::vec2 jitter{0.0f};            // render pixels, y down: the image moves by this offset
+  double time = 0.0;         // frame / fps, the only clock
+  glm::ivec2 renderSize{1};  // render resolution this frame: round(output/upsample), times the
+                             // scale schedule's scale, at least 1
+  float renderScale = 1.0f;  // the scale schedule's value in force (1 without schedule)
+  CameraState camera, prevCamera;  // prev = frame-1; at frame 0 and at a cut prev equals current
+  glm::vec2 jitter{0.0f};          // render pixels, y down: the image moves by this offset
   glm::mat4 jitteredProjection{1.0f};
-  std::vector<glm::mat4> movers, prevMovers;   // world transform per mover (prev = frame-1; frame 0: same)
-  std::vector<double> moverAnimTime;           // seconds into each mover's animation
-  bool cameraCut = false;            // a camera cut starts at this frame
-  bool resetHistory = false;         // cut, frame 0, or script.reset_history_at
+  // World transform per mover; prev = frame-1 (frame 0: same). Not reset by camera cuts.
+  std::vector<glm::mat4> movers, prevMovers;
+  std::vector<double> moverAnimTime;  // seconds into each mover's animation
+  bool cameraCut = false;             // a camera cut starts at this frame
+  bool resetHistory = false;          // cut, frame 0, or script.reset_history_at
 };
 
 // The scale schedule's value at `frame`: the key with the greatest frame <= frame

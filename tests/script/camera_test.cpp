@@ -1,3 +1,5 @@
+#include "script/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "script/camera.h"
 #include "script/projection.h"
 
 using taa::script::activeCut;
@@ -32,7 +33,9 @@ CameraSpec straightCamera() {
 
 const TimingSpec kTiming{60, 16, {}};
 
-CameraPose poseAt(const CameraSpec& c, int frame) { return cameraPose(c, kTiming, frame); }
+CameraPose poseAt(const CameraSpec& c, int frame) {
+  return cameraPose(c, kTiming, frame);
+}
 
 void expectVec(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-9) {
   EXPECT_NEAR(a.x, b.x, tol);
@@ -128,12 +131,12 @@ TEST(CameraStrafe, TriangleWaveAlongTheRightVector) {
   CameraSpec c = straightCamera();
   c.strafe.speed = 2.0f;
   c.strafe.distance = 1.0f;
-  expectVec(poseAt(c, 15).position, {0.5, 0, 0});   // t=0.25
-  expectVec(poseAt(c, 30).position, {1, 0, 0});     // t=0.5: right turning point
-  expectVec(poseAt(c, 60).position, {0, 0, 0});     // t=1
-  expectVec(poseAt(c, 90).position, {-1, 0, 0});    // t=1.5: left turning point
-  expectVec(poseAt(c, 120).position, {0, 0, 0});    // t=2
-  c.target = {1.0f, 0.0f, 0.0f};                    // facing +X: right is +Z
+  expectVec(poseAt(c, 15).position, {0.5, 0, 0});  // t=0.25
+  expectVec(poseAt(c, 30).position, {1, 0, 0});    // t=0.5: right turning point
+  expectVec(poseAt(c, 60).position, {0, 0, 0});    // t=1
+  expectVec(poseAt(c, 90).position, {-1, 0, 0});   // t=1.5: left turning point
+  expectVec(poseAt(c, 120).position, {0, 0, 0});   // t=2
+  c.target = {1.0f, 0.0f, 0.0f};                   // facing +X: right is +Z
   expectVec(poseAt(c, 30).position, {0, 0, 1});
 }
 

@@ -1,10 +1,10 @@
+#include "script/curves.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <vector>
-
-#include "script/curves.h"
 
 using taa::script::evaluateCurve;
 using taa::script::kArcLengthSamples;
@@ -20,8 +20,8 @@ constexpr CurveType kAllTypes[] = {CurveType::Bezier, CurveType::BSpline2, Curve
 
 // Bunched at one end, spread at the other: a raw parameterisation moves at very
 // different speeds along it, which is what the constant-speed tests need.
-const std::vector<glm::vec3> kUneven = {{0, 0, 0}, {0.2f, 0, 0.1f}, {0.5f, 0.3f, 0},
-                                        {4, 0, -1}, {9, 1, 2}, {10, 0, 8}};
+const std::vector<glm::vec3> kUneven = {{0, 0, 0},  {0.2f, 0, 0.1f}, {0.5f, 0.3f, 0},
+                                        {4, 0, -1}, {9, 1, 2},       {10, 0, 8}};
 
 PathSpec makePath(CurveType type, bool cyclic, bool constantSpeed = false,
                   std::vector<glm::vec3> points = kUneven) {
@@ -34,7 +34,9 @@ PathSpec makePath(CurveType type, bool cyclic, bool constantSpeed = false,
   return p;
 }
 
-double dist(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
+double dist(const glm::dvec3& a, const glm::dvec3& b) {
+  return glm::length(a - b);
+}
 
 // Arc length between two times, integrated finely enough to be exact to 1e-6.
 double arcLength(const Path& path, double t0, double t1) {
@@ -66,14 +68,16 @@ double stepLengthSpread(const PathSpec& spec, int steps) {
 TEST(CurveEndpoints, InterpolatingTypesStartAtFirstAndEndAtLastPoint) {
   for (CurveType type : kAllTypes) {
     const PathSpec p = makePath(type, false);
-    EXPECT_LT(dist(evaluateCurve(p, 0.0).position, glm::dvec3(kUneven.front())), 1e-12) << int(type);
+    EXPECT_LT(dist(evaluateCurve(p, 0.0).position, glm::dvec3(kUneven.front())), 1e-12)
+        << int(type);
     EXPECT_LT(dist(evaluateCurve(p, 1.0).position, glm::dvec3(kUneven.back())), 1e-12) << int(type);
   }
 }
 
 TEST(CurveShape, QuadraticBezierMidpointIsQuarterHalfQuarterBlend) {
   const PathSpec p = makePath(CurveType::Bezier, false, false, {{0, 0, 0}, {2, 4, 0}, {4, 0, 8}});
-  const glm::dvec3 expected = 0.25 * glm::dvec3(0, 0, 0) + 0.5 * glm::dvec3(2, 4, 0) + 0.25 * glm::dvec3(4, 0, 8);
+  const glm::dvec3 expected =
+      0.25 * glm::dvec3(0, 0, 0) + 0.5 * glm::dvec3(2, 4, 0) + 0.25 * glm::dvec3(4, 0, 8);
   EXPECT_LT(dist(evaluateCurve(p, 0.5).position, expected), 1e-12);
 }
 
@@ -98,9 +102,11 @@ TEST(CurveShape, PeriodicCubicBSplineKnotValueIsOneFourOneAverage) {
   const std::vector<glm::vec3> pts = {{0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {0, 6, 0}, {-3, 3, 3}};
   const PathSpec p = makePath(CurveType::BSpline3, true, false, pts);
   // u=0 is the start of the first span, whose window is points 0,1,2,3.
-  const glm::dvec3 expected = (glm::dvec3(pts[0]) + 4.0 * glm::dvec3(pts[1]) + glm::dvec3(pts[2])) / 6.0;
+  const glm::dvec3 expected =
+      (glm::dvec3(pts[0]) + 4.0 * glm::dvec3(pts[1]) + glm::dvec3(pts[2])) / 6.0;
   EXPECT_LT(dist(evaluateCurve(p, 0.0).position, expected), 1e-12);
-  const glm::dvec3 second = (glm::dvec3(pts[1]) + 4.0 * glm::dvec3(pts[2]) + glm::dvec3(pts[3])) / 6.0;
+  const glm::dvec3 second =
+      (glm::dvec3(pts[1]) + 4.0 * glm::dvec3(pts[2]) + glm::dvec3(pts[3])) / 6.0;
   EXPECT_LT(dist(evaluateCurve(p, 0.2).position, second), 1e-12);
 }
 
@@ -109,7 +115,8 @@ TEST(CurveShape, CatmullRomPassesThroughEveryControlPoint) {
     const PathSpec p = makePath(CurveType::CatmullRom, cyclic);
     const int segments = static_cast<int>(kUneven.size()) - (cyclic ? 0 : 1);
     for (size_t i = 0; i < kUneven.size(); ++i)
-      EXPECT_LT(dist(evaluateCurve(p, double(i) / segments).position, glm::dvec3(kUneven[i])), 1e-12)
+      EXPECT_LT(dist(evaluateCurve(p, double(i) / segments).position, glm::dvec3(kUneven[i])),
+                1e-12)
           << "cyclic " << cyclic << " point " << i;
   }
 }
@@ -123,7 +130,8 @@ TEST(CurveContinuity, NoPositionJumpAcrossSegmentJoins) {
       // 3, 4, 5 or 6); the grid also covers interior points.
       for (int k = 1; k < 60; ++k) {
         const double u = k / 60.0;
-        const double jump = dist(evaluateCurve(p, u - eps).position, evaluateCurve(p, u + eps).position);
+        const double jump =
+            dist(evaluateCurve(p, u - eps).position, evaluateCurve(p, u + eps).position);
         EXPECT_LT(jump, 1e-6) << "type " << int(type) << " cyclic " << cyclic << " u " << u;
       }
     }
@@ -135,7 +143,8 @@ TEST(CurveContinuity, TangentIsTheDerivativeOfPosition) {
     for (bool cyclic : {false, true}) {
       const PathSpec p = makePath(type, cyclic);
       for (double u : {0.05, 0.31, 0.5, 0.72, 0.95}) {
-        const glm::dvec3 fd = (evaluateCurve(p, u + h).position - evaluateCurve(p, u - h).position) / (2 * h);
+        const glm::dvec3 fd =
+            (evaluateCurve(p, u + h).position - evaluateCurve(p, u - h).position) / (2 * h);
         const glm::dvec3 t = evaluateCurve(p, u).tangent;
         EXPECT_LT(dist(fd, t), 1e-4 * (1.0 + glm::length(t))) << "type " << int(type) << " u " << u;
       }
@@ -185,7 +194,8 @@ TEST(CurveCyclic, CyclicPathReturnsToItsStartAfterOneDuration) {
       EXPECT_LT(dist(evaluateCurve(spec, 1.0).position, start), 1e-9) << int(type);
       // ...and time wraps, so later laps repeat the first.
       EXPECT_LT(dist(path.atTime(spec.duration_s).position, start), 1e-9) << int(type);
-      EXPECT_LT(dist(path.atTime(spec.duration_s * 2 + 1.3).position, path.atTime(1.3).position), 1e-9);
+      EXPECT_LT(dist(path.atTime(spec.duration_s * 2 + 1.3).position, path.atTime(1.3).position),
+                1e-9);
     }
 }
 

@@ -1,10 +1,11 @@
+#include "script/frame_state.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 #include <vector>
 
-#include "script/frame_state.h"
 #include "script/projection.h"
 
 using taa::script::FrameState;
@@ -128,7 +129,8 @@ TEST(FrameStateCut, CutFrameFlagsResetAndHasNoCameraMotion) {
 
 TEST(FrameStateReset, ResetsAtFrameZeroCutsAndListedFramesOnly) {
   const CaseSpec s = busyCase();
-  for (int f = 0; f < 16; ++f) EXPECT_EQ(frameState(s, f).resetHistory, f == 0 || f == 6 || f == 10) << f;
+  for (int f = 0; f < 16; ++f)
+    EXPECT_EQ(frameState(s, f).resetHistory, f == 0 || f == 6 || f == 10) << f;
 }
 
 TEST(FrameStateSize, RenderSizeFollowsUpsampleAndScaleSchedule) {

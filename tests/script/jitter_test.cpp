@@ -1,9 +1,10 @@
+#include "script/jitter.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "script/jitter.h"
 #include "script/projection.h"
 
 using taa::script::applyJitter;
@@ -50,10 +51,10 @@ TEST(JitterHalton, IndexZeroIsZeroWhichIsWhyThePatternSkipsIt) {
 TEST(JitterPatterns, HaltonUsesIndicesOneToLengthCentredOnThePixel) {
   JitterSpec j = pattern(JitterPattern::Halton);
   j.length = 8;
-  expectOffset(j, 0, 0.0f, 1 / 3.f - 0.5f);           // index 1
-  expectOffset(j, 1, -0.25f, 2 / 3.f - 0.5f);         // index 2
+  expectOffset(j, 0, 0.0f, 1 / 3.f - 0.5f);             // index 1
+  expectOffset(j, 1, -0.25f, 2 / 3.f - 0.5f);           // index 2
   expectOffset(j, 7, 1 / 16.f - 0.5f, 8 / 9.f - 0.5f);  // index 8
-  expectOffset(j, 8, 0.0f, 1 / 3.f - 0.5f);           // wraps to index 1
+  expectOffset(j, 8, 0.0f, 1 / 3.f - 0.5f);             // wraps to index 1
 }
 
 TEST(JitterPatterns, HaltonLengthSetsThePeriod) {

@@ -1,8 +1,8 @@
+#include "script/movers.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
-
-#include "script/movers.h"
 
 using taa::script::moverState;
 using taa::script::repeatedOffset;
@@ -30,7 +30,9 @@ MoverSpec line(Repeat repeat) {
   return m;
 }
 
-double xAt(const MoverSpec& m, int frame, int fps = 60) { return moverState(m, timing(fps), frame).position.x; }
+double xAt(const MoverSpec& m, int frame, int fps = 60) {
+  return moverState(m, timing(fps), frame).position.x;
+}
 
 }  // namespace
 

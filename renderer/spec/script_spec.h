@@ -51,8 +51,8 @@ void fields(V& v, PathSpec& s) {
   v.field("constant_speed", s.constant_speed,
           Meta{"re-parameterise by arc length so the camera moves at constant speed", impl});
   v.field("look", s.look,
-          Meta{"along: face the path tangent; target: face camera.target; fixed: keep the initial "
-               "orientation",
+          Meta{"along: face the path tangent; target: face the target in force (camera.target or "
+               "the latest cut's); fixed: keep the orientation of that base pose",
                "renderer/script/camera.cpp"});
   v.field("cyclic", s.cyclic, Meta{"close the path and loop; otherwise stop at the end", impl});
 }
@@ -65,7 +65,10 @@ struct RotateSpec {
 template <class V>
 void fields(V& v, RotateSpec& s) {
   const char* impl = "renderer/script/camera.cpp";
-  v.field("yaw_deg_per_s", s.yaw_deg_per_s, Range<float>{-1e5f, 1e5f}, Meta{"rotation about the world up axis", impl});
+  v.field("yaw_deg_per_s", s.yaw_deg_per_s, Range<float>{-1e5f, 1e5f},
+          Meta{"rotation about the world up axis; positive turns left (counter-clockwise seen "
+               "from above)",
+               impl});
   v.field("pitch_deg_per_s", s.pitch_deg_per_s, Range<float>{-1e5f, 1e5f},
           Meta{"oscillating pitch rate; the pitch swings within +-30 degrees", impl});
 }
@@ -207,7 +210,10 @@ void fields(V& v, JitterSpec& s) {
   v.field("length", s.length, Range<int>{1, 4096}, Meta{"sequence length of the halton pattern", impl});
   v.field("points", s.points, Meta{"offsets in pixels, each in [-0.5, 0.5], for the manual pattern", impl});
   v.field("scale", s.scale, Range<float>{0.0f, 16.0f}, Meta{"multiplies every offset", impl});
-  v.field("rotate_deg", s.rotate_deg, Range<float>{-360.0f, 360.0f}, Meta{"rotates the pattern about the pixel centre", impl});
+  v.field("rotate_deg", s.rotate_deg, Range<float>{-360.0f, 360.0f},
+          Meta{"rotates the pattern about the pixel centre; positive turns +x towards +y (y "
+               "down: clockwise on screen)",
+               impl});
   v.field("slowdown", s.slowdown, Range<int>{1, 100000}, Meta{"advance the sequence every k frames", impl});
   v.field("lock", s.lock, Range<int>{-1, 4095}, Meta{"always use this step of the sequence; -1 = off", impl});
 }

@@ -28,7 +28,7 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
       inst.model = place * now[i].transform;
       inst.prevModel = prevPlace * before[i].transform;
       inst.normalMatrix = glm::mat4(glm::inverseTranspose(glm::mat3(inst.model)));
-      inst.ids = glm::uvec4(objectId, 0, 0, 0);
+      inst.ids = glm::uvec4(objectId, isMover ? 1 : 0, 0, 0);
       const auto instance = uint32_t(out.instances.size());
       out.instances.push_back(inst);
       const auto& mesh = scene.meshes[now[i].mesh];

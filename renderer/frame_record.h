@@ -20,7 +20,7 @@ struct FrameRecord {
   int frame = 0;
   bool hasImages = false;  // colour and aux images are read back only for requested frames
   Image color;             // the final output, linear HDR RGBA at output size
-  std::string colorSha256; // of the output's half-float pixel bytes (core/pixel_hash.h)
+  std::string colorSha256; // of the output's half-float pixel bytes (core/image_io.h)
   std::vector<NamedImage> aux;
   std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
   glm::ivec2 renderSize{0};

@@ -1,9 +1,10 @@
 #include "readback.h"
 
-#include <Imath/half.h>
-
 #include <cstring>
 #include <stdexcept>
+
+#include "common/shared.h"
+#include "core/image_io.h"
 
 namespace taa {
 
@@ -12,9 +13,7 @@ namespace {
 float halfAt(const uint8_t* p) {
   uint16_t bits;
   std::memcpy(&bits, p, 2);
-  Imath::half h;
-  h.setBits(bits);
-  return float(h);
+  return halfBitsToFloat(bits);
 }
 
 }  // namespace
@@ -39,14 +38,15 @@ Image decodeTarget(const std::vector<uint8_t>& bytes, VkFormat format, int targe
       return out;
     }
     case VK_FORMAT_R32_UINT: {
-      Image out(width, height, 2);
+      Image out(width, height, 3);
       for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
           uint32_t id;
           std::memcpy(&id, &bytes[(size_t(y) * targetWidth + x) * 4], 4);
-          // Sky is all ones; report it as -1 in both channels.
-          out.at(x, y, 0) = id == 0xffffffffu ? -1.0f : float(id >> 16);
-          out.at(x, y, 1) = id == 0xffffffffu ? -1.0f : float(id & 0xffffu);
+          const bool sky = id == IDS_SKY;
+          out.at(x, y, 0) = sky ? -1.0f : float((id >> 16) & 0x7fffu);
+          out.at(x, y, 1) = sky ? -1.0f : float(id & 0xffffu);
+          out.at(x, y, 2) = (id & IDS_MOVER_BIT) ? 1.0f : 0.0f;
         }
       return out;
     }

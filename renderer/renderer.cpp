@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "core/pixel_hash.h"
+#include "core/image_io.h"
 #include "draw_list.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"

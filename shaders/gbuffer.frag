@@ -33,7 +33,7 @@ void main() {
   outVelocity = (cur - prev) * 0.5 * frame.renderSize.xy;
   outNormal = vec4(n, 0.0);
   InstanceData inst = instances[draw.instance];
-  outIds = (inst.ids.x << 16) | (draw.material & 0xffffu);
+  outIds = (inst.ids.y != 0u ? IDS_MOVER_BIT : 0u) | ((inst.ids.x & 0x7fffu) << 16) | (draw.material & 0xffffu);
   outAlbedo = vec4(base.rgb, 1.0);
   outColor = kDeferred ? vec4(0.0) : vec4(shadeBlinnPhong(base.rgb, n, inWorldPos, frame), base.a);
 }

@@ -33,5 +33,5 @@ void main() {
   outColor = kDeferred ? vec4(0.0) : vec4(c, 1.0);
   outAlbedo = vec4(c, 0.0);  // alpha 0 marks sky for the deferred pass: emit, do not shade
   outNormal = vec4(0.0);
-  outIds = 0xffffffffu;
+  outIds = IDS_SKY;
 }

@@ -78,9 +78,11 @@ FrameState frameState(const spec::CaseSpec& spec, int frame) {
   const int prevFrame = std::max(0, frame - 1);
   for (const auto& mover : spec.movers) {
     const MoverState now = moverState(mover, spec.script, frame);
+    const MoverState before = moverState(mover, spec.script, prevFrame);
     fs.movers.push_back(now.model);
-    fs.prevMovers.push_back(moverState(mover, spec.script, prevFrame).model);
+    fs.prevMovers.push_back(before.model);
     fs.moverAnimTime.push_back(now.animationTime);
+    fs.prevMoverAnimTime.push_back(before.animationTime);
   }
 
   const auto& resets = spec.script.reset_history_at;

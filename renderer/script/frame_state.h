@@ -34,6 +34,7 @@ struct FrameState {
   // World transform per mover; prev = frame-1 (frame 0: same). Not reset by camera cuts.
   std::vector<glm::mat4> movers, prevMovers;
   std::vector<double> moverAnimTime;  // seconds into each mover's animation
+  std::vector<double> prevMoverAnimTime;  // the same at frame - 1 (frame 0: same)
   bool cameraCut = false;             // a camera cut starts at this frame
   bool resetHistory = false;          // cut, frame 0, or script.reset_history_at
 };

@@ -10,6 +10,7 @@
 #include "spec/render_spec.h"
 #include "spec/scene_spec.h"
 #include "spec/script_spec.h"
+#include "spec/taa_spec.h"
 
 namespace taa::spec {
 
@@ -25,6 +26,9 @@ struct CaseSpec {
   CameraSpec camera;
   std::vector<MoverSpec> movers;
   JitterSpec jitter;
+  TaaSpec taa;
+  PostSpec post;
+  DebugSpec debug;
   OutputSpec output;
   ReferenceSpec reference;
 };
@@ -40,6 +44,9 @@ void fields(V& v, CaseSpec& s) {
   v.object("camera", s.camera, Meta{"camera pose, path and procedural motion", ""});
   v.list("movers", s.movers, Meta{"moving objects", ""});
   v.object("jitter", s.jitter, Meta{"projection jitter sequence", ""});
+  v.object("taa", s.taa, Meta{"temporal resolve", ""});
+  v.object("post", s.post, Meta{"passes around the resolve", ""});
+  v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});
   v.object("reference", s.reference, Meta{"supersampled ground truth", ""});
 }

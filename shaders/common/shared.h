@@ -51,8 +51,12 @@ TAA_BLOCK(InstanceData) {
   mat4 model;
   mat4 prevModel;
   mat4 normalMatrix;  // inverse transpose of model, upper 3x3
-  uvec4 ids;          // x: object id (stable across frames); yzw: 0
+  uvec4 ids;          // x: object id (stable across frames), y: 1 for movers
 };
+
+// The ids target packs mover flag (bit 31), object id (bits 16-30), material (0-15).
+#define IDS_MOVER_BIT 0x80000000u
+#define IDS_SKY 0x7fffffffu
 
 TAA_BLOCK(DrawPush) {
   uint instance;
@@ -62,7 +66,58 @@ TAA_BLOCK(DrawPush) {
   vec4 baseColor;     // linear RGBA factor
 };
 
+// ---- Temporal resolve (taa_resolve.comp and shaders/taa/*.glsl) ----
+#define TAA_BINDING_UNIFORMS 0
+#define TAA_BINDING_COLOR 1         // current frame (render size), colour or motion-blurred colour
+#define TAA_BINDING_DEPTH 2
+#define TAA_BINDING_VELOCITY 3
+#define TAA_BINDING_IDS 4
+#define TAA_BINDING_NORMAL 5
+#define TAA_BINDING_HISTORY 6       // previous output (output size), linear sampler
+#define TAA_BINDING_PREV_DEPTH 7
+#define TAA_BINDING_PREV_NORMAL 8
+#define TAA_BINDING_PREV_IDS 9
+#define TAA_BINDING_PREV_VELOCITY 10
+#define TAA_BINDING_HISTORY_OUT 11  // new history = resolve output (storage)
+#define TAA_BINDING_DEBUG_OUT 12    // debug view (storage), when debug.output is set
+#define TAA_BINDING_COUNT 13
+
+#define TAA_SPEC_MODE 0             // 0 pass-through, 1 basic, 2 full
+#define TAA_SPEC_HAS_HISTORY 1      // false on frame 0, cuts and scripted resets
+#define TAA_SPEC_TONE_WEIGHT 2      // ToneWeight
+#define TAA_SPEC_USE_VELOCITY 3     // UseVelocity
+#define TAA_SPEC_VELOCITY_SAMPLING 4
+#define TAA_SPEC_HISTORY_FILTER 5
+#define TAA_SPEC_REJECT_OFFSCREEN 6
+#define TAA_SPEC_DEPTH_CULLING 7
+#define TAA_SPEC_CONSISTENCY 8
+#define TAA_SPEC_ANTI_GHOSTING 9
+#define TAA_SPEC_RECTIFY 10         // Rectify
+#define TAA_SPEC_VARIANCE_CLIP 11
+#define TAA_SPEC_SHAPED 12
+#define TAA_SPEC_YCOCG 13
+#define TAA_SPEC_SHRINK_CHROMA 14
+#define TAA_SPEC_LUMA_WEIGHT 15
+#define TAA_SPEC_VELOCITY_ALPHA 16
+#define TAA_SPEC_REDUCE_BLEND 17
+#define TAA_SPEC_VELOCITY_IN_ALPHA 18
+#define TAA_SPEC_UPSAMPLE 19
+#define TAA_SPEC_DEBUG 20           // DebugOutput
+
+TAA_BLOCK(TaaUniforms) {
+  mat4 invViewProj;       // current, un-jittered: world position from depth
+  mat4 prevViewProj;      // previous, un-jittered: where that position was
+  vec4 renderSize;        // this frame's render size: w, h, 1/w, 1/h
+  vec4 prevRenderSize;    // last frame's render size (previous G-buffer content)
+  vec4 outputSize;        // w, h, 1/w, 1/h
+  vec4 jitter;            // xy: this frame's jitter (render pixels); zw: 0
+  vec4 blend;             // alpha, rejection alpha, alpha_min, alpha_max
+  vec4 limits;            // variance gamma, depth threshold, velocity_alpha_px, debug scale
+  vec4 planes;            // near, far, consistency depth tolerance, consistency normal dot
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
 static_assert(sizeof(FrameUniforms) == 6 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
 static_assert(sizeof(DrawPush) == 32);

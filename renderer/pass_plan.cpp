@@ -1,0 +1,51 @@
+#include "pass_plan.h"
+
+#include <algorithm>
+
+namespace taa {
+
+namespace {
+bool wantsAux(const spec::CaseSpec& s, spec::AuxBuffer b) {
+  return std::find(s.output.aux.begin(), s.output.aux.end(), b) != s.output.aux.end();
+}
+}  // namespace
+
+PassPlan planPasses(const spec::CaseSpec& s) {
+  using namespace spec;
+  PassPlan p;
+  const auto& t = s.taa;
+  p.taa = t.mode != TaaMode::Off;
+  const bool full = t.mode == TaaMode::Full;
+  const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
+  const bool antiGhost = full && t.anti_ghosting;
+  const bool consistency = full && t.consistency;
+  p.motionBlur = s.post.motion_blur;
+  p.velocity = reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
+  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||
+          wantsAux(s, AuxBuffer::MaterialId);
+  p.deferred = s.render.path == RenderPath::Deferred;
+  p.normal = consistency || p.deferred || wantsAux(s, AuxBuffer::Normal);
+  p.prevDepth = full && (t.depth_culling || consistency);
+  p.prevNormal = consistency;
+  p.prevIds = consistency || antiGhost;
+  p.prevVelocity = antiGhost;
+  p.sharpen = s.post.sharpen == Sharpen::Gradient;
+  p.cas = s.post.sharpen == Sharpen::Cas;
+  p.fxaa = s.post.fxaa;
+  p.debugView = s.debug.output != DebugOutput::None;
+  return p;
+}
+
+std::vector<std::string> PassPlan::describe() const {
+  std::vector<std::string> out;
+  out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
+  if (deferred) out.push_back("pass deferred_lighting");
+  if (motionBlur) out.push_back("pass motion_blur");
+  if (taa) out.push_back("pass taa_resolve");
+  if (sharpen) out.push_back("pass sharpen");
+  if (cas) out.push_back("pass cas");
+  if (fxaa) out.push_back("pass fxaa");
+  return out;
+}
+
+}  // namespace taa

@@ -1,0 +1,28 @@
+// How much of the current sample goes into the output (alpha; 1 - alpha is the
+// history's weight), after the dynamic-alpha techniques.
+#ifndef TAA_BLEND_WEIGHT_GLSL
+#define TAA_BLEND_WEIGHT_GLSL
+
+// Lottes: similar lumas (a stable pixel) lean on history (alpha_min); a large
+// relative difference trusts the current frame more (toward alpha_max). The 0.2
+// floor keeps dark pixels from dividing by zero.
+float lottesAlpha(float lumaCurrent, float lumaHistory) {
+  float diff = abs(lumaCurrent - lumaHistory) / max(max(lumaCurrent, lumaHistory), 0.2);
+  float similarity = 1.0 - clamp(diff, 0.0, 1.0);
+  return mix(taaUniforms.blend.w, taaUniforms.blend.z, similarity * similarity);
+}
+
+// Karis: the closer the history's luma came to the box edge, the likelier it is to
+// flicker in and out of clamping; lean on the current frame there. t = 1 at the box
+// centre, 0 on the edge; a flat box counts as on the edge.
+float reduceBlendNearClamp(float alpha, float lumaHistory, float lo, float hi) {
+  float halfExtent = 0.5 * (hi - lo);
+  float t = halfExtent > 1e-7 ? clamp(min(lumaHistory - lo, hi - lumaHistory) / halfExtent, 0.0, 1.0) : 0.0;
+  return alpha + (1.0 - alpha) * 0.5 * (1.0 - t);
+}
+
+float velocityAlpha(float alpha, float speedPx) {
+  return mix(alpha, 1.0, clamp(speedPx / taaUniforms.limits.z, 0.0, 1.0));
+}
+
+#endif

@@ -1,0 +1,50 @@
+// Working colour space of the neighbourhood box and the luminance-weighted blends.
+#ifndef TAA_COLOR_SPACE_GLSL
+#define TAA_COLOR_SPACE_GLSL
+
+const float kHalfMax = 65504.0;
+
+float luma(vec3 rgb) { return dot(rgb, vec3(0.2126, 0.7152, 0.0722)); }
+
+vec3 rgbToYCoCg(vec3 c) {
+  return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+
+vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+vec3 toWorking(vec3 rgb) { return kYCoCg ? rgbToYCoCg(rgb) : rgb; }
+vec3 fromWorking(vec3 w) { return kYCoCg ? yCoCgToRgb(w) : w; }
+float workingLuma(vec3 w) { return kYCoCg ? w.x : luma(w); }
+
+// Blends history toward current by alpha in the space the case chose. Karis weights
+// each sample by 1/(1+luma) so a single bright sample cannot dominate; inverse-luma
+// blends tonemapped colours and maps back; log blends log(1+c).
+vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha) {
+  if (kToneWeight == 1) {
+    float wc = alpha / (1.0 + luma(current));
+    float wh = (1.0 - alpha) / (1.0 + luma(history));
+    return (current * wc + history * wh) / max(wc + wh, 1e-20);
+  } else if (kToneWeight == 2) {
+    vec3 tc = current / (1.0 + luma(current));
+    vec3 th = history / (1.0 + luma(history));
+    vec3 t = mix(th, tc, alpha);
+    // The inverse c / (1 - luma) has a pole at luma 1; tonemapped lumas of finite
+    // colours stay below it, so keep the blend there and bound the result.
+    return t / max(1.0 - luma(t), 1.0 / kHalfMax);
+  } else if (kToneWeight == 3) {
+    vec3 lc = log(1.0 + max(current, vec3(0.0)));
+    vec3 lh = log(1.0 + max(history, vec3(0.0)));
+    return exp(mix(lh, lc, alpha)) - 1.0;
+  }
+  return mix(history, current, alpha);
+}
+
+bool isFinite3(vec3 c) { return !any(isnan(c)) && !any(isinf(c)); }
+
+// What may enter the history: finite, non-negative, representable in half floats.
+vec3 boundColor(vec3 c) {
+  c = mix(c, vec3(0.0), isnan(c));
+  return clamp(c, vec3(0.0), vec3(kHalfMax));
+}
+
+#endif

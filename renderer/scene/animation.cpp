@@ -1,0 +1,110 @@
+// Node animation sampling (glTF 2.0 semantics) and hierarchy evaluation.
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "scene/scene.h"
+
+namespace taa::scene {
+namespace {
+
+glm::quat toQuat(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
+
+// Spherical interpolation along the shorter arc, as the glTF spec's reference does;
+// glm::slerp would not flip the sign and could take the long way round.
+glm::quat slerpShortest(glm::quat a, glm::quat b, float t) {
+  if (glm::dot(a, b) < 0.0f) b = -b;
+  return glm::normalize(glm::slerp(a, b, t));
+}
+
+// Samples one channel at `t` (seconds within the animation). Before the first key and
+// after the last the end values hold, as the spec requires.
+glm::vec4 sample(const AnimChannel& ch, float t, bool rotation) {
+  const size_t n = ch.times.size();
+  const bool cubic = ch.interpolation == Interpolation::CubicSpline;
+  auto value = [&](size_t k) { return cubic ? ch.values[3 * k + 1] : ch.values[k]; };
+  assert(n > 0 && ch.values.size() == (cubic ? 3 * n : n));
+  if (t <= ch.times.front() || n == 1) return value(0);
+  if (t >= ch.times.back()) return value(n - 1);
+  // The key k with times[k] <= t < times[k + 1].
+  const size_t k = size_t(std::upper_bound(ch.times.begin(), ch.times.end(), t) - ch.times.begin()) - 1;
+  const float t0 = ch.times[k], td = ch.times[k + 1] - t0;
+  const float s = td > 0.0f ? (t - t0) / td : 0.0f;
+  switch (ch.interpolation) {
+    case Interpolation::Step: return value(k);
+    case Interpolation::Linear:
+      if (rotation) {
+        const glm::quat q = slerpShortest(toQuat(value(k)), toQuat(value(k + 1)), s);
+        return {q.x, q.y, q.z, q.w};
+      }
+      return value(k) + (value(k + 1) - value(k)) * s;
+    case Interpolation::CubicSpline: {
+      // Hermite spline with tangents scaled by the key interval (glTF spec, Appendix C).
+      const glm::vec4 p0 = ch.values[3 * k + 1], m0 = ch.values[3 * k + 2] * td;
+      const glm::vec4 p1 = ch.values[3 * (k + 1) + 1], m1 = ch.values[3 * (k + 1)] * td;
+      const float s2 = s * s, s3 = s2 * s;
+      glm::vec4 v = (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 +
+                    (s3 - s2) * m1;
+      if (rotation) v = glm::normalize(v);
+      return v;
+    }
+  }
+  return value(k);
+}
+
+}  // namespace
+
+std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
+  const Model& m = scene.models[size_t(model)];
+  std::vector<Node> nodes = m.nodes;
+  if (!m.animations.empty()) {
+    const Animation& anim = m.animations.front();
+    double local = 0.0;
+    if (anim.duration > 0.0f) {
+      local = std::fmod(time, double(anim.duration));
+      if (local < 0.0) local += double(anim.duration);
+    }
+    for (const AnimChannel& ch : anim.channels) {
+      if (ch.node < 0 || size_t(ch.node) >= nodes.size() || ch.times.empty()) continue;
+      Node& n = nodes[size_t(ch.node)];
+      const glm::vec4 v = sample(ch, float(local), ch.path == AnimPath::Rotation);
+      switch (ch.path) {
+        case AnimPath::Translation: n.translation = glm::vec3(v); break;
+        case AnimPath::Rotation: n.rotation = toQuat(v); break;
+        case AnimPath::Scale: n.scale = glm::vec3(v); break;
+      }
+    }
+  }
+  std::vector<glm::mat4> world(nodes.size());
+  std::vector<MeshDraw> draws;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const Node& n = nodes[i];
+    const glm::mat4 local = glm::translate(glm::mat4(1.0f), n.translation) * glm::mat4_cast(n.rotation) *
+                            glm::scale(glm::mat4(1.0f), n.scale);
+    assert(n.parent < int(i));
+    world[i] = n.parent >= 0 ? world[size_t(n.parent)] * local : local;
+    if (n.mesh >= 0) draws.push_back({int(i), n.mesh, world[i]});
+  }
+  return draws;
+}
+
+void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi) {
+  bool any = false;
+  lo = hi = glm::vec3(0.0f);
+  for (const MeshDraw& d : poseModel(scene, model, 0.0)) {
+    const Mesh& mesh = scene.meshes[size_t(d.mesh)];
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec3 corner((c & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
+                             (c & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
+                             (c & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
+      const glm::vec3 p(d.transform * glm::vec4(corner, 1.0f));
+      lo = any ? glm::min(lo, p) : p;
+      hi = any ? glm::max(hi, p) : p;
+      any = true;
+    }
+  }
+}
+
+}  // namespace taa::scene

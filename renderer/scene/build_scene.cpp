@@ -1,0 +1,63 @@
+#include "scene/build_scene.h"
+
+#include "scene/gltf_loader.h"
+#include "scene/procedural.h"
+#include "scene/scene_error.h"
+#include "scene/textures.h"
+
+namespace taa::scene {
+namespace {
+
+// Case paths are relative to the case file. The case validator already refuses paths
+// that leave the case's folder; the glTF loader confines what the glTF itself refers to.
+std::filesystem::path resolve(const spec::CaseSpec& spec, const std::string& path) {
+  return spec.file.parent_path() / path;
+}
+
+}  // namespace
+
+bool materialHasAlpha(const Scene& scene, const Material& m) {
+  if (m.alphaMode != AlphaMode::Opaque || m.baseColorFactor.a < 1.0f) return true;
+  return m.baseColorTexture >= 0 && hasTranslucentTexels(scene.textures[size_t(m.baseColorTexture)]);
+}
+
+void applyAlphaOverride(Scene& scene, spec::AlphaMode mode, float cutoff) {
+  if (mode == spec::AlphaMode::Asset) return;
+  for (Material& m : scene.materials) {
+    if (!materialHasAlpha(scene, m)) continue;
+    if (mode == spec::AlphaMode::Mask) {
+      m.alphaMode = AlphaMode::Mask;
+      m.alphaCutoff = cutoff;
+    } else {
+      m.alphaMode = AlphaMode::Blend;
+    }
+  }
+}
+
+Scene buildScene(const spec::CaseSpec& spec) {
+  Scene scene;
+  try {
+    if (!spec.scene.gltf.empty())
+      scene.models.push_back(loadGltf(resolve(spec, spec.scene.gltf), scene));
+    else
+      scene.models.push_back(buildProceduralScene(spec.scene.builtin, scene));
+  } catch (const SceneError& e) {
+    // Procedural errors know no file; name the case so the message is actionable.
+    if (!spec.scene.gltf.empty()) throw;
+    throw SceneError(spec.file, std::string("scene.builtin: ") + e.what());
+  }
+  for (size_t i = 0; i < spec.movers.size(); ++i) {
+    const spec::MoverSpec& m = spec.movers[i];
+    if (m.shape == spec::MoverShape::Gltf) {
+      if (m.gltf.empty())
+        throw SceneError(spec.file, "movers[" + std::to_string(i) + "]: shape is gltf but no gltf file is given");
+      scene.models.push_back(loadGltf(resolve(spec, m.gltf), scene));
+    } else {
+      scene.models.push_back(buildMoverShape(m.shape, m.color, scene));
+    }
+  }
+  applyAlphaOverride(scene, spec.material.alpha_mode, spec.material.alpha_cutoff);
+  return scene;
+}
+
+}  // namespace taa::scene

@@ -1,0 +1,104 @@
+#include "scene/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <fstream>
+
+#include "scene/gltf_convert.h"
+#include "scene/scene_error.h"
+
+namespace taa::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+// File-system callbacks that confine tinygltf to the glTF's folder even if a uri slipped
+// past checkGltfUris, and that replace its default path expansion (wordexp, which
+// would expand '~' and environment variables in a uri).
+struct Jail {
+  fs::path root;  // canonical folder of the glTF file
+  bool contains(const std::string& path) const {
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(fs::path(path), ec);
+    if (ec) return false;
+    const fs::path rel = p.lexically_relative(root);
+    return !rel.empty() && *rel.begin() != ".." && !rel.is_absolute();
+  }
+};
+
+// Whole-file read by size: istreambuf_iterator trips GCC 12's -Wnull-dereference.
+bool slurp(const fs::path& path, std::vector<uint8_t>& out) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return false;
+  const std::streamoff size = in.tellg();
+  if (size < 0) return false;
+  out.resize(size_t(size));
+  in.seekg(0);
+  return size == 0 || bool(in.read(reinterpret_cast<char*>(out.data()), size));
+}
+
+bool jailExists(const std::string& path, void* user) {
+  std::error_code ec;
+  return static_cast<Jail*>(user)->contains(path) && fs::is_regular_file(path, ec);
+}
+
+std::string jailExpand(const std::string& path, void*) { return path; }
+
+bool jailRead(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (!static_cast<Jail*>(user)->contains(path)) {
+    if (err) *err += "refused to read '" + path + "': outside the glTF's folder\n";
+    return false;
+  }
+  if (!slurp(path, *out)) {
+    if (err) *err += "cannot read '" + path + "'\n";
+    return false;
+  }
+  return true;
+}
+
+bool jailWrite(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "refused to write '" + path + "': the scene loader never writes\n";
+  return false;
+}
+
+std::vector<uint8_t> readFile(const fs::path& file) {
+  std::vector<uint8_t> bytes;
+  if (!slurp(file, bytes))
+    throw SceneError(file, "cannot read the glTF file; check that it exists and that the path is relative "
+                           "to the case file");
+  return bytes;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  for (auto& c : s)
+    if (c == '\n') c = ' ';
+  return s;
+}
+
+}  // namespace
+
+Model loadGltf(const fs::path& file, Scene& scene) {
+  const std::vector<uint8_t> bytes = readFile(file);
+  const bool binary = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+  const std::string json = binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
+  checkGltfUris(file, json);
+
+  std::error_code ec;
+  Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec)};
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&jailExists, &jailExpand, &jailRead, &jailWrite, &jail});
+  tinygltf::Model gltf;
+  std::string err, warn;
+  const std::string base = jail.root.string();
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
+                                                       static_cast<unsigned int>(bytes.size()), base)
+                         : loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(),
+                                                      static_cast<unsigned int>(json.size()), base);
+  if (!ok)
+    throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
+                               "; check the file with the Khronos glTF validator or re-export it");
+  return convertGltf(file, gltf, trimmed(warn), scene);
+}
+
+}  // namespace taa::scene

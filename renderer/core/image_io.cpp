@@ -147,7 +147,8 @@ constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
 
 float srgbEncode(float linear) {
   if (linear <= 0.0031308f) return 12.92f * linear;
-  // The curve's constants put 1.0 a float ulp off 1.0; display values must stay in [0, 1].
+  // In float the curve maps 1.0 an ulp away from 1.0; white must stay exactly white.
+  if (linear >= 1.0f) return 1.0f;
   return std::min(1.0f, 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f);
 }
 

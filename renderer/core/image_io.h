@@ -1,0 +1,74 @@
+// Image files for goldens and reports: lossless half-float EXR for the data that is compared,
+// tonemapped 8-bit PNG for people to look at.
+//
+// Pixel fingerprint (pixelSha256), the exact definition goldens rely on:
+//   SHA-256 over the image's samples in row-major order, top row first, channels interleaved
+//   (the layout of Image::data), each sample converted to an IEEE 754 binary16 ("half") with
+//   floatToHalfBits (round to nearest, ties to even; overflow to +-Inf; NaN stays NaN) and
+//   written as 2 bytes, little-endian. Nothing else is hashed: no width, height or channel count,
+//   so two images of different shape but equal sample bytes hash equal; callers that care store
+//   the shape next to the hash. The hash is lowercase hex (64 characters).
+// Hashing the half bits rather than the floats means an image and its EXR round trip
+// (writeExr then readExr) always have the same fingerprint.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "core/image.h"
+
+namespace taa {
+
+// Every failure to read or write an image file; what() names the file and carries
+// OpenImageIO's own message.
+class ImageIoError : public std::runtime_error {
+ public:
+  ImageIoError(const std::filesystem::path& path, const std::string& message);
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Writes every channel (1 to 4; named R, G, B, A in that order) as half-float OpenEXR with
+// lossless ZIP compression. Values are rounded with floatToHalfBits, so a later readExr gives
+// back exactly halfRound() of each sample. Atomic: the data goes to a temporary file in the same
+// folder that is then renamed over `path`; on failure an older file at `path` is left untouched.
+void writeExr(const std::filesystem::path& path, const Image& image);
+
+// Reads an OpenEXR file as float samples with the file's channels (R, G, B, A first).
+// Throws ImageIoError when the file is missing, unreadable or not OpenEXR.
+Image readExr(const std::filesystem::path& path);
+
+// Reads any format OpenImageIO knows as float samples (8-bit files come back in [0, 1]).
+Image readImage(const std::filesystem::path& path);
+
+// Writes a linear HDR image for viewing as 8-bit sRGB PNG, alpha dropped; see toDisplaySrgb for
+// the exact mapping. Atomic like writeExr.
+void writePng(const std::filesystem::path& path, const Image& hdr);
+
+// Writes an image that is already display-referred (heatmaps, crops of a display image): each of
+// the first three channels is clamped to [0, 1] and quantized as round(v * 255) with no transfer
+// function applied. One channel is written as grey. NaN pixels become magenta. Atomic.
+void writePngLinear8(const std::filesystem::path& path, const Image& rgb01);
+
+// The display image writePng quantizes, as 3-channel floats in [0, 1]:
+//   per channel c of linear RGB: NaN in any channel -> the whole pixel is magenta (1, 0, 1);
+//   otherwise c <= 0 (and -Inf) -> 0, +Inf -> 1, else Reinhard c / (1 + c);
+//   then the sRGB transfer function (IEC 61966-2-1 piecewise curve).
+// A 1- or 2-channel image is treated as grey (channel 0 in R, G and B).
+// flipLdrFromHdr uses the same mapping so FLIP judges what the PNG shows.
+Image toDisplaySrgb(const Image& hdr);
+
+// IEEE 754 binary16 conversions, independent of the host's FPU modes.
+uint16_t floatToHalfBits(float value);  // round to nearest, ties to even
+float halfBitsToFloat(uint16_t bits);
+// The value an EXR round trip produces: halfBitsToFloat(floatToHalfBits(value)).
+float halfRound(float value);
+
+// See the definition at the top of this file.
+std::string pixelSha256(const Image& image);
+
+}  // namespace taa

@@ -30,6 +30,12 @@ Image decodeTarget(const std::vector<uint8_t>& bytes, VkFormat format, int targe
             out.at(x, y, c) = halfAt(&bytes[(size_t(y) * targetWidth + x) * channels * 2 + size_t(c) * 2]);
       return out;
     }
+    case VK_FORMAT_R32G32B32A32_SFLOAT: {
+      Image out(width, height, 4);
+      for (int y = 0; y < height; ++y)
+        std::memcpy(&out.at(0, y), &bytes[size_t(y) * targetWidth * 16], size_t(width) * 16);
+      return out;
+    }
     case VK_FORMAT_D32_SFLOAT:
     case VK_FORMAT_R32_SFLOAT: {
       Image out(width, height, 1);

@@ -7,7 +7,10 @@
 #include "draw_list.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
+#include "pass_plan.h"
 #include "passes/gbuffer.h"
+#include "passes/taa_resolve.h"
+#include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
 #include "vk/context.h"
@@ -32,16 +35,21 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
   return size;
 }
 
-GBufferConfig gbufferConfig(const spec::CaseSpec& spec) {
+GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
   GBufferConfig c;
   const glm::ivec2 size = maxRenderSize(spec);
   c.width = uint32_t(size.x);
   c.height = uint32_t(size.y);
-  c.deferred = spec.render.path == spec::RenderPath::Deferred;
-  c.velocity = wants(spec, spec::AuxBuffer::Velocity);
-  c.normal = c.deferred || wants(spec, spec::AuxBuffer::Normal);
-  c.ids = wants(spec, spec::AuxBuffer::MaterialId);
+  c.deferred = plan.deferred;
+  c.velocity = plan.velocity;
+  c.normal = plan.normal;
+  c.ids = plan.ids;
   return c;
+}
+
+std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
+  if (!plan.taa) return nullptr;
+  return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 
 }  // namespace
@@ -51,9 +59,12 @@ struct Renderer::State {
   const spec::CaseSpec& spec;
   const scene::Scene& scene;
   GpuScene gpuScene;
+  PassPlan plan;
   GBufferConfig config;
   GBufferTargets targets;
   GBufferPass gbuffer;
+  PrevGBuffer prev;
+  std::unique_ptr<TaaResolvePass> resolve;
   vk::Buffer frameUniforms;
   vk::Buffer instances;
   vk::GpuTimer timer;
@@ -61,17 +72,21 @@ struct Renderer::State {
   int nextFrame = 0;
 
   State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc)
-      : ctx(c), spec(s), scene(sc), gpuScene(c, sc), config(gbufferConfig(s)), targets(c, config),
-        gbuffer(c, gpuScene, config),
+      : ctx(c), spec(s), scene(sc), gpuScene(c, sc), plan(planPasses(s)), config(gbufferConfig(s, plan)),
+        targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
         frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
         instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                          sizeof(gpu::InstanceData),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
-    log.push_back(std::string("pass gbuffer (") + (config.deferred ? "deferred" : "forward") + ")");
-    if (config.deferred) log.push_back("pass deferred_lighting");
+    if (plan.motionBlur || plan.sharpen || plan.cas || plan.fxaa)
+      throw std::logic_error("post passes are not implemented yet");
+    for (const auto& p : plan.describe()) log.push_back(p);
+    if (resolve) log.push_back(resolve->describe());
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
+    for (const auto& t : prev.describe()) log.push_back("buffer " + t);
+    if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
     log.push_back("scene: " + std::to_string(sc.vertices.size()) + " vertices, " +
                   std::to_string(sc.indices.size() / 3) + " triangles, " + std::to_string(sc.textures.size()) +
                   " textures (" + std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
@@ -97,12 +112,31 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   std::memcpy(s.frameUniforms.mapped(), &uniforms, sizeof(uniforms));
   std::memcpy(s.instances.mapped(), draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
 
-  const float lodBias = s.spec.material.lod_bias_taa_only ? 0.0f : s.spec.material.lod_bias;
+  const bool lodBiasApplies = !s.spec.material.lod_bias_taa_only || s.plan.taa;
+  const float lodBias = lodBiasApplies ? s.spec.material.lod_bias : 0.0f;
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
   s.timer.begin(cmd, "gbuffer");
   s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), s.instances.handle(), state.renderSize, lodBias);
   s.timer.end(cmd);
+  vk::Image* output = &s.targets.color;
+  if (s.resolve) {
+    TaaInputs in;
+    in.color = &s.targets.color;
+    in.depth = &s.targets.depth;
+    in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
+    in.ids = s.targets.ids ? &s.targets.ids : nullptr;
+    in.normal = s.targets.normal ? &s.targets.normal : nullptr;
+    in.prevDepth = s.prev.depth ? &s.prev.depth : nullptr;
+    in.prevNormal = s.prev.normal ? &s.prev.normal : nullptr;
+    in.prevIds = s.prev.ids ? &s.prev.ids : nullptr;
+    in.prevVelocity = s.prev.velocity ? &s.prev.velocity : nullptr;
+    s.timer.begin(cmd, "taa_resolve");
+    s.resolve->record(cmd, state, in);
+    s.timer.end(cmd);
+    output = s.resolve->debugView() ? s.resolve->debugView() : &s.resolve->output();
+    s.prev.capture(cmd, s.targets);
+  }
   s.ctx.submitAndWait(cmd);
 
   FrameRecord record;
@@ -117,7 +151,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
       return decodeTarget(vk::readImage(s.ctx, img), img.desc().format, tw, w, h);
     };
     record.hasImages = true;
-    record.color = read(s.targets.color);
+    if (output == &s.targets.color) {
+      record.color = read(s.targets.color);
+    } else {
+      const int ow = int(output->desc().width), oh = int(output->desc().height);
+      record.color = decodeTarget(vk::readImage(s.ctx, *output), output->desc().format, ow, ow, oh);
+    }
     record.colorSha256 = pixelSha256(record.color);
     if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
     if (wants(s.spec, spec::AuxBuffer::Velocity)) record.aux.push_back({"velocity", read(s.targets.velocity)});

@@ -1,0 +1,22 @@
+// Last frame's G-buffer targets that the resolve compares against (depth culling,
+// consistency, anti-ghosting): copies taken at the end of each frame, allocated only
+// for the targets the plan names.
+#pragma once
+
+#include "pass_plan.h"
+#include "passes/gbuffer.h"
+
+namespace taa {
+
+struct PrevGBuffer {
+  vk::Image depth;
+  vk::Image normal;
+  vk::Image ids;
+  vk::Image velocity;
+
+  PrevGBuffer(vk::Context& ctx, const PassPlan& plan, const GBufferTargets& current);
+  void capture(VkCommandBuffer cmd, GBufferTargets& current);
+  std::vector<std::string> describe() const;
+};
+
+}  // namespace taa

@@ -14,10 +14,18 @@ layout(location = 3) in vec4 inCurClip;
 layout(location = 4) in vec4 inPrevClip;
 
 layout(location = GBUF_OUT_COLOR) out vec4 outColor;
+#if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
 layout(location = GBUF_OUT_VELOCITY) out vec2 outVelocity;
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_NORMAL) != 0
 layout(location = GBUF_OUT_NORMAL) out vec4 outNormal;
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_IDS) != 0
 layout(location = GBUF_OUT_IDS) out uint outIds;
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0
 layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
+#endif
 
 void main() {
   vec4 base = draw.baseColor * texture(baseColorTexture, inUv, draw.lodBias);
@@ -26,14 +34,22 @@ void main() {
   vec3 n = normalize(inNormal);
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces light their back face too
 
+#if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
   // Screen motion in pixels from last frame to this one, both un-jittered:
   // history for this pixel lies at (pixel - velocity).
   vec2 cur = inCurClip.xy / inCurClip.w;
   vec2 prev = inPrevClip.xy / inPrevClip.w;
   outVelocity = (cur - prev) * 0.5 * frame.renderSize.xy;
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_NORMAL) != 0
   outNormal = vec4(n, 0.0);
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_IDS) != 0
   InstanceData inst = instances[draw.instance];
   outIds = (inst.ids.y != 0u ? IDS_MOVER_BIT : 0u) | ((inst.ids.x & 0x7fffu) << 16) | (draw.material & 0xffffu);
+#endif
+#if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0
   outAlbedo = vec4(base.rgb, 1.0);
+#endif
   outColor = kDeferred ? vec4(0.0) : vec4(shadeBlinnPhong(base.rgb, n, inWorldPos, frame), base.a);
 }

@@ -36,6 +36,13 @@ std::vector<VkFormat> colorFormats(const GBufferConfig& c) {
   return f;
 }
 
+// The fragment-shader variant declaring exactly the allocated outputs.
+std::string variant(const char* shader, const GBufferConfig& c) {
+  const int mask = (c.velocity ? GBUF_OUTPUT_VELOCITY : 0) | (c.normal ? GBUF_OUTPUT_NORMAL : 0) |
+                   (c.ids ? GBUF_OUTPUT_IDS : 0) | (c.deferred ? GBUF_OUTPUT_ALBEDO : 0);
+  return std::string(shader) + "." + std::to_string(mask);
+}
+
 const std::vector<VkDescriptorType> kBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
 
@@ -64,7 +71,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
       pointClamp_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   vk::GraphicsDesc d;
   d.vertexShader = "gbuffer.vert";
-  d.fragmentShader = "gbuffer.frag";
+  d.fragmentShader = variant("gbuffer.frag", config);
   d.bindings = kBindings;
   d.pushConstantBytes = sizeof(gpu::DrawPush);
   d.spec.set(GBUF_SPEC_DEFERRED, config.deferred);
@@ -85,7 +92,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
 
   vk::GraphicsDesc s = d;
   s.vertexShader = "sky.vert";
-  s.fragmentShader = "sky.frag";
+  s.fragmentShader = variant("sky.frag", config);
   s.vertexInput = false;
   s.depthWrite = false;
   s.depthCompare = VK_COMPARE_OP_EQUAL;  // only where no geometry moved depth off the far plane

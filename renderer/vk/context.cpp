@@ -178,6 +178,9 @@ void Context::createDevice() {
   e12.hostQueryReset = VK_TRUE;
   VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &e12};
   enabled.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
+  if (!supported.features.independentBlend)
+    throw EnvironmentError(info_.name + " lacks independentBlend (blended surfaces must leave the other targets alone)");
+  enabled.features.independentBlend = VK_TRUE;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo q{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

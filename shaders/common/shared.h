@@ -30,6 +30,12 @@ using uint = uint32_t;
 #define GBUF_OUT_ALBEDO 4
 #define GBUF_OUT_COUNT 5
 
+// Bits of a G-buffer fragment-shader variant (VARIANT_MASK): which optional outputs exist.
+#define GBUF_OUTPUT_VELOCITY 1
+#define GBUF_OUTPUT_NORMAL 2
+#define GBUF_OUTPUT_IDS 4
+#define GBUF_OUTPUT_ALBEDO 8
+
 #define GBUF_SPEC_DEFERRED 0  // write albedo for the deferred lighting pass instead of shading
 
 TAA_BLOCK(FrameUniforms) {

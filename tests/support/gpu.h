@@ -1,0 +1,31 @@
+// Shared GPU plumbing for tests: one lavapipe context per test process (with a
+// hermetic shader cache), and helpers to move float images to and from the device.
+#pragma once
+
+#include <string>
+
+#include "core/image.h"
+#include "spec/case_spec.h"
+#include "vk/context.h"
+#include "vk/resources.h"
+#include "frame_record.h"
+
+namespace taa::test {
+
+vk::Context& gpu();
+
+// A device image of `format` (RGBA16F, RGBA32F, RG16F, R32F) holding `image`,
+// ready for sampling in compute shaders.
+vk::Image uploadFloatImage(const Image& image, VkFormat format, const char* name = "test_input");
+
+// The whole image read back as floats.
+Image downloadImage(vk::Image& image);
+
+// Parses a case from JSON text (as if it were cases/NAME.json) with every default filled in.
+spec::CaseSpec caseFromJson(const std::string& json, const std::string& name = "test");
+
+// Renders a case and returns every frame's record; images for `framesWithImages`
+// (empty: the case's output.frames).
+std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages = {});
+
+}  // namespace taa::test

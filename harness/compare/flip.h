@@ -48,7 +48,9 @@ struct FlipOptions {
 };
 
 struct FlipResult {
-  Image errorMap;     // 1 channel, same size as the inputs, values in [0, 1]
+  // 1 channel, same size as the inputs. Values lie in [0, 1] as long as no colour distance exceeds
+  // cmax, the paper's green-blue bound; like the reference, nothing clamps them.
+  Image errorMap;
   double mean = 0.0;  // mean of errorMap
   // Nearest-rank percentiles: the value at sorted index ceil(p/100 * N) - 1.
   float p50 = 0.0f;

@@ -48,8 +48,9 @@ struct FlipOptions {
 };
 
 struct FlipResult {
-  // 1 channel, same size as the inputs. Values lie in [0, 1] as long as no colour distance exceeds
-  // cmax, the paper's green-blue bound; like the reference, nothing clamps them.
+  // 1 channel, same size as the inputs, values in [0, 1]: filtered colours are clamped to the RGB
+  // cube, where green-blue (cmax) is the largest Hunt-adjusted HyAB distance (checked on a 9^3
+  // grid of the cube); like the reference, nothing clamps the result itself.
   Image errorMap;
   double mean = 0.0;  // mean of errorMap
   // Nearest-rank percentiles: the value at sorted index ceil(p/100 * N) - 1.

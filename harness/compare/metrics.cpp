@@ -13,10 +13,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void checkPair(const Image& a, const Image& b) {
   if (!a.sameShape(b)) {
-    throw std::invalid_argument(
-        "compare: shapes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-        "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
-        std::to_string(b.height) + "x" + std::to_string(b.channels));
+    throw std::invalid_argument("compare: shapes differ: " + std::to_string(a.width) + "x" +
+                                std::to_string(a.height) + "x" + std::to_string(a.channels) +
+                                " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                                "x" + std::to_string(b.channels));
   }
   if (a.pixelCount() == 0 || a.channels <= 0) throw std::invalid_argument("compare: empty image");
 }

@@ -1,12 +1,11 @@
 #include "core/image_io.h"
 
+#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
-
-#include <array>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -62,7 +61,9 @@ float halfBitsToFloat(uint16_t bits) {
   return std::bit_cast<float>(sign | ((exponent - 15 + 127) << 23) | (mantissa << 13));
 }
 
-float halfRound(float value) { return halfBitsToFloat(floatToHalfBits(value)); }
+float halfRound(float value) {
+  return halfBitsToFloat(floatToHalfBits(value));
+}
 
 std::string pixelSha256(const Image& image) {
   Sha256 hash;
@@ -252,6 +253,8 @@ void writePng(const fs::path& path, const Image& hdr) {
   writeRgb8(path, toDisplaySrgb(hdr));
 }
 
-void writePngLinear8(const fs::path& path, const Image& rgb01) { writeRgb8(path, rgb01); }
+void writePngLinear8(const fs::path& path, const Image& rgb01) {
+  writeRgb8(path, rgb01);
+}
 
 }  // namespace taa

@@ -1,11 +1,9 @@
 #include "core/image_io.h"
-#include "core/sha256.h"
 
+#include <Imath/half.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-#include <Imath/half.h>
 
 #include <bit>
 #include <cmath>
@@ -13,6 +11,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+
+#include "core/sha256.h"
 
 namespace fs = std::filesystem;
 using taa::Image;
@@ -68,11 +68,11 @@ TEST(ImageIoHalf, MatchesImathForEveryHalfAndMidpoints) {
       EXPECT_TRUE(std::isnan(taa::halfRound(f)));
       continue;
     }
-    ASSERT_EQ(std::bit_cast<uint32_t>(f), std::bit_cast<uint32_t>(imathHalfToFloat(h)))
-        << bits;
+    ASSERT_EQ(std::bit_cast<uint32_t>(f), std::bit_cast<uint32_t>(imathHalfToFloat(h))) << bits;
     ASSERT_EQ(taa::floatToHalfBits(f), h) << bits;
     const float next = std::nextafter(f, std::copysign(std::numeric_limits<float>::infinity(), f));
-    for (float probe : {next, f * 1.0001f, f + (taa::halfBitsToFloat(uint16_t(h + 1)) - f) * 0.5f}) {
+    for (float probe :
+         {next, f * 1.0001f, f + (taa::halfBitsToFloat(uint16_t(h + 1)) - f) * 0.5f}) {
       if (std::isnan(probe)) continue;
       ASSERT_EQ(taa::floatToHalfBits(probe), Imath::half(probe).bits()) << bits << " " << probe;
     }
@@ -142,8 +142,12 @@ TEST(ImageIoExr, ReadingMissingOrNonExrFileNamesIt) {
 TEST(ImageIoPng, TonemapsWithReinhardAndSrgb) {
   Image hdr(6, 1, 4);
   const float inf = std::numeric_limits<float>::infinity();
-  const float rgb[6][3] = {{0, 0, 0},     {1, 1, 1},         {-2, 0.25f, 3},
-                           {inf, -inf, 0}, {std::nanf(""), 0, 0}, {1e6f, 0.004f, 0.02f}};
+  const float rgb[6][3] = {{0, 0, 0},
+                           {1, 1, 1},
+                           {-2, 0.25f, 3},
+                           {inf, -inf, 0},
+                           {std::nanf(""), 0, 0},
+                           {1e6f, 0.004f, 0.02f}};
   for (int x = 0; x < 6; ++x) {
     for (int c = 0; c < 3; ++c) hdr.at(x, 0, c) = rgb[x][c];
     hdr.at(x, 0, 3) = 0.0f;  // alpha must not matter

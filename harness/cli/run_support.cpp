@@ -16,6 +16,7 @@ RunContext::RunContext(const spec::CaseSpec& spec, const std::filesystem::path& 
   options.device = device;
   options.validate = validate;
   options.shaderCacheDir = outDir / ".shader-cache";
+  std::filesystem::create_directories(options.shaderCacheDir);
   scene_ = scene::buildScene(spec);
   ctx_ = std::make_unique<vk::Context>(options);
   renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_);

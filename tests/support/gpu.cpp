@@ -18,6 +18,7 @@ vk::Context& gpu() {
   static std::unique_ptr<vk::Context> ctx = [] {
     vk::ContextOptions options;
     options.shaderCacheDir = std::filesystem::path(TAA_TEST_OUT) / "shader-cache";
+    std::filesystem::create_directories(options.shaderCacheDir);
     return std::make_unique<vk::Context>(options);
   }();
   return *ctx;

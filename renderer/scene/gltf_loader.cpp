@@ -16,13 +16,24 @@ namespace fs = std::filesystem;
 // past checkGltfUris, and that replace its default path expansion (wordexp, which
 // would expand '~' and environment variables in a uri).
 struct Jail {
-  fs::path root;  // canonical folder of the glTF file
-  bool contains(const std::string& path) const {
+  fs::path root;                      // canonical folder of the glTF file
+  std::vector<std::string> refused;   // existing files kept out, for the error message
+  bool contains(const std::string& path) {
     std::error_code ec;
     const fs::path p = fs::weakly_canonical(fs::path(path), ec);
     if (ec) return false;
     const fs::path rel = p.lexically_relative(root);
-    return !rel.empty() && *rel.begin() != ".." && !rel.is_absolute();
+    if (!rel.empty() && *rel.begin() != ".." && !rel.is_absolute()) return true;
+    // tinygltf also probes the working directory; only a file that is there is news.
+    if (fs::exists(p, ec)) refused.push_back(path + "' resolves to '" + p.string());
+    return false;
+  }
+  // Why loading failed when the cause was a refusal, else "".
+  std::string explain() const {
+    if (refused.empty()) return "";
+    return "'" + refused.front() +
+           "', outside the glTF's folder (through a symbolic link, or tinygltf's fallback to the "
+           "working directory); put the file itself inside the glTF's folder";
   }
 };
 
@@ -85,7 +96,7 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   checkGltfUris(file, json);
 
   std::error_code ec;
-  Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec)};
+  Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&jailExists, &jailExpand, &jailRead, &jailWrite, &jail});
   tinygltf::Model gltf;
@@ -95,6 +106,7 @@ Model loadGltf(const fs::path& file, Scene& scene) {
                                                        static_cast<unsigned int>(bytes.size()), base)
                          : loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(),
                                                       static_cast<unsigned int>(json.size()), base);
+  if (!jail.explain().empty()) throw SceneError(file, jail.explain());
   if (!ok)
     throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
                                "; check the file with the Khronos glTF validator or re-export it");

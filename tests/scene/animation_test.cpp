@@ -9,7 +9,9 @@
 namespace taa::scene {
 namespace {
 
-glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
+glm::vec3 origin(const glm::mat4& m) {
+  return glm::vec3(m[3]);
+}
 
 void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, eps);
@@ -55,14 +57,16 @@ TEST_F(AnimatedFixture, CubicSplineFollowsHermiteWithScaledTangents) {
   const glm::mat4 parent = d[0].transform;
   const glm::vec3 local = glm::vec3(glm::inverse(parent) * glm::vec4(origin(d[1].transform), 1.0f));
   expectNear(local, {0, 1.25f, 0});
-  EXPECT_NEAR(glm::length(glm::vec3(d[1].transform[0])), 0.25f * 2.0f, 1e-5f) << "child scale times parent's";
+  EXPECT_NEAR(glm::length(glm::vec3(d[1].transform[0])), 0.25f * 2.0f, 1e-5f)
+      << "child scale times parent's";
 }
 
 TEST_F(AnimatedFixture, LoopsModuloDuration) {
   for (double t : {2.5, 4.5, -1.5}) {
     const auto a = at(0.5), b = at(t);
     for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[1].transform[c][k], b[1].transform[c][k], 1e-4f) << t;
+      for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(a[1].transform[c][k], b[1].transform[c][k], 1e-4f) << t;
   }
 }
 
@@ -94,7 +98,7 @@ TEST(AnimationSampling, SlerpTakesTheShortArc) {
   ch.times = {0.0f, 1.0f};
   const glm::quat q = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));
   ch.values = {{0, 0, 0, 1}, {-q.x, -q.y, -q.z, -q.w}};  // the same rotation, negated
-  ch.times.push_back(4.0f);  // hold, so t = 0.5 does not wrap
+  ch.times.push_back(4.0f);                              // hold, so t = 0.5 does not wrap
   ch.values.push_back(ch.values.back());
   const Scene s = oneNode(ch);
   EXPECT_NEAR(yawDegrees(poseModel(s, 0, 0.5)[0].transform), 45.0f, 1e-3f);

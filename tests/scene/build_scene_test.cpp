@@ -1,6 +1,7 @@
+#include "scene/build_scene.h"
+
 #include <gtest/gtest.h>
 
-#include "scene/build_scene.h"
 #include "scene/scene_error.h"
 #include "scene_test_util.h"
 
@@ -98,7 +99,19 @@ TEST(SceneBuild, ErrorsNameTheFile) {
     ADD_FAILURE();
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("external_http.gltf"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("http://example.com/quad.bin"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("http://example.com/quad.bin"), std::string::npos)
+        << e.what();
+  }
+  for (const char* bad :
+       {"../secret.gltf", "/etc/x.gltf", "https://example.com/x.glb", "a/../../x.gltf"}) {
+    c.scene.gltf = bad;
+    try {
+      buildScene(c);
+      ADD_FAILURE() << bad;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("scene.gltf: '") + bad), std::string::npos)
+          << e.what();
+    }
   }
 }
 

@@ -25,7 +25,9 @@ Loaded load(const std::string& name) {
   return l;
 }
 
-glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
+glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
+  return glm::vec3(m * glm::vec4(p, 1.0f));
+}
 
 void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, eps);
@@ -59,7 +61,7 @@ TEST(GltfLoad, TexturedBoxWithEmbeddedPng) {
   ASSERT_EQ(t.levels.size(), 5u);
   EXPECT_EQ(t.levels[0].width, 16);
   EXPECT_EQ(t.levels[4].width, 1);
-  EXPECT_EQ(t.levels[0].rgba[0], 240);       // first cell: light
+  EXPECT_EQ(t.levels[0].rgba[0], 240);          // first cell: light
   EXPECT_EQ(t.levels[0].rgba[4 * 4 + 2], 200);  // texel (4, 0): blue
 }
 
@@ -92,7 +94,8 @@ TEST(GltfLoad, DecomposeHandlesScaleAndMirroring) {
   glm::vec3 t, s;
   glm::quat r;
   decomposeTrs(m, t, r, s);
-  const glm::mat4 back = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+  const glm::mat4 back =
+      glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
   for (int c = 0; c < 4; ++c)
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(back[c][k], m[c][k], 1e-5f);
 }
@@ -147,8 +150,8 @@ TEST(GltfLoad, AlphaModesCutoffAndDoubleSided) {
   ASSERT_GE(leaf.baseColorTexture, 0);
   const Texture& t = l.scene.textures[size_t(leaf.baseColorTexture)];
   EXPECT_EQ(t.levels[0].width, 8);
-  EXPECT_EQ(t.levels[0].rgba[3], 0);                       // corner transparent
-  EXPECT_EQ(t.levels[0].rgba[(4 * 8 + 4) * 4 + 3], 255);   // centre opaque
+  EXPECT_EQ(t.levels[0].rgba[3], 0);                      // corner transparent
+  EXPECT_EQ(t.levels[0].rgba[(4 * 8 + 4) * 4 + 3], 255);  // centre opaque
   const Material& pane = l.scene.materials[1];
   EXPECT_EQ(pane.alphaMode, AlphaMode::Blend);
   EXPECT_FLOAT_EQ(pane.baseColorFactor.a, 0.5f);
@@ -191,10 +194,11 @@ TEST(GltfRefuse, EachInputClassNamesFileAndUri) {
 
 TEST(GltfRefuse, UriRules) {
   const std::filesystem::path f = "x.gltf";
-  EXPECT_NO_THROW(checkGltfUris(f, R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
+  EXPECT_NO_THROW(
+      checkGltfUris(f, R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
   EXPECT_NO_THROW(checkGltfUris(f, R"({"images":[{"uri":"textures/a%20b.png"}],"buffers":[{}]})"));
-  for (const char* bad : {"HTTPS://x/y.bin", "ftp:x", "C:/x.bin", "..\\\\x.bin", "a/../../b.bin", "%2e%2e/b.bin",
-                          "\\\\\\\\server\\\\share\\\\b.bin"}) {
+  for (const char* bad : {"HTTPS://x/y.bin", "ftp:x", "C:/x.bin", "..\\\\x.bin", "a/../../b.bin",
+                          "%2e%2e/b.bin", "\\\\\\\\server\\\\share\\\\b.bin"}) {
     const std::string json = std::string(R"({"images":[{"uri":")") + bad + R"("}]})";
     EXPECT_THROW(checkGltfUris(f, json), SceneError) << bad;
   }
@@ -215,7 +219,8 @@ TEST(GltfRefuse, SymlinkOutOfTheFolderIsRefusedByTheFileJail) {
     loadGltf(dir / "inner" / "animated.gltf", s);
     ADD_FAILURE() << "loaded through a symlink";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("outside the glTF's folder"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside the glTF's folder"), std::string::npos)
+        << e.what();
   }
 }
 

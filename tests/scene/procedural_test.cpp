@@ -1,10 +1,11 @@
+#include "scene/procedural.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
 
-#include "scene/procedural.h"
 #include "scene/scene_error.h"
 #include "scene/textures.h"
 #include "scene_test_util.h"
@@ -15,9 +16,9 @@ namespace {
 using spec::BuiltinScene;
 using testing::DefaultCamera;
 
-const BuiltinScene kAll[] = {BuiltinScene::Checkerboard, BuiltinScene::Wires,     BuiltinScene::Fence,
-                             BuiltinScene::Foliage,      BuiltinScene::RoughFloor, BuiltinScene::OpenArea,
-                             BuiltinScene::Quad};
+const BuiltinScene kAll[] = {
+    BuiltinScene::Checkerboard, BuiltinScene::Wires,    BuiltinScene::Fence, BuiltinScene::Foliage,
+    BuiltinScene::RoughFloor,   BuiltinScene::OpenArea, BuiltinScene::Quad};
 
 Scene build(BuiltinScene which) {
   Scene s;
@@ -25,7 +26,9 @@ Scene build(BuiltinScene which) {
   return s;
 }
 
-std::string nameOf(BuiltinScene b) { return spec::enumToString(b); }
+std::string nameOf(BuiltinScene b) {
+  return spec::enumToString(b);
+}
 
 TEST(ProceduralScenes, WellFormedWithinBudget) {
   for (BuiltinScene which : kAll) {
@@ -49,15 +52,16 @@ TEST(ProceduralScenes, WellFormedWithinBudget) {
           ASSERT_LT(v, s.vertices.size());
           const Vertex& vx = s.vertices[v];
           // Bounds hold every vertex; normals are unit length.
-          ASSERT_TRUE(glm::all(glm::greaterThanEqual(vx.position, mesh.boundsMin - 1e-5f))) << mesh.name;
-          ASSERT_TRUE(glm::all(glm::lessThanEqual(vx.position, mesh.boundsMax + 1e-5f))) << mesh.name;
+          ASSERT_TRUE(glm::all(glm::greaterThanEqual(vx.position, mesh.boundsMin - 1e-5f)))
+              << mesh.name;
+          ASSERT_TRUE(glm::all(glm::lessThanEqual(vx.position, mesh.boundsMax + 1e-5f)))
+              << mesh.name;
           ASSERT_NEAR(glm::length(vx.normal), 1.0f, 1e-4f) << mesh.name;
         }
       }
       EXPECT_LT(glm::length(mesh.boundsMax - mesh.boundsMin), 1000.0f) << mesh.name;
     }
-    for (const Material& m : s.materials)
-      ASSERT_LT(m.baseColorTexture, int(s.textures.size()));
+    for (const Material& m : s.materials) ASSERT_LT(m.baseColorTexture, int(s.textures.size()));
     EXPECT_GT(triangles, 0u);
     EXPECT_LE(triangles, 4000u) << "lavapipe budget";
     glm::vec3 lo, hi;
@@ -75,10 +79,13 @@ TEST(ProceduralScenes, FrontFacesAreCounterClockwiseAndAgreeWithNormals) {
       for (const Primitive& p : mesh.primitives)
         for (uint32_t i = 0; i < p.indexCount; i += 3) {
           const Vertex* v[3];
-          for (uint32_t k = 0; k < 3; ++k) v[k] = &s.vertices[s.indices[p.firstIndex + i + k] + uint32_t(p.vertexOffset)];
-          const glm::vec3 n = glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
+          for (uint32_t k = 0; k < 3; ++k)
+            v[k] = &s.vertices[s.indices[p.firstIndex + i + k] + uint32_t(p.vertexOffset)];
+          const glm::vec3 n =
+              glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
           if (glm::length(n) < 1e-9f) continue;
-          ASSERT_GT(glm::dot(n, v[0]->normal + v[1]->normal + v[2]->normal), 0.0f) << mesh.name << " triangle " << i / 3;
+          ASSERT_GT(glm::dot(n, v[0]->normal + v[1]->normal + v[2]->normal), 0.0f)
+              << mesh.name << " triangle " << i / 3;
         }
   }
 }
@@ -88,7 +95,8 @@ TEST(ProceduralScenes, TwoBuildsAreByteIdentical) {
     SCOPED_TRACE(nameOf(which));
     const Scene a = build(which), b = build(which);
     ASSERT_EQ(a.vertices.size(), b.vertices.size());
-    EXPECT_EQ(std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(Vertex)), 0);
+    EXPECT_EQ(std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(Vertex)),
+              0);
     EXPECT_EQ(a.indices, b.indices);
     ASSERT_EQ(a.textures.size(), b.textures.size());
     for (size_t t = 0; t < a.textures.size(); ++t)
@@ -106,7 +114,9 @@ TEST(ProceduralScenes, FillTheDefaultView) {
     int hits = 0, total = 0;
     for (int y = 0; y < 18; ++y)
       for (int x = 0; x < 32; ++x, ++total)
-        hits += testing::castRay(s, 0, cam.eye, cam.ray((float(x) + 0.5f) * 10.0f, (float(y) + 0.5f) * 10.0f)).has_value();
+        hits += testing::castRay(s, 0, cam.eye,
+                                 cam.ray((float(x) + 0.5f) * 10.0f, (float(y) + 0.5f) * 10.0f))
+                    .has_value();
     const double coverage = double(hits) / double(total);
     if (which == BuiltinScene::Quad) {
       // One unit quad six units away: about 30 x 30 pixels in the middle of the frame.
@@ -155,7 +165,8 @@ TEST(ProceduralWires, MeshCrossSectionsProjectBelowAPixel) {
   const Primitive& p = wires->primitives.at(0);
   const size_t first = size_t(p.vertexOffset);
   size_t last = first;
-  for (uint32_t i = 0; i < p.indexCount; ++i) last = std::max(last, first + s.indices[p.firstIndex + i]);
+  for (uint32_t i = 0; i < p.indexCount; ++i)
+    last = std::max(last, first + s.indices[p.firstIndex + i]);
   ASSERT_EQ((last + 1 - first) % 4, 0u);
   int rings = 0;
   for (size_t r = first; r <= last; r += 4) {
@@ -166,7 +177,8 @@ TEST(ProceduralWires, MeshCrossSectionsProjectBelowAPixel) {
     float span = 0.0f;
     for (size_t a = 0; a < 4; ++a)
       for (size_t b = a + 1; b < 4; ++b)
-        span = std::max(span, glm::length(cam.project(s.vertices[r + a].position) - cam.project(s.vertices[r + b].position)));
+        span = std::max(span, glm::length(cam.project(s.vertices[r + a].position) -
+                                          cam.project(s.vertices[r + b].position)));
     EXPECT_LT(span, 1.0f) << "ring at vertex " << r;
   }
   EXPECT_GT(rings, 40);
@@ -213,7 +225,8 @@ TEST(ProceduralMovers, ClosedShapesFaceOutwards) {
     EXPECT_NEAR(s.meshes[0].boundsMin.y, -0.5f, 1e-5f);
     const Primitive& p = s.meshes[0].primitives[0];
     for (uint32_t i = 0; i < p.indexCount; i += 3) {
-      const glm::vec3 a = s.vertices[s.indices[i]].position, b = s.vertices[s.indices[i + 1]].position,
+      const glm::vec3 a = s.vertices[s.indices[i]].position,
+                      b = s.vertices[s.indices[i + 1]].position,
                       c = s.vertices[s.indices[i + 2]].position;
       EXPECT_GT(glm::dot(glm::cross(b - a, c - a), a + b + c), 0.0f);
     }

@@ -34,12 +34,14 @@ struct DefaultCamera {
   glm::vec2 project(const glm::vec3& p) const {
     const glm::vec3 d = p - eye;
     const float z = glm::dot(d, forward);
-    return {0.5f * width + focal() * glm::dot(d, right) / z, 0.5f * height - focal() * glm::dot(d, up) / z};
+    return {0.5f * width + focal() * glm::dot(d, right) / z,
+            0.5f * height - focal() * glm::dot(d, up) / z};
   }
   bool inView(const glm::vec3& p, float marginPx = 0.0f) const {
     if (depth(p) < 0.1f) return false;
     const glm::vec2 s = project(p);
-    return s.x >= -marginPx && s.x <= width + marginPx && s.y >= -marginPx && s.y <= height + marginPx;
+    return s.x >= -marginPx && s.x <= width + marginPx && s.y >= -marginPx &&
+           s.y <= height + marginPx;
   }
   glm::vec3 ray(float px, float py) const {
     const float x = (2.0f * px / width - 1.0f) * tanHalfY * aspect;
@@ -49,14 +51,16 @@ struct DefaultCamera {
 };
 
 // Nearest hit distance of a ray with a model's posed triangles (alpha ignored).
-inline std::optional<float> castRay(const Scene& scene, int model, const glm::vec3& o, const glm::vec3& d) {
+inline std::optional<float> castRay(const Scene& scene, int model, const glm::vec3& o,
+                                    const glm::vec3& d) {
   std::optional<float> best;
   for (const MeshDraw& draw : poseModel(scene, model, 0.0)) {
     for (const Primitive& p : scene.meshes[size_t(draw.mesh)].primitives) {
       for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
         glm::vec3 v[3];
         for (int k = 0; k < 3; ++k) {
-          const uint32_t idx = scene.indices[p.firstIndex + i + uint32_t(k)] + uint32_t(p.vertexOffset);
+          const uint32_t idx =
+              scene.indices[p.firstIndex + i + uint32_t(k)] + uint32_t(p.vertexOffset);
           v[k] = glm::vec3(draw.transform * glm::vec4(scene.vertices[idx].position, 1.0f));
         }
         // Moller-Trumbore, both sides.

@@ -85,7 +85,8 @@ TEST(TextureMips, ThreeByThreeIsTheMeanOfNine) {
 TEST(TextureMips, ConstantTextureStaysConstant) {
   const Texture t = makeTexture(13, 7, grey(13, 7, 77, 201));
   for (const auto& l : t.levels)
-    for (size_t i = 0; i < l.rgba.size(); ++i) ASSERT_EQ(l.rgba[i], i % 4 == 3 ? 201 : 77) << l.width;
+    for (size_t i = 0; i < l.rgba.size(); ++i)
+      ASSERT_EQ(l.rgba[i], i % 4 == 3 ? 201 : 77) << l.width;
 }
 
 TEST(TextureSrgb, EightBitCodesRoundTrip) {

@@ -21,7 +21,8 @@ def png(width, height, rgba_rows):
 
     def chunk(tag, data):
         body = tag + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
+        crc = struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
+        return struct.pack(">I", len(data)) + body + crc
 
     header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 9)) +
@@ -29,7 +30,8 @@ def png(width, height, rgba_rows):
 
 
 def checker_png(w, h, a, b, cell):
-    return png(w, h, [[a if ((x // cell) + (y // cell)) % 2 == 0 else b for x in range(w)] for y in range(h)])
+    rows = [[a if ((x // cell) + (y // cell)) % 2 == 0 else b for x in range(w)] for y in range(h)]
+    return png(w, h, rows)
 
 
 def disc_png(size):
@@ -91,7 +93,8 @@ class Builder:
 
     def indices(self, idx):
         view = self._view(struct.pack("<%dH" % len(idx), *idx), 34963)
-        self.accessors.append({"bufferView": view, "componentType": 5123, "count": len(idx), "type": "SCALAR"})
+        self.accessors.append(
+            {"bufferView": view, "componentType": 5123, "count": len(idx), "type": "SCALAR"})
         return len(self.accessors) - 1
 
     def image_view(self, blob):
@@ -104,11 +107,16 @@ class Builder:
             attrs["NORMAL"] = self.floats(nrm, "VEC3")
         if uv:
             attrs["TEXCOORD_0"] = self.floats(uv, "VEC2")
-        return {"primitives": [{"attributes": attrs, "indices": self.indices(idx), "material": material}]}
+        prim = {"attributes": attrs, "indices": self.indices(idx), "material": material}
+        return {"primitives": [prim]}
 
 
 def data_uri(mime, blob):
     return "data:%s;base64,%s" % (mime, base64.b64encode(blob).decode("ascii"))
+
+
+def embedded(data):
+    return data_uri("application/octet-stream", bytes(data))
 
 
 def write(name, doc):
@@ -124,7 +132,8 @@ def write_glb(name, doc, binary):
         binary.append(0)
     text = json.dumps(doc, sort_keys=True).encode()
     text += b" " * ((4 - len(text) % 4) % 4)
-    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(binary), 0x004E4942) + binary
+    body = (struct.pack("<II", len(text), 0x4E4F534A) + text +
+            struct.pack("<II", len(binary), 0x004E4942) + binary)
     path = os.path.join(OUT, name)
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as f:
@@ -156,7 +165,7 @@ def textured_box():
         "textures": [{"source": 0, "sampler": 0}],
         "samplers": [{"wrapS": 33071, "wrapT": 33071}],
         "images": [{"uri": data_uri("image/png", tex)}],
-        "buffers": [{"byteLength": len(b.data), "uri": data_uri("application/octet-stream", bytes(b.data))}],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
         "bufferViews": b.views, "accessors": b.accessors,
     })
 
@@ -170,9 +179,11 @@ def glb_box():
         b.data.append(0)
     doc = {"asset": ASSET, "scene": 0, "scenes": [{"nodes": [0]}],
            "nodes": [{"name": "glb_box", "mesh": 0}], "meshes": [dict(mesh, name="glb_box")],
-           "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+           "materials": [{"name": "red",
+                          "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
            "textures": [{"source": 0}], "images": [{"bufferView": view, "mimeType": "image/png"}],
-           "buffers": [{"byteLength": len(b.data)}], "bufferViews": b.views, "accessors": b.accessors}
+           "buffers": [{"byteLength": len(b.data)}], "bufferViews": b.views,
+           "accessors": b.accessors}
     write_glb("box.glb", doc, b.data)
 
 
@@ -199,7 +210,8 @@ def animated():
         "nodes": [{"name": "spinner", "mesh": 0, "children": [1]},
                   {"name": "bouncer", "mesh": 0, "scale": [0.25, 0.25, 0.25]}],
         "meshes": [dict(mesh, name="anim_box")],
-        "materials": [{"name": "orange", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.1, 1]}}],
+        "materials": [{"name": "orange",
+                       "pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.1, 1]}}],
         "animations": [{"name": "move", "samplers": [
             {"input": t_lin, "output": v_tr, "interpolation": "LINEAR"},
             {"input": t_rot, "output": v_rot, "interpolation": "LINEAR"},
@@ -225,7 +237,8 @@ def alpha_modes():
     with open(os.path.join(OUT, "alpha_leaf.png"), "wb") as f:
         f.write(disc_png(8))
     b = Builder()
-    meshes = [dict(b.mesh(quad_geometry(), m), name=n) for m, n in ((0, "leaf"), (1, "pane"), (2, "floor"))]
+    meshes = [dict(b.mesh(quad_geometry(), m), name=n)
+              for m, n in ((0, "leaf"), (1, "pane"), (2, "floor"))]
     write("alpha_modes.gltf", {
         "asset": ASSET, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
         "nodes": [{"name": "leaf", "mesh": 0, "translation": [-1, 0.5, 0]},
@@ -238,10 +251,11 @@ def alpha_modes():
              "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
             {"name": "glass_blend", "alphaMode": "BLEND",
              "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.9, 0.5]}},
-            {"name": "floor_opaque", "pbrMetallicRoughness": {"baseColorFactor": [0.6, 0.6, 0.6, 1]}}],
+            {"name": "floor_opaque",
+             "pbrMetallicRoughness": {"baseColorFactor": [0.6, 0.6, 0.6, 1]}}],
         "textures": [{"source": 0}],
         "images": [{"uri": "alpha_leaf.png"}],
-        "buffers": [{"byteLength": len(b.data), "uri": data_uri("application/octet-stream", bytes(b.data))}],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
         "bufferViews": b.views, "accessors": b.accessors,
     })
 
@@ -254,7 +268,8 @@ def refused():
 
     def doc(buffer_uri, image_uri=None):
         d = {"asset": ASSET, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-             "meshes": [mesh], "materials": [{}], "buffers": [{"byteLength": length, "uri": buffer_uri}],
+             "meshes": [mesh], "materials": [{}],
+             "buffers": [{"byteLength": length, "uri": buffer_uri}],
              "bufferViews": b.views, "accessors": b.accessors}
         if image_uri:
             d["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]

@@ -10,7 +10,9 @@
 namespace taa::scene {
 namespace {
 
-glm::quat toQuat(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
+glm::quat toQuat(const glm::vec4& v) {
+  return glm::quat(v.w, v.x, v.y, v.z);
+}
 
 // Spherical interpolation along the shorter arc, as the glTF spec's reference does;
 // glm::slerp would not flip the sign and could take the long way round.
@@ -29,11 +31,13 @@ glm::vec4 sample(const AnimChannel& ch, float t, bool rotation) {
   if (t <= ch.times.front() || n == 1) return value(0);
   if (t >= ch.times.back()) return value(n - 1);
   // The key k with times[k] <= t < times[k + 1].
-  const size_t k = size_t(std::upper_bound(ch.times.begin(), ch.times.end(), t) - ch.times.begin()) - 1;
+  const size_t k =
+      size_t(std::upper_bound(ch.times.begin(), ch.times.end(), t) - ch.times.begin()) - 1;
   const float t0 = ch.times[k], td = ch.times[k + 1] - t0;
   const float s = td > 0.0f ? (t - t0) / td : 0.0f;
   switch (ch.interpolation) {
-    case Interpolation::Step: return value(k);
+    case Interpolation::Step:
+      return value(k);
     case Interpolation::Linear:
       if (rotation) {
         const glm::quat q = slerpShortest(toQuat(value(k)), toQuat(value(k + 1)), s);
@@ -71,9 +75,15 @@ std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
       Node& n = nodes[size_t(ch.node)];
       const glm::vec4 v = sample(ch, float(local), ch.path == AnimPath::Rotation);
       switch (ch.path) {
-        case AnimPath::Translation: n.translation = glm::vec3(v); break;
-        case AnimPath::Rotation: n.rotation = toQuat(v); break;
-        case AnimPath::Scale: n.scale = glm::vec3(v); break;
+        case AnimPath::Translation:
+          n.translation = glm::vec3(v);
+          break;
+        case AnimPath::Rotation:
+          n.rotation = toQuat(v);
+          break;
+        case AnimPath::Scale:
+          n.scale = glm::vec3(v);
+          break;
       }
     }
   }
@@ -81,8 +91,8 @@ std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
   std::vector<MeshDraw> draws;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const Node& n = nodes[i];
-    const glm::mat4 local = glm::translate(glm::mat4(1.0f), n.translation) * glm::mat4_cast(n.rotation) *
-                            glm::scale(glm::mat4(1.0f), n.scale);
+    const glm::mat4 local = glm::translate(glm::mat4(1.0f), n.translation) *
+                            glm::mat4_cast(n.rotation) * glm::scale(glm::mat4(1.0f), n.scale);
     assert(n.parent < int(i));
     world[i] = n.parent >= 0 ? world[size_t(n.parent)] * local : local;
     if (n.mesh >= 0) draws.push_back({int(i), n.mesh, world[i]});

@@ -8,17 +8,27 @@
 namespace taa::scene {
 namespace {
 
-// Case paths are relative to the case file. The case validator already refuses paths
-// that leave the case's folder; the glTF loader confines what the glTF itself refers to.
-std::filesystem::path resolve(const spec::CaseSpec& spec, const std::string& path) {
-  return spec.file.parent_path() / path;
+// Case paths are relative to the case file and must stay inside its folder tree. The
+// case validator checks this too; repeating it here keeps buildScene safe for callers
+// that skip validation. The glTF loader confines what the glTF itself refers to.
+std::filesystem::path resolve(const spec::CaseSpec& spec, const std::string& key,
+                              const std::string& path) {
+  const std::filesystem::path p(path);
+  bool escapes = path.find("://") != std::string::npos || p.is_absolute() || p.has_root_name();
+  for (const auto& part : p.lexically_normal()) escapes = escapes || part == "..";
+  if (escapes)
+    throw SceneError(spec.file, key + ": '" + path +
+                                    "' is not a relative path inside the case's folder; move the "
+                                    "asset under the case's folder and give its relative path");
+  return spec.file.parent_path() / p;
 }
 
 }  // namespace
 
 bool materialHasAlpha(const Scene& scene, const Material& m) {
   if (m.alphaMode != AlphaMode::Opaque || m.baseColorFactor.a < 1.0f) return true;
-  return m.baseColorTexture >= 0 && hasTranslucentTexels(scene.textures[size_t(m.baseColorTexture)]);
+  return m.baseColorTexture >= 0 &&
+         hasTranslucentTexels(scene.textures[size_t(m.baseColorTexture)]);
 }
 
 void applyAlphaOverride(Scene& scene, spec::AlphaMode mode, float cutoff) {
@@ -38,7 +48,7 @@ Scene buildScene(const spec::CaseSpec& spec) {
   Scene scene;
   try {
     if (!spec.scene.gltf.empty())
-      scene.models.push_back(loadGltf(resolve(spec, spec.scene.gltf), scene));
+      scene.models.push_back(loadGltf(resolve(spec, "scene.gltf", spec.scene.gltf), scene));
     else
       scene.models.push_back(buildProceduralScene(spec.scene.builtin, scene));
   } catch (const SceneError& e) {
@@ -50,8 +60,10 @@ Scene buildScene(const spec::CaseSpec& spec) {
     const spec::MoverSpec& m = spec.movers[i];
     if (m.shape == spec::MoverShape::Gltf) {
       if (m.gltf.empty())
-        throw SceneError(spec.file, "movers[" + std::to_string(i) + "]: shape is gltf but no gltf file is given");
-      scene.models.push_back(loadGltf(resolve(spec, m.gltf), scene));
+        throw SceneError(spec.file, "movers[" + std::to_string(i) +
+                                        "]: shape is gltf but no gltf file is given");
+      scene.models.push_back(
+          loadGltf(resolve(spec, "movers[" + std::to_string(i) + "].gltf", m.gltf), scene));
     } else {
       scene.models.push_back(buildMoverShape(m.shape, m.color, scene));
     }

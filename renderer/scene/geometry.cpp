@@ -55,7 +55,8 @@ void MeshBuilder::box(const glm::vec3& lo, const glm::vec3& hi, float uvPerUnit,
   for (const Face& f : kFaces) {
     if (!bottom && f.n.y < 0.0f) continue;
     const float hw = glm::dot(glm::abs(f.r), h), hh = glm::dot(glm::abs(f.u), h);
-    const glm::vec2 uv = uvPerUnit > 0.0f ? glm::vec2(2.0f * hw, 2.0f * hh) * uvPerUnit : glm::vec2(1.0f);
+    const glm::vec2 uv =
+        uvPerUnit > 0.0f ? glm::vec2(2.0f * hw, 2.0f * hh) * uvPerUnit : glm::vec2(1.0f);
     rect(c + f.n * glm::dot(glm::abs(f.n), h), f.r, f.u, hw, hh, uv);
   }
 }
@@ -66,7 +67,8 @@ void MeshBuilder::sphere(const glm::vec3& c, float radius, int segments, int rin
     const float theta = glm::pi<float>() * float(i) / float(rings);
     for (int j = 0; j <= segments; ++j) {
       const float phi = glm::two_pi<float>() * float(j) / float(segments);
-      const glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+      const glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta),
+                        std::sin(theta) * std::cos(phi));
       vertex(c + n * radius, n, {float(j) / float(segments), float(i) / float(rings)});
     }
   }
@@ -85,7 +87,8 @@ void MeshBuilder::tube(const std::vector<glm::vec3>& points, float radius, int s
   const uint32_t base = uint32_t(vertices_.size());
   float along = 0.0f;
   for (size_t k = 0; k < points.size(); ++k) {
-    const glm::vec3 t = glm::normalize(points[std::min(k + 1, points.size() - 1)] - points[k > 0 ? k - 1 : 0]);
+    const glm::vec3 t =
+        glm::normalize(points[std::min(k + 1, points.size() - 1)] - points[k > 0 ? k - 1 : 0]);
     const glm::vec3 ref = std::fabs(t.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     const glm::vec3 s = glm::normalize(glm::cross(t, ref)), u = glm::cross(s, t);
     if (k > 0) along += glm::length(points[k] - points[k - 1]);
@@ -118,7 +121,8 @@ int MeshBuilder::finish() {
   scene_.vertices.insert(scene_.vertices.end(), vertices_.begin(), vertices_.end());
   for (const Batch& b : batches_) {
     if (b.indices.empty()) continue;
-    mesh.primitives.push_back({uint32_t(scene_.indices.size()), uint32_t(b.indices.size()), offset, b.material});
+    mesh.primitives.push_back(
+        {uint32_t(scene_.indices.size()), uint32_t(b.indices.size()), offset, b.material});
     scene_.indices.insert(scene_.indices.end(), b.indices.begin(), b.indices.end());
   }
   scene_.meshes.push_back(std::move(mesh));
@@ -140,7 +144,8 @@ Model flatModel(const Scene& scene, std::string name, const std::vector<int>& me
   return model;
 }
 
-int addMaterial(Scene& scene, const glm::vec4& color, int texture, AlphaMode mode, bool doubleSided) {
+int addMaterial(Scene& scene, const glm::vec4& color, int texture, AlphaMode mode,
+                bool doubleSided) {
   Material m;
   m.baseColorFactor = color;
   m.baseColorTexture = texture;

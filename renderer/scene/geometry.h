@@ -25,8 +25,8 @@ class MeshBuilder {
   // A rectangle centred at `c` spanning +-halfW along unit `right` and +-halfH along
   // unit `up`; it faces cross(right, up). uv runs 0..uvScale.x left to right and
   // 0..uvScale.y top to bottom, so an image appears upright.
-  void rect(const glm::vec3& c, const glm::vec3& right, const glm::vec3& up, float halfW, float halfH,
-            glm::vec2 uvScale = {1.0f, 1.0f});
+  void rect(const glm::vec3& c, const glm::vec3& right, const glm::vec3& up, float halfW,
+            float halfH, glm::vec2 uvScale = {1.0f, 1.0f});
   // An axis-aligned box with outward faces. uvPerUnit > 0 tiles the texture by world
   // size (uv = size * uvPerUnit), 0 maps 0..1 onto every face. `bottom` false omits the
   // -Y face of boxes standing on the ground, which is never seen.

@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 #include <map>
 
+#include "scene/gltf_accessors.h"
 #include "scene/scene_error.h"
 #include "scene/textures.h"
 
@@ -23,8 +24,12 @@ class Converter {
 
  private:
   [[noreturn]] void fail(const std::string& what) const { throw SceneError(file_, what); }
-  std::vector<float> readAccessor(int index, const std::string& what, int wantComponents);
-  std::vector<uint32_t> readIndices(int index, const std::string& what);
+  std::vector<float> readAccessor(int index, const std::string& what, int components) {
+    return readGltfAccessor(file_, g_, index, what, components);
+  }
+  std::vector<uint32_t> readIndices(int index, const std::string& what) {
+    return readGltfIndices(file_, g_, index, what);
+  }
   int texture(int index, const std::string& what);
   int material(int index);
   int mesh(int index);
@@ -38,98 +43,20 @@ class Converter {
   std::map<int, int> textures_, materials_, meshes_, nodes_;
 };
 
-int componentCount(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;
-  }
-}
-
-// Reads one component as float, applying the glTF normalisation rules for integers.
-float component(const uint8_t* p, int type, bool normalized) {
-  auto get = [&](auto v) {
-    std::memcpy(&v, p, sizeof(v));
-    return v;
-  };
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return get(float{});
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-      const float v = float(get(int8_t{}));
-      return normalized ? std::max(v / 127.0f, -1.0f) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(get(uint8_t{})) / (normalized ? 255.0f : 1.0f);
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-      const float v = float(get(int16_t{}));
-      return normalized ? std::max(v / 32767.0f, -1.0f) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return float(get(uint16_t{})) / (normalized ? 65535.0f : 1.0f);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return float(get(uint32_t{}));
-    default: return 0.0f;
-  }
-}
-
-std::vector<float> Converter::readAccessor(int index, const std::string& what, int want) {
-  if (index < 0 || size_t(index) >= g_.accessors.size()) fail(what + " refers to a missing accessor");
-  const tinygltf::Accessor& a = g_.accessors[size_t(index)];
-  const std::string name = "accessors[" + std::to_string(index) + "] (" + what + ")";
-  const int comps = componentCount(a.type);
-  if (comps != want) fail(name + " has " + std::to_string(comps) + " components, expected " + std::to_string(want));
-  if (a.sparse.isSparse) fail(name + " is sparse, which is not supported; re-export without sparse accessors");
-  std::vector<float> out(a.count * size_t(comps), 0.0f);
-  if (a.bufferView < 0) return out;  // all zeros, as the spec defines
-  const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-  if (csize <= 0) fail(name + " has an invalid component type");
-  const tinygltf::BufferView& v = g_.bufferViews.at(size_t(a.bufferView));
-  const tinygltf::Buffer& b = g_.buffers.at(size_t(v.buffer));
-  const size_t elem = size_t(csize) * size_t(comps);
-  const size_t stride = v.byteStride ? v.byteStride : elem;
-  if (a.count > 0 && (a.byteOffset + stride * (a.count - 1) + elem > v.byteLength ||
-                      v.byteOffset + v.byteLength > b.data.size()))
-    fail(name + " reads past the end of its buffer; the file is truncated or corrupt, re-export it");
-  const uint8_t* base = b.data.data() + v.byteOffset + a.byteOffset;
-  for (size_t i = 0; i < a.count; ++i)
-    for (int c = 0; c < comps; ++c)
-      out[i * size_t(comps) + size_t(c)] = component(base + i * stride + size_t(c) * size_t(csize),
-                                                     a.componentType, a.normalized);
-  return out;
-}
-
-std::vector<uint32_t> Converter::readIndices(int index, const std::string& what) {
-  const tinygltf::Accessor& a = g_.accessors.at(size_t(index));
-  if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-      a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-      a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-    fail(what + " indices must be unsigned integers");
-  const std::vector<float> f = readAccessor(index, what + " indices", 1);
-  // Floats hold integers exactly only up to 2^24; read 32-bit indices directly.
-  std::vector<uint32_t> out(f.size());
-  if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
-    const tinygltf::BufferView& v = g_.bufferViews.at(size_t(a.bufferView));
-    const uint8_t* base = g_.buffers.at(size_t(v.buffer)).data.data() + v.byteOffset + a.byteOffset;
-    const size_t stride = v.byteStride ? v.byteStride : 4;
-    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], base + i * stride, 4);
-  } else {
-    for (size_t i = 0; i < out.size(); ++i) out[i] = uint32_t(f[i]);
-  }
-  return out;
-}
-
 int Converter::texture(int index, const std::string& what) {
   if (auto it = textures_.find(index); it != textures_.end()) return it->second;
   if (index < 0 || size_t(index) >= g_.textures.size()) fail(what + " refers to a missing texture");
   const tinygltf::Texture& t = g_.textures[size_t(index)];
   if (t.source < 0) return textures_[index] = -1;  // only an extension's image (e.g. KTX2)
   const tinygltf::Image& img = g_.images.at(size_t(t.source));
-  const std::string name = "images[" + std::to_string(t.source) + "]" + (img.uri.empty() ? "" : " '" + img.uri + "'");
+  const std::string name =
+      "images[" + std::to_string(t.source) + "]" + (img.uri.empty() ? "" : " '" + img.uri + "'");
   if (img.image.empty() || img.width <= 0 || img.height <= 0)
     fail(name + " could not be read or decoded (" + (warnings_.empty() ? "no detail" : warnings_) +
          "); put a PNG or JPEG file inside the glTF's folder or embed it");
   if (img.component != 4 || (img.bits != 8 && img.bits != 16))
-    fail(name + " decoded to " + std::to_string(img.component) + " channels of " + std::to_string(img.bits) +
-         " bits; convert it to an 8-bit RGB(A) PNG");
+    fail(name + " decoded to " + std::to_string(img.component) + " channels of " +
+         std::to_string(img.bits) + " bits; convert it to an 8-bit RGB(A) PNG");
   const size_t texels = size_t(img.width) * size_t(img.height) * 4;
   std::vector<uint8_t> rgba(texels);
   if (img.bits == 8) {
@@ -145,7 +72,8 @@ int Converter::texture(int index, const std::string& what) {
   if (t.sampler >= 0) {
     const tinygltf::Sampler& sm = g_.samplers.at(size_t(t.sampler));
     // One wrap mode per texture: clamp only when both axes clamp; mirrored repeat repeats.
-    repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE && sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+    repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
+               sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
   }
   s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), repeat));
   return textures_[index] = int(s_.textures.size()) - 1;
@@ -155,7 +83,8 @@ int Converter::material(int index) {
   if (auto it = materials_.find(index); it != materials_.end()) return it->second;
   Material m;  // index -1: the glTF default material (white, opaque, single-sided)
   if (index >= 0) {
-    if (size_t(index) >= g_.materials.size()) fail("a primitive refers to missing materials[" + std::to_string(index) + "]");
+    if (size_t(index) >= g_.materials.size())
+      fail("a primitive refers to missing materials[" + std::to_string(index) + "]");
     const tinygltf::Material& gm = g_.materials[size_t(index)];
     const std::string name = "materials[" + std::to_string(index) + "]";
     const auto& pbr = gm.pbrMetallicRoughness;
@@ -164,12 +93,15 @@ int Converter::material(int index) {
                                     float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
     if (pbr.baseColorTexture.index >= 0) {
       if (pbr.baseColorTexture.texCoord != 0)
-        fail(name + " samples its base colour with TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
+        fail(name + " samples its base colour with TEXCOORD_" +
+             std::to_string(pbr.baseColorTexture.texCoord) +
              "; only TEXCOORD_0 is supported, re-export with one UV set");
       m.baseColorTexture = texture(pbr.baseColorTexture.index, name + ".baseColorTexture");
     }
-    if (gm.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
-    else if (gm.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+    if (gm.alphaMode == "MASK")
+      m.alphaMode = AlphaMode::Mask;
+    else if (gm.alphaMode == "BLEND")
+      m.alphaMode = AlphaMode::Blend;
     else if (gm.alphaMode != "OPAQUE" && !gm.alphaMode.empty())
       fail(name + ".alphaMode '" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
     m.alphaCutoff = float(gm.alphaCutoff);
@@ -187,9 +119,12 @@ std::vector<uint32_t> triangleList(int mode, std::vector<uint32_t> idx) {
   }
   std::vector<uint32_t> out;
   for (size_t i = 2; i < idx.size(); ++i) {
-    if (mode == TINYGLTF_MODE_TRIANGLE_FAN) out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
-    else if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
-    else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});  // keep odd strip triangles CCW
+    if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+      out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
+    else if (i % 2 == 0)
+      out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
+    else
+      out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});  // keep odd strip triangles CCW
   }
   return out;
 }
@@ -202,13 +137,15 @@ int Converter::mesh(int index) {
   bool any = false;
   for (size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
-    const std::string what = "meshes[" + std::to_string(index) + "].primitives[" + std::to_string(p) + "]";
+    const std::string what =
+        "meshes[" + std::to_string(index) + "].primitives[" + std::to_string(p) + "]";
     if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         prim.mode != TINYGLTF_MODE_TRIANGLE_FAN && prim.mode != -1)
       fail(what + " draws points or lines (mode " + std::to_string(prim.mode) +
            "); only triangles are rendered, remove the primitive or triangulate it");
     const auto pos = prim.attributes.find("POSITION");
-    if (pos == prim.attributes.end()) fail(what + " has no POSITION attribute; every primitive needs one");
+    if (pos == prim.attributes.end())
+      fail(what + " has no POSITION attribute; every primitive needs one");
     const std::vector<float> positions = readAccessor(pos->second, what + " POSITION", 3);
     const size_t count = positions.size() / 3;
     std::vector<float> normals, uvs;
@@ -216,7 +153,8 @@ int Converter::mesh(int index) {
       normals = readAccessor(n->second, what + " NORMAL", 3);
     if (auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end())
       uvs = readAccessor(t->second, what + " TEXCOORD_0", 2);
-    if ((!normals.empty() && normals.size() != count * 3) || (!uvs.empty() && uvs.size() != count * 2))
+    if ((!normals.empty() && normals.size() != count * 3) ||
+        (!uvs.empty() && uvs.size() != count * 2))
       fail(what + " has attributes of different lengths; re-export it");
     std::vector<uint32_t> idx;
     if (prim.indices >= 0) {
@@ -276,9 +214,11 @@ int Converter::mesh(int index) {
 namespace {
 
 void Converter::addNode(int index, int parent, Model& model, std::vector<int>& visiting) {
-  if (index < 0 || size_t(index) >= g_.nodes.size()) fail("a scene or node refers to missing nodes[" + std::to_string(index) + "]");
+  if (index < 0 || size_t(index) >= g_.nodes.size())
+    fail("a scene or node refers to missing nodes[" + std::to_string(index) + "]");
   if (std::find(visiting.begin(), visiting.end(), index) != visiting.end() || nodes_.count(index))
-    fail("nodes[" + std::to_string(index) + "] is reached twice (a cycle or shared child); the hierarchy must be a tree");
+    fail("nodes[" + std::to_string(index) +
+         "] is reached twice (a cycle or shared child); the hierarchy must be a tree");
   const tinygltf::Node& gn = g_.nodes[size_t(index)];
   Node n;
   n.name = gn.name.empty() ? "node" + std::to_string(index) : gn.name;
@@ -288,13 +228,18 @@ void Converter::addNode(int index, int parent, Model& model, std::vector<int>& v
     for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(gn.matrix[size_t(i)]);
     decomposeTrs(m, n.translation, n.rotation, n.scale);
   } else {
-    if (gn.translation.size() == 3) n.translation = glm::vec3(float(gn.translation[0]), float(gn.translation[1]), float(gn.translation[2]));
+    if (gn.translation.size() == 3)
+      n.translation =
+          glm::vec3(float(gn.translation[0]), float(gn.translation[1]), float(gn.translation[2]));
     if (gn.rotation.size() == 4)
-      n.rotation = glm::quat(float(gn.rotation[3]), float(gn.rotation[0]), float(gn.rotation[1]), float(gn.rotation[2]));
-    if (gn.scale.size() == 3) n.scale = glm::vec3(float(gn.scale[0]), float(gn.scale[1]), float(gn.scale[2]));
+      n.rotation = glm::quat(float(gn.rotation[3]), float(gn.rotation[0]), float(gn.rotation[1]),
+                             float(gn.rotation[2]));
+    if (gn.scale.size() == 3)
+      n.scale = glm::vec3(float(gn.scale[0]), float(gn.scale[1]), float(gn.scale[2]));
   }
   if (gn.mesh >= 0) {
-    if (size_t(gn.mesh) >= g_.meshes.size()) fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
+    if (size_t(gn.mesh) >= g_.meshes.size())
+      fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
     n.mesh = mesh(gn.mesh);
   }
   const int self = int(model.nodes.size());
@@ -310,34 +255,45 @@ void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& 
   out.name = a.name.empty() ? "animation" + std::to_string(index) : a.name;
   for (size_t c = 0; c < a.channels.size(); ++c) {
     const tinygltf::AnimationChannel& ch = a.channels[c];
-    const std::string what = "animations[" + std::to_string(index) + "].channels[" + std::to_string(c) + "]";
+    const std::string what =
+        "animations[" + std::to_string(index) + "].channels[" + std::to_string(c) + "]";
     const auto node = nodes_.find(ch.target_node);
     if (node == nodes_.end()) continue;  // targets a node outside the default scene
     AnimChannel o;
     o.node = node->second;
     int comps = 3;
-    if (ch.target_path == "translation") o.path = AnimPath::Translation;
+    if (ch.target_path == "translation")
+      o.path = AnimPath::Translation;
     else if (ch.target_path == "rotation") {
       o.path = AnimPath::Rotation;
       comps = 4;
-    } else if (ch.target_path == "scale") o.path = AnimPath::Scale;
-    else continue;  // morph-target weights: not supported, the mesh stays at rest
-    if (ch.sampler < 0 || size_t(ch.sampler) >= a.samplers.size()) fail(what + " refers to a missing sampler");
+    } else if (ch.target_path == "scale")
+      o.path = AnimPath::Scale;
+    else
+      continue;  // morph-target weights: not supported, the mesh stays at rest
+    if (ch.sampler < 0 || size_t(ch.sampler) >= a.samplers.size())
+      fail(what + " refers to a missing sampler");
     const tinygltf::AnimationSampler& s = a.samplers[size_t(ch.sampler)];
-    if (s.interpolation == "STEP") o.interpolation = Interpolation::Step;
-    else if (s.interpolation == "CUBICSPLINE") o.interpolation = Interpolation::CubicSpline;
-    else if (s.interpolation == "LINEAR" || s.interpolation.empty()) o.interpolation = Interpolation::Linear;
-    else fail(what + " interpolation '" + s.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
+    if (s.interpolation == "STEP")
+      o.interpolation = Interpolation::Step;
+    else if (s.interpolation == "CUBICSPLINE")
+      o.interpolation = Interpolation::CubicSpline;
+    else if (s.interpolation == "LINEAR" || s.interpolation.empty())
+      o.interpolation = Interpolation::Linear;
+    else
+      fail(what + " interpolation '" + s.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
     o.times = readAccessor(s.input, what + " input", 1);
     const std::vector<float> values = readAccessor(s.output, what + " output", comps);
     const size_t per = o.interpolation == Interpolation::CubicSpline ? 3 : 1;
     if (o.times.empty() || values.size() != o.times.size() * per * size_t(comps))
       fail(what + " has " + std::to_string(values.size() / size_t(comps)) + " output values for " +
-           std::to_string(o.times.size()) + " keys; expected " + std::to_string(o.times.size() * per));
+           std::to_string(o.times.size()) + " keys; expected " +
+           std::to_string(o.times.size() * per));
     for (size_t k = 1; k < o.times.size(); ++k)
       if (!(o.times[k] > o.times[k - 1])) fail(what + " key times must strictly increase");
     for (size_t i = 0; i < values.size() / size_t(comps); ++i)
-      o.values.emplace_back(values[i * size_t(comps)], values[i * size_t(comps) + 1], values[i * size_t(comps) + 2],
+      o.values.emplace_back(values[i * size_t(comps)], values[i * size_t(comps) + 1],
+                            values[i * size_t(comps) + 2],
                             comps == 4 ? values[i * size_t(comps) + 3] : 0.0f);
     out.duration = std::max(out.duration, o.times.back());
     out.channels.push_back(std::move(o));
@@ -350,7 +306,8 @@ Model Converter::run() {
   model.name = file_.stem().string();
   std::vector<int> roots;
   if (!g_.scenes.empty()) {
-    const int which = g_.defaultScene >= 0 && size_t(g_.defaultScene) < g_.scenes.size() ? g_.defaultScene : 0;
+    const int which =
+        g_.defaultScene >= 0 && size_t(g_.defaultScene) < g_.scenes.size() ? g_.defaultScene : 0;
     roots = g_.scenes[size_t(which)].nodes;
   } else {
     // No scene: every node that is nobody's child is a root.
@@ -363,7 +320,8 @@ Model Converter::run() {
   }
   std::vector<int> visiting;
   for (int r : roots) addNode(r, -1, model, visiting);
-  if (model.nodes.empty()) fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
+  if (model.nodes.empty())
+    fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
   for (size_t i = 0; i < g_.animations.size(); ++i) addAnimation(g_.animations[i], i, model);
   return model;
 }
@@ -383,7 +341,8 @@ void decomposeTrs(const glm::mat4& m, glm::vec3& t, glm::quat& r, glm::vec3& s) 
   r = glm::normalize(glm::quat_cast(basis));
 }
 
-Model convertGltf(const fs::path& file, const tinygltf::Model& gltf, const std::string& warnings, Scene& scene) {
+Model convertGltf(const fs::path& file, const tinygltf::Model& gltf, const std::string& warnings,
+                  Scene& scene) {
   return Converter(file, gltf, warnings, scene).run();
 }
 

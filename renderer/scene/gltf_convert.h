@@ -11,8 +11,8 @@
 namespace taa::scene {
 
 // `warnings` are tinygltf's, quoted when an image it could not read is needed.
-Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf, const std::string& warnings,
-                  Scene& scene);
+Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf,
+                  const std::string& warnings, Scene& scene);
 
 // Splits a node matrix (column-major, no shear as glTF requires) into TRS. A negative
 // determinant becomes a negative x scale.

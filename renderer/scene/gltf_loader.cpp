@@ -16,13 +16,24 @@ namespace fs = std::filesystem;
 // past checkGltfUris, and that replace its default path expansion (wordexp, which
 // would expand '~' and environment variables in a uri).
 struct Jail {
-  fs::path root;  // canonical folder of the glTF file
-  bool contains(const std::string& path) const {
+  fs::path root;                     // canonical folder of the glTF file
+  std::vector<std::string> refused;  // existing files kept out, for the error message
+  bool contains(const std::string& path) {
     std::error_code ec;
     const fs::path p = fs::weakly_canonical(fs::path(path), ec);
     if (ec) return false;
     const fs::path rel = p.lexically_relative(root);
-    return !rel.empty() && *rel.begin() != ".." && !rel.is_absolute();
+    if (!rel.empty() && *rel.begin() != ".." && !rel.is_absolute()) return true;
+    // tinygltf also probes the working directory; only a file that is there is news.
+    if (fs::exists(p, ec)) refused.push_back(path + "' resolves to '" + p.string());
+    return false;
+  }
+  // Why loading failed when the cause was a refusal, else "".
+  std::string explain() const {
+    if (refused.empty()) return "";
+    return "'" + refused.front() +
+           "', outside the glTF's folder (through a symbolic link, or tinygltf's fallback to the "
+           "working directory); put the file itself inside the glTF's folder";
   }
 };
 
@@ -42,9 +53,12 @@ bool jailExists(const std::string& path, void* user) {
   return static_cast<Jail*>(user)->contains(path) && fs::is_regular_file(path, ec);
 }
 
-std::string jailExpand(const std::string& path, void*) { return path; }
+std::string jailExpand(const std::string& path, void*) {
+  return path;
+}
 
-bool jailRead(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+bool jailRead(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+              void* user) {
   if (!static_cast<Jail*>(user)->contains(path)) {
     if (err) *err += "refused to read '" + path + "': outside the glTF's folder\n";
     return false;
@@ -56,7 +70,8 @@ bool jailRead(std::vector<unsigned char>* out, std::string* err, const std::stri
   return true;
 }
 
-bool jailWrite(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+bool jailWrite(std::string* err, const std::string& path, const std::vector<unsigned char>&,
+               void*) {
   if (err) *err += "refused to write '" + path + "': the scene loader never writes\n";
   return false;
 }
@@ -64,8 +79,10 @@ bool jailWrite(std::string* err, const std::string& path, const std::vector<unsi
 std::vector<uint8_t> readFile(const fs::path& file) {
   std::vector<uint8_t> bytes;
   if (!slurp(file, bytes))
-    throw SceneError(file, "cannot read the glTF file; check that it exists and that the path is relative "
-                           "to the case file");
+    throw SceneError(
+        file,
+        "cannot read the glTF file; check that it exists and that the path is relative "
+        "to the case file");
   return bytes;
 }
 
@@ -80,21 +97,25 @@ std::string trimmed(std::string s) {
 
 Model loadGltf(const fs::path& file, Scene& scene) {
   const std::vector<uint8_t> bytes = readFile(file);
-  const bool binary = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
-  const std::string json = binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
+  const bool binary =
+      bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+  const std::string json =
+      binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
   checkGltfUris(file, json);
 
   std::error_code ec;
-  Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec)};
+  Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&jailExists, &jailExpand, &jailRead, &jailWrite, &jail});
   tinygltf::Model gltf;
   std::string err, warn;
   const std::string base = jail.root.string();
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
-                                                       static_cast<unsigned int>(bytes.size()), base)
-                         : loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(),
-                                                      static_cast<unsigned int>(json.size()), base);
+  const bool ok = binary
+                      ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
+                                                    static_cast<unsigned int>(bytes.size()), base)
+                      : loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(),
+                                                   static_cast<unsigned int>(json.size()), base);
+  if (!jail.explain().empty()) throw SceneError(file, jail.explain());
   if (!ok)
     throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
                                "; check the file with the Khronos glTF validator or re-export it");

@@ -11,7 +11,8 @@ namespace taa::scene {
 namespace {
 
 uint32_t readU32(const std::vector<uint8_t>& b, size_t at) {
-  return uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 | uint32_t(b[at + 3]) << 24;
+  return uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 |
+         uint32_t(b[at + 3]) << 24;
 }
 
 int hexValue(char c) {
@@ -59,16 +60,19 @@ std::string uriProblem(const std::string& uri) {
   const std::string path = percentDecode(uri);
   const size_t scheme = schemeLength(path);
   if (path.find("://") != std::string::npos || scheme > 1)
-    return "is an external URI; only files inside the glTF's folder are read. Download the file next "
+    return "is an external URI; only files inside the glTF's folder are read. Download the file "
+           "next "
            "to the glTF and refer to it by a relative path, or embed it (data: URI or .glb)";
   if (scheme == 1 || path.starts_with('/') || path.starts_with('\\'))
     return "is an absolute path; refer to the file relative to the glTF's folder, or embed it";
   size_t start = 0;
   while (start <= path.size()) {
     const size_t end = path.find_first_of("/\\", start);
-    const std::string part = path.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string part =
+        path.substr(start, end == std::string::npos ? std::string::npos : end - start);
     if (part == "..")
-      return "leaves the glTF's folder; move the file into the glTF's folder (or below it) and refer "
+      return "leaves the glTF's folder; move the file into the glTF's folder (or below it) and "
+             "refer "
              "to it without '..', or embed it";
     if (end == std::string::npos) break;
     start = end + 1;
@@ -82,8 +86,9 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
   const std::string fix = "; re-export it as glTF 2.0 binary or use the .gltf form";
   if (bytes.size() < 20 || readU32(bytes, 0) != 0x46546C67u)  // "glTF"
     throw SceneError(file, "not a GLB container (missing 'glTF' magic)" + fix);
-  if (readU32(bytes, 4) != 2) throw SceneError(file, "GLB version " + std::to_string(readU32(bytes, 4)) +
-                                                         " is not supported (glTF 2.0 only)" + fix);
+  if (readU32(bytes, 4) != 2)
+    throw SceneError(file, "GLB version " + std::to_string(readU32(bytes, 4)) +
+                               " is not supported (glTF 2.0 only)" + fix);
   const uint32_t length = readU32(bytes, 12);
   if (readU32(bytes, 16) != 0x4E4F534Au || size_t(length) + 20 > bytes.size())  // "JSON"
     throw SceneError(file, "GLB's first chunk is not a complete JSON chunk" + fix);
@@ -93,7 +98,8 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 void checkGltfUris(const std::filesystem::path& file, const std::string& json) {
   const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
   if (doc.is_discarded() || !doc.is_object())
-    throw SceneError(file, "is not valid glTF JSON; check the file with the Khronos glTF validator");
+    throw SceneError(file,
+                     "is not valid glTF JSON; check the file with the Khronos glTF validator");
   for (const char* key : {"buffers", "images"}) {
     const auto list = doc.find(key);
     if (list == doc.end() || !list->is_array()) continue;
@@ -106,7 +112,8 @@ void checkGltfUris(const std::filesystem::path& file, const std::string& json) {
       const std::string problem = uriProblem(value);
       if (!problem.empty())
         throw SceneError(file, std::string(key) + "[" + std::to_string(i) + "].uri '" +
-                                   (value.size() > 200 ? value.substr(0, 200) + "..." : value) + "' " + problem);
+                                   (value.size() > 200 ? value.substr(0, 200) + "..." : value) +
+                                   "' " + problem);
     }
   }
 }

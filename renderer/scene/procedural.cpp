@@ -62,8 +62,10 @@ std::vector<int> buildQuad(Scene& s) {
 }
 
 std::vector<int> buildOpenArea(Scene& s) {
-  const int grass = addTexture(s, groundTexture(128, kSeedGround, {52, 78, 36, 255}, {112, 138, 70, 255}));
-  const int concrete = addTexture(s, groundTexture(64, kSeedConcrete, {120, 118, 112, 255}, {180, 176, 168, 255}));
+  const int grass =
+      addTexture(s, groundTexture(128, kSeedGround, {52, 78, 36, 255}, {112, 138, 70, 255}));
+  const int concrete =
+      addTexture(s, groundTexture(64, kSeedConcrete, {120, 118, 112, 255}, {180, 176, 168, 255}));
   const int crate = addTexture(s, checkerTexture(64, 4, {220, 220, 215, 255}, {170, 40, 32, 255}));
   MeshBuilder ground(s, "open_ground");
   ground.setMaterial(addMaterial(s, glm::vec4(1.0f), grass));
@@ -84,7 +86,8 @@ std::vector<int> buildOpenArea(Scene& s) {
         const glm::vec3 d = hashedDirXZ(id, 1 + attempt);
         p = glm::vec2(d.x, d.z) * radius;
         // Keep the camera and its line of sight to the target clear.
-        ok = glm::length(p - camera) > 2.5f && !(std::fabs(p.x) < 1.5f && p.y > -0.5f && p.y < 7.0f);
+        ok =
+            glm::length(p - camera) > 2.5f && !(std::fabs(p.x) < 1.5f && p.y > -0.5f && p.y < 7.0f);
       }
       if (!ok) continue;
       if (id % 2 == 0) {
@@ -94,7 +97,8 @@ std::vector<int> buildOpenArea(Scene& s) {
       } else {
         const float half = hashedRange(id, 4, 0.4f, 1.0f);
         props.setMaterial(crateMat);
-        props.box({p.x - half, 0.0f, p.y - half}, {p.x + half, 2.0f * half, p.y + half}, 0.0f, false);
+        props.box({p.x - half, 0.0f, p.y - half}, {p.x + half, 2.0f * half, p.y + half}, 0.0f,
+                  false);
       }
     }
   }
@@ -107,15 +111,30 @@ Model buildProceduralScene(spec::BuiltinScene which, Scene& scene) {
   using spec::BuiltinScene;
   std::vector<int> meshes;
   switch (which) {
-    case BuiltinScene::Checkerboard: meshes = detail::buildCheckerboard(scene); break;
-    case BuiltinScene::Wires: meshes = detail::buildWires(scene); break;
-    case BuiltinScene::Fence: meshes = detail::buildFence(scene); break;
-    case BuiltinScene::Foliage: meshes = detail::buildFoliage(scene); break;
-    case BuiltinScene::RoughFloor: meshes = detail::buildRoughFloor(scene); break;
-    case BuiltinScene::OpenArea: meshes = detail::buildOpenArea(scene); break;
-    case BuiltinScene::Quad: meshes = detail::buildQuad(scene); break;
+    case BuiltinScene::Checkerboard:
+      meshes = detail::buildCheckerboard(scene);
+      break;
+    case BuiltinScene::Wires:
+      meshes = detail::buildWires(scene);
+      break;
+    case BuiltinScene::Fence:
+      meshes = detail::buildFence(scene);
+      break;
+    case BuiltinScene::Foliage:
+      meshes = detail::buildFoliage(scene);
+      break;
+    case BuiltinScene::RoughFloor:
+      meshes = detail::buildRoughFloor(scene);
+      break;
+    case BuiltinScene::OpenArea:
+      meshes = detail::buildOpenArea(scene);
+      break;
+    case BuiltinScene::Quad:
+      meshes = detail::buildQuad(scene);
+      break;
     case BuiltinScene::None:
-      throw SceneError("built-in scene 'none' has no geometry; set scene.builtin to a scene or give scene.gltf");
+      throw SceneError(
+          "built-in scene 'none' has no geometry; set scene.builtin to a scene or give scene.gltf");
   }
   return flatModel(scene, std::string("builtin:") + spec::enumToString(which), meshes);
 }
@@ -124,8 +143,12 @@ Model buildMoverShape(spec::MoverShape shape, const glm::vec3& color, Scene& sce
   MeshBuilder b(scene, shape == spec::MoverShape::Sphere ? "sphere" : "cube");
   b.setMaterial(addMaterial(scene, glm::vec4(color, 1.0f)));
   switch (shape) {
-    case spec::MoverShape::Cube: b.box(glm::vec3(-0.5f), glm::vec3(0.5f)); break;
-    case spec::MoverShape::Sphere: b.sphere(glm::vec3(0.0f), 0.5f, 24, 16); break;
+    case spec::MoverShape::Cube:
+      b.box(glm::vec3(-0.5f), glm::vec3(0.5f));
+      break;
+    case spec::MoverShape::Sphere:
+      b.sphere(glm::vec3(0.0f), 0.5f, 24, 16);
+      break;
     case spec::MoverShape::Gltf:
       throw SceneError("mover shape 'gltf' is not a built-in shape; load it with loadGltf()");
   }

@@ -52,7 +52,8 @@ Texture::Level reduce(const Texture::Level& src) {
       for (int c = 0; c < 4; ++c) {
         double sum = 0.0;
         for (const Tap& t : tx[size_t(x)]) {
-          const uint8_t v = src.rgba[(size_t(y) * size_t(src.width) + size_t(t.source)) * 4 + size_t(c)];
+          const uint8_t v =
+              src.rgba[(size_t(y) * size_t(src.width) + size_t(t.source)) * 4 + size_t(c)];
           sum += t.weight * (c < 3 ? lut[v] : v / 255.0);
         }
         row[(size_t(y) * size_t(dst.width) + size_t(x)) * 4 + size_t(c)] = sum;
@@ -72,9 +73,13 @@ Texture::Level reduce(const Texture::Level& src) {
   return dst;
 }
 
-float smooth(float t) { return t * t * (3.0f - 2.0f * t); }
+float smooth(float t) {
+  return t * t * (3.0f - 2.0f * t);
+}
 
-int wrap(int i, int period) { return ((i % period) + period) % period; }
+int wrap(int i, int period) {
+  return ((i % period) + period) % period;
+}
 
 // Tileable value noise: `px` x `py` lattice cells across the texture.
 float valueNoise(float u, float v, int px, int py, uint32_t seed) {
@@ -104,7 +109,8 @@ Texture generate(int size, F texel) {
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const Rgba8 c = texel(x, y);
-      std::copy(c.begin(), c.end(), rgba.begin() + std::ptrdiff_t((size_t(y) * size_t(size) + size_t(x)) * 4));
+      std::copy(c.begin(), c.end(),
+                rgba.begin() + std::ptrdiff_t((size_t(y) * size_t(size) + size_t(x)) * 4));
     }
   return makeTexture(size, size, std::move(rgba));
 }
@@ -119,10 +125,13 @@ double linearToSrgb(double l) {
   return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
 }
 
-double srgb8ToLinear(uint8_t code) { return srgbTable()[code]; }
+double srgb8ToLinear(uint8_t code) {
+  return srgbTable()[code];
+}
 
 uint8_t linearToSrgb8(double linear) {
-  return uint8_t(std::lround(std::clamp(linearToSrgb(std::clamp(linear, 0.0, 1.0)), 0.0, 1.0) * 255.0));
+  return uint8_t(
+      std::lround(std::clamp(linearToSrgb(std::clamp(linear, 0.0, 1.0)), 0.0, 1.0) * 255.0));
 }
 
 uint32_t hash32(uint32_t x) {
@@ -138,7 +147,9 @@ uint32_t hash3(uint32_t x, uint32_t y, uint32_t seed) {
   return hash32(x ^ hash32(y ^ hash32(seed + 0x9e3779b9U)));
 }
 
-float hashUnit(uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); }
+float hashUnit(uint32_t h) {
+  return float(h >> 8) * (1.0f / 16777216.0f);
+}
 
 void generateMips(Texture& texture) {
   assert(!texture.levels.empty());
@@ -191,7 +202,8 @@ Texture leafTexture(int size, uint32_t seed) {
     dx /= len;
     dy /= len;
     const float by = top ? 0.2f : 0.88f - 0.68f * float(i) / float(kLeaves - 1);
-    const Rgba8 color{uint8_t(48 + int(40 * h3)), uint8_t(96 + int(50 * h1)), uint8_t(28 + int(24 * h2)), 255};
+    const Rgba8 color{uint8_t(48 + int(40 * h3)), uint8_t(96 + int(50 * h1)),
+                      uint8_t(28 + int(24 * h2)), 255};
     leaves.push_back({0.5f, by, dx, dy, 0.24f + 0.12f * h3, 0.07f + 0.03f * h2, color});
   }
   const Rgba8 clear{64, 112, 40, 0};
@@ -200,8 +212,8 @@ Texture leafTexture(int size, uint32_t seed) {
     const float px = (float(x) + 0.5f) / float(size), py = (float(y) + 0.5f) / float(size);
     for (const Leaf& l : leaves) {
       const float ox = px - l.bx, oy = py - l.by;
-      const float u = ox * l.dx + oy * l.dy;        // along the leaf
-      const float v = -ox * l.dy + oy * l.dx;       // across it
+      const float u = ox * l.dx + oy * l.dy;   // along the leaf
+      const float v = -ox * l.dy + oy * l.dx;  // across it
       if (u < 0.0f || u > l.length) continue;
       const float r = u / l.length;
       const float half = l.width * 4.0f * r * (1.0f - r);  // pointed at both ends
@@ -237,7 +249,8 @@ Texture groundTexture(int size, uint32_t seed, Rgba8 dark, Rgba8 bright) {
   return generate(size, [&](int x, int y) {
     const float u = (float(x) + 0.5f) / float(size), v = (float(y) + 0.5f) / float(size);
     const float white = hashUnit(hash3(uint32_t(x), uint32_t(y), seed)) - 0.5f;
-    const float t = 0.6f * valueNoise(u, v, 8, 8, seed + 1) + 0.4f * valueNoise(u, v, 32, 32, seed + 2);
+    const float t =
+        0.6f * valueNoise(u, v, 8, 8, seed + 1) + 0.4f * valueNoise(u, v, 32, 32, seed + 2);
     return mix(dark, bright, t + 0.15f * white);
   });
 }

@@ -1,0 +1,122 @@
+#include "scene/gltf_accessors.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "scene/scene_error.h"
+
+namespace taa::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const fs::path& file, const std::string& problem) {
+  throw SceneError(file, problem);
+}
+
+int componentCount(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+// Reads one component as float, applying the glTF normalisation rules for integers.
+float component(const uint8_t* p, int type, bool normalized) {
+  auto get = [&](auto v) {
+    std::memcpy(&v, p, sizeof(v));
+    return v;
+  };
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return get(float{});
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float v = float(get(int8_t{}));
+      return normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return float(get(uint8_t{})) / (normalized ? 255.0f : 1.0f);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      const float v = float(get(int16_t{}));
+      return normalized ? std::max(v / 32767.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return float(get(uint16_t{})) / (normalized ? 65535.0f : 1.0f);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return float(get(uint32_t{}));
+    default:
+      return 0.0f;
+  }
+}
+
+}  // namespace
+
+std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model& model, int index,
+                                    const std::string& what, int want) {
+  if (index < 0 || size_t(index) >= model.accessors.size())
+    fail(file, what + " refers to a missing accessor");
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  const std::string name = "accessors[" + std::to_string(index) + "] (" + what + ")";
+  const int comps = componentCount(a.type);
+  if (comps != want)
+    fail(file,
+         name + " has " + std::to_string(comps) + " components, expected " + std::to_string(want));
+  if (a.sparse.isSparse)
+    fail(file, name + " is sparse, which is not supported; re-export without sparse accessors");
+  std::vector<float> out(a.count * size_t(comps), 0.0f);
+  if (a.bufferView < 0) return out;  // all zeros, as the spec defines
+  const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+  if (csize <= 0) fail(file, name + " has an invalid component type");
+  if (size_t(a.bufferView) >= model.bufferViews.size() ||
+      size_t(model.bufferViews[size_t(a.bufferView)].buffer) >= model.buffers.size())
+    fail(file, name + " refers to a missing buffer view or buffer; the file is corrupt");
+  const tinygltf::BufferView& v = model.bufferViews[size_t(a.bufferView)];
+  const tinygltf::Buffer& b = model.buffers[size_t(v.buffer)];
+  const size_t elem = size_t(csize) * size_t(comps);
+  const size_t stride = v.byteStride ? v.byteStride : elem;
+  if (a.count > 0 && (a.byteOffset + stride * (a.count - 1) + elem > v.byteLength ||
+                      v.byteOffset + v.byteLength > b.data.size()))
+    fail(
+        file,
+        name + " reads past the end of its buffer; the file is truncated or corrupt, re-export it");
+  const uint8_t* base = b.data.data() + v.byteOffset + a.byteOffset;
+  for (size_t i = 0; i < a.count; ++i)
+    for (int c = 0; c < comps; ++c)
+      out[i * size_t(comps) + size_t(c)] =
+          component(base + i * stride + size_t(c) * size_t(csize), a.componentType, a.normalized);
+  return out;
+}
+
+std::vector<uint32_t> readGltfIndices(const fs::path& file, const tinygltf::Model& model, int index,
+                                      const std::string& what) {
+  if (index < 0 || size_t(index) >= model.accessors.size())
+    fail(file, what + " indices refer to a missing accessor");
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    fail(file, what + " indices must be unsigned integers");
+  const std::vector<float> f = readGltfAccessor(file, model, index, what + " indices", 1);
+  // Floats hold integers exactly only up to 2^24; read 32-bit indices directly.
+  std::vector<uint32_t> out(f.size());
+  if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && a.bufferView >= 0) {
+    // readGltfAccessor has checked the view, the buffer and the bounds.
+    const tinygltf::BufferView& v = model.bufferViews[size_t(a.bufferView)];
+    const uint8_t* base = model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset;
+    const size_t stride = v.byteStride ? v.byteStride : 4;
+    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], base + i * stride, 4);
+  } else {
+    for (size_t i = 0; i < out.size(); ++i) out[i] = uint32_t(f[i]);
+  }
+  return out;
+}
+
+}  // namespace taa::scene

@@ -1,0 +1,25 @@
+// Internal to the glTF loader: typed reads of accessor data with the bounds checks a
+// hostile or truncated file needs.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace taa::scene {
+
+// Reads accessor `index` as floats, `components` per element (integer components are
+// normalised when the accessor says so). Throws SceneError naming `file` and `what`
+// when the accessor is missing, has another shape, is sparse or overruns its buffer.
+std::vector<float> readGltfAccessor(const std::filesystem::path& file, const tinygltf::Model& model,
+                                    int index, const std::string& what, int components);
+
+// Reads an index accessor (unsigned byte, short or int).
+std::vector<uint32_t> readGltfIndices(const std::filesystem::path& file,
+                                      const tinygltf::Model& model, int index,
+                                      const std::string& what);
+
+}  // namespace taa::scene

@@ -1,0 +1,245 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <glm/gtc/quaternion.hpp>
+
+#include "scene/gltf_convert.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_error.h"
+#include "scene_test_util.h"
+
+namespace taa::scene {
+namespace {
+
+using testing::assetPath;
+
+struct Loaded {
+  Scene scene;
+  Model model;
+};
+
+Loaded load(const std::string& name) {
+  Loaded l;
+  l.model = loadGltf(assetPath(name), l.scene);
+  l.scene.models.push_back(l.model);
+  return l;
+}
+
+glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
+  return glm::vec3(m * glm::vec4(p, 1.0f));
+}
+
+void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
+  EXPECT_NEAR(a.x, b.x, eps);
+  EXPECT_NEAR(a.y, b.y, eps);
+  EXPECT_NEAR(a.z, b.z, eps);
+}
+
+TEST(GltfLoad, TexturedBoxWithEmbeddedPng) {
+  const Loaded l = load("textured_box.gltf");
+  ASSERT_EQ(l.model.nodes.size(), 4u);
+  EXPECT_EQ(l.model.name, "textured_box");
+  EXPECT_EQ(l.model.nodes[0].name, "root");
+  EXPECT_EQ(l.model.nodes[1].parent, 0);
+  EXPECT_EQ(l.model.nodes[2].parent, 0);
+  EXPECT_EQ(l.model.nodes[3].parent, 2);
+  EXPECT_EQ(l.model.nodes[1].mesh, l.model.nodes[3].mesh) << "a shared mesh is loaded once";
+  ASSERT_EQ(l.scene.meshes.size(), 1u);
+  ASSERT_EQ(l.scene.meshes[0].primitives.size(), 1u);
+  EXPECT_EQ(l.scene.meshes[0].primitives[0].indexCount, 36u);
+  EXPECT_EQ(l.scene.vertices.size(), 24u);
+  expectNear(l.scene.meshes[0].boundsMin, glm::vec3(-0.5f));
+  expectNear(l.scene.meshes[0].boundsMax, glm::vec3(0.5f));
+  ASSERT_EQ(l.scene.materials.size(), 1u);
+  const Material& m = l.scene.materials[0];
+  EXPECT_EQ(m.baseColorFactor, glm::vec4(1.0f, 0.5f, 0.5f, 1.0f));
+  EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
+  EXPECT_FALSE(m.doubleSided);
+  ASSERT_EQ(m.baseColorTexture, 0);
+  const Texture& t = l.scene.textures[0];
+  EXPECT_FALSE(t.repeat) << "sampler clamps both axes";
+  ASSERT_EQ(t.levels.size(), 5u);
+  EXPECT_EQ(t.levels[0].width, 16);
+  EXPECT_EQ(t.levels[4].width, 1);
+  EXPECT_EQ(t.levels[0].rgba[0], 240);          // first cell: light
+  EXPECT_EQ(t.levels[0].rgba[4 * 4 + 2], 200);  // texel (4, 0): blue
+}
+
+TEST(GltfLoad, HierarchyTransformsComposeParentFirst) {
+  const Loaded l = load("textured_box.gltf");
+  const auto draws = poseModel(l.scene, 0, 0.0);
+  ASSERT_EQ(draws.size(), 2u);
+  EXPECT_EQ(draws[0].node, 1);
+  EXPECT_EQ(draws[1].node, 3);
+  // box: T(1,0,0) S(2) Ry(90): +x goes to -z.
+  expectNear(apply(draws[0].transform, {1, 0, 0}), {1, 0, -2});
+  // box2: root * (T(0,3,0) Rx(90)) * T(0,0,1): origin -> (0,-1,0) + (0,3,0) -> x2 +(1,0,0).
+  expectNear(apply(draws[1].transform, {0, 0, 0}), {1, 4, 0});
+  // The matrix node decomposes to TRS.
+  const Node& lifted = l.model.nodes[2];
+  expectNear(lifted.translation, {0, 3, 0});
+  expectNear(lifted.scale, {1, 1, 1});
+  const glm::quat rx = glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0));
+  EXPECT_NEAR(std::fabs(glm::dot(lifted.rotation, rx)), 1.0f, 1e-5f);
+  glm::vec3 lo, hi;
+  modelBounds(l.scene, 0, lo, hi);
+  expectNear(lo, {0, -1, -1});
+  expectNear(hi, {2, 5, 1});
+}
+
+TEST(GltfLoad, DecomposeHandlesScaleAndMirroring) {
+  const glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) *
+                      glm::mat4_cast(glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, 3)))) *
+                      glm::scale(glm::mat4(1.0f), glm::vec3(-2, 3, 4));
+  glm::vec3 t, s;
+  glm::quat r;
+  decomposeTrs(m, t, r, s);
+  const glm::mat4 back =
+      glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+  for (int c = 0; c < 4; ++c)
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(back[c][k], m[c][k], 1e-5f);
+}
+
+TEST(GltfLoad, GlbWithoutNormalsGetsFlatNormals) {
+  const Loaded l = load("box.glb");
+  ASSERT_EQ(l.model.nodes.size(), 1u);
+  ASSERT_EQ(l.scene.meshes.size(), 1u);
+  EXPECT_EQ(l.scene.vertices.size(), 36u) << "flat shading gives every triangle its own vertices";
+  for (size_t i = 0; i < l.scene.vertices.size(); i += 3) {
+    const glm::vec3 n = l.scene.vertices[i].normal;
+    EXPECT_NEAR(std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z), 1.0f, 1e-6f);
+    EXPECT_EQ(n, l.scene.vertices[i + 1].normal);
+    // Outward: the normal points the same way as the face's position.
+    EXPECT_GT(glm::dot(n, l.scene.vertices[i].position), 0.0f);
+  }
+  ASSERT_EQ(l.scene.textures.size(), 1u);
+  const Texture& t = l.scene.textures[0];
+  ASSERT_EQ(t.levels.size(), 3u);
+  EXPECT_EQ(t.levels[0].width, 5);
+  EXPECT_EQ(t.levels[0].height, 3);
+  EXPECT_EQ(t.levels[1].width, 2);
+  EXPECT_EQ(t.levels[1].height, 1);
+  EXPECT_EQ(t.levels[0].rgba[0], 255);  // (0, 0) red
+  EXPECT_EQ(t.levels[0].rgba[6], 255);  // (1, 0) blue
+  EXPECT_TRUE(t.repeat);
+}
+
+TEST(GltfLoad, AnimatedModelWithExternalBuffer) {
+  const Loaded l = load("animated.gltf");
+  ASSERT_EQ(l.model.nodes.size(), 2u);
+  ASSERT_EQ(l.model.animations.size(), 1u);
+  const Animation& a = l.model.animations[0];
+  EXPECT_EQ(a.name, "move");
+  EXPECT_FLOAT_EQ(a.duration, 2.0f);
+  ASSERT_EQ(a.channels.size(), 4u);
+  EXPECT_EQ(a.channels[0].interpolation, Interpolation::Linear);
+  EXPECT_EQ(a.channels[1].path, AnimPath::Rotation);
+  EXPECT_EQ(a.channels[2].interpolation, Interpolation::Step);
+  EXPECT_EQ(a.channels[3].interpolation, Interpolation::CubicSpline);
+  EXPECT_EQ(a.channels[3].values.size(), 6u);
+  EXPECT_EQ(a.channels[3].node, 1);
+}
+
+TEST(GltfLoad, AlphaModesCutoffAndDoubleSided) {
+  const Loaded l = load("alpha_modes.gltf");
+  ASSERT_EQ(l.scene.materials.size(), 3u);
+  const Material& leaf = l.scene.materials[0];
+  EXPECT_EQ(leaf.alphaMode, AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(leaf.alphaCutoff, 0.3f);
+  EXPECT_TRUE(leaf.doubleSided);
+  ASSERT_GE(leaf.baseColorTexture, 0);
+  const Texture& t = l.scene.textures[size_t(leaf.baseColorTexture)];
+  EXPECT_EQ(t.levels[0].width, 8);
+  EXPECT_EQ(t.levels[0].rgba[3], 0);                      // corner transparent
+  EXPECT_EQ(t.levels[0].rgba[(4 * 8 + 4) * 4 + 3], 255);  // centre opaque
+  const Material& pane = l.scene.materials[1];
+  EXPECT_EQ(pane.alphaMode, AlphaMode::Blend);
+  EXPECT_FLOAT_EQ(pane.baseColorFactor.a, 0.5f);
+  EXPECT_EQ(l.scene.materials[2].alphaMode, AlphaMode::Opaque);
+  EXPECT_FLOAT_EQ(l.scene.materials[2].alphaCutoff, 0.5f) << "glTF default cutoff";
+}
+
+// Each refused file must fail before anything outside its folder is read, naming the
+// file and the offending uri.
+struct Refusal {
+  const char* file;
+  const char* uri;
+  const char* why;
+};
+
+TEST(GltfRefuse, EachInputClassNamesFileAndUri) {
+  const Refusal cases[] = {
+      {"refused/external_http.gltf", "http://example.com/quad.bin", "external URI"},
+      {"refused/file_scheme.gltf", "file:///etc/hostname", "external URI"},
+      {"refused/absolute_path.gltf", "/etc/hostname", "absolute path"},
+      {"refused/parent_dir.gltf", "../alpha_leaf.png", "leaves the glTF's folder"},
+      {"refused/encoded_parent.gltf", "sub/%2E%2E/%2e%2e/animated.bin", "leaves the glTF's folder"},
+      {"refused/external_buffer.glb", "https://example.com/payload.bin", "external URI"},
+      {"refused/missing_image.gltf", "not_here.png", "could not be read"},
+  };
+  for (const Refusal& c : cases) {
+    SCOPED_TRACE(c.file);
+    Scene s;
+    try {
+      loadGltf(assetPath(c.file), s);
+      ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(assetPath(c.file).string()), std::string::npos) << msg;
+      EXPECT_NE(msg.find(c.uri), std::string::npos) << msg;
+      EXPECT_NE(msg.find(c.why), std::string::npos) << msg;
+    }
+  }
+}
+
+TEST(GltfRefuse, UriRules) {
+  const std::filesystem::path f = "x.gltf";
+  EXPECT_NO_THROW(
+      checkGltfUris(f, R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
+  EXPECT_NO_THROW(checkGltfUris(f, R"({"images":[{"uri":"textures/a%20b.png"}],"buffers":[{}]})"));
+  for (const char* bad : {"HTTPS://x/y.bin", "ftp:x", "C:/x.bin", "..\\\\x.bin", "a/../../b.bin",
+                          "%2e%2e/b.bin", "\\\\\\\\server\\\\share\\\\b.bin"}) {
+    const std::string json = std::string(R"({"images":[{"uri":")") + bad + R"("}]})";
+    EXPECT_THROW(checkGltfUris(f, json), SceneError) << bad;
+  }
+  EXPECT_THROW(checkGltfUris(f, "{not json"), SceneError);
+}
+
+TEST(GltfRefuse, SymlinkOutOfTheFolderIsRefusedByTheFileJail) {
+  // The uri is a harmless relative name, but it is a symlink leading outside: only the
+  // file-system callbacks can catch that.
+  const std::filesystem::path dir = std::filesystem::path(TAA_TEST_OUT) / "gltf_jail";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "inner");
+  std::filesystem::copy_file(assetPath("animated.bin"), dir / "outside.bin");
+  std::filesystem::create_symlink("../outside.bin", dir / "inner" / "animated.bin");
+  std::filesystem::copy_file(assetPath("animated.gltf"), dir / "inner" / "animated.gltf");
+  Scene s;
+  try {
+    loadGltf(dir / "inner" / "animated.gltf", s);
+    ADD_FAILURE() << "loaded through a symlink";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the glTF's folder"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(GltfRefuse, MissingAndCorruptFiles) {
+  Scene s;
+  EXPECT_THROW(loadGltf(assetPath("does_not_exist.gltf"), s), SceneError);
+  const std::filesystem::path dir = std::filesystem::path(TAA_TEST_OUT) / "gltf_corrupt";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.gltf") << R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})";
+  std::ofstream(dir / "bad.glb") << "glTF\x02";
+  for (const char* name : {"bad.gltf", "bad.glb"}) {
+    try {
+      loadGltf(dir / name, s);
+      ADD_FAILURE() << name << " loaded";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace taa::scene

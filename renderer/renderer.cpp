@@ -10,6 +10,7 @@
 #include "pass_plan.h"
 #include "passes/gbuffer.h"
 #include "passes/taa_resolve.h"
+#include "post_chain.h"
 #include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
@@ -65,6 +66,7 @@ struct Renderer::State {
   GBufferPass gbuffer;
   PrevGBuffer prev;
   std::unique_ptr<TaaResolvePass> resolve;
+  PostChain post;
   vk::Buffer frameUniforms;
   vk::Buffer instances;
   vk::GpuTimer timer;
@@ -74,16 +76,16 @@ struct Renderer::State {
   State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc)
       : ctx(c), spec(s), scene(sc), gpuScene(c, sc), plan(planPasses(s)), config(gbufferConfig(s, plan)),
         targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
+        post(c, s, plan, maxRenderSize(s)),
         frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
         instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                          sizeof(gpu::InstanceData),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
-    if (plan.motionBlur || plan.sharpen || plan.cas || plan.fxaa)
-      throw std::logic_error("post passes are not implemented yet");
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
+    for (const auto& p : post.describe()) log.push_back(p);
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
     if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
@@ -119,10 +121,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   s.timer.begin(cmd, "gbuffer");
   s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), s.instances.handle(), state.renderSize, lodBias);
   s.timer.end(cmd);
-  vk::Image* output = &s.targets.color;
+  vk::Image& resolveInput = s.post.beforeResolve(cmd, s.timer, state, s.targets);
+  vk::Image* output = &resolveInput;
+  glm::ivec2 outputSize = state.renderSize;
   if (s.resolve) {
     TaaInputs in;
-    in.color = &s.targets.color;
+    in.color = &resolveInput;
     in.depth = &s.targets.depth;
     in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
     in.ids = s.targets.ids ? &s.targets.ids : nullptr;
@@ -134,9 +138,13 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.begin(cmd, "taa_resolve");
     s.resolve->record(cmd, state, in);
     s.timer.end(cmd);
-    output = s.resolve->debugView() ? s.resolve->debugView() : &s.resolve->output();
+    output = &s.resolve->output();
+    outputSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
     s.prev.capture(cmd, s.targets);
   }
+  output = &s.post.afterResolve(cmd, s.timer, state, *output, outputSize);
+  // A debug view replaces the output (after the passes it would otherwise feed).
+  if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
   s.ctx.submitAndWait(cmd);
 
   FrameRecord record;
@@ -151,12 +159,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
       return decodeTarget(vk::readImage(s.ctx, img), img.desc().format, tw, w, h);
     };
     record.hasImages = true;
-    if (output == &s.targets.color) {
-      record.color = read(s.targets.color);
-    } else {
-      const int ow = int(output->desc().width), oh = int(output->desc().height);
-      record.color = decodeTarget(vk::readImage(s.ctx, *output), output->desc().format, ow, ow, oh);
-    }
+    record.color = decodeTarget(vk::readImage(s.ctx, *output), output->desc().format, int(output->desc().width),
+                                outputSize.x, outputSize.y);
     record.colorSha256 = pixelSha256(record.color);
     if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
     if (wants(s.spec, spec::AuxBuffer::Velocity)) record.aux.push_back({"velocity", read(s.targets.velocity)});

@@ -22,6 +22,8 @@ struct FrameRecord {
   Image color;             // the final output, linear HDR RGBA at output size
   std::string colorSha256; // of the output's half-float pixel bytes (core/image_io.h)
   std::vector<NamedImage> aux;
+  bool hasReference = false;  // set when the run computes the supersampled ground truth
+  Image reference;            // output size, float32 average of reference.samples renders
   std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
   glm::ivec2 renderSize{0};
   bool cameraCut = false;

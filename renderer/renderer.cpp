@@ -9,6 +9,7 @@
 #include "gpu_scene.h"
 #include "pass_plan.h"
 #include "passes/gbuffer.h"
+#include "passes/reference.h"
 #include "passes/taa_resolve.h"
 #include "post_chain.h"
 #include "prev_gbuffer.h"
@@ -67,16 +68,18 @@ struct Renderer::State {
   PrevGBuffer prev;
   std::unique_ptr<TaaResolvePass> resolve;
   PostChain post;
+  std::unique_ptr<ReferencePass> reference;
   vk::Buffer frameUniforms;
   vk::Buffer instances;
   vk::GpuTimer timer;
   std::vector<std::string> log;
   int nextFrame = 0;
 
-  State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc)
+  State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions options)
       : ctx(c), spec(s), scene(sc), gpuScene(c, sc), plan(planPasses(s)), config(gbufferConfig(s, plan)),
         targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
         post(c, s, plan, maxRenderSize(s)),
+        reference(options.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
         instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                          sizeof(gpu::InstanceData),
@@ -86,6 +89,9 @@ struct Renderer::State {
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
     for (const auto& p : post.describe()) log.push_back(p);
+    if (reference)
+      log.push_back("pass reference (" + std::to_string(reference->samples()) + " samples at " +
+                    std::to_string(s.render.width) + "x" + std::to_string(s.render.height) + ")");
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
     if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
@@ -95,8 +101,8 @@ struct Renderer::State {
   }
 };
 
-Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene)
-    : s_(std::make_unique<State>(ctx, spec, scene)) {}
+Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene, RenderOptions options)
+    : s_(std::make_unique<State>(ctx, spec, scene, options)) {}
 
 Renderer::~Renderer() = default;
 
@@ -119,7 +125,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
   s.timer.begin(cmd, "gbuffer");
-  s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), s.instances.handle(), state.renderSize, lodBias);
+  s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), 0, s.instances.handle(), state.renderSize,
+                   lodBias);
   s.timer.end(cmd);
   vk::Image& resolveInput = s.post.beforeResolve(cmd, s.timer, state, s.targets);
   vk::Image* output = &resolveInput;
@@ -143,6 +150,11 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.prev.capture(cmd, s.targets);
   }
   output = &s.post.afterResolve(cmd, s.timer, state, *output, outputSize);
+  if (s.reference) {
+    s.timer.begin(cmd, "reference");
+    s.reference->record(cmd, state, draws, s.instances.handle());
+    s.timer.end(cmd);
+  }
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
   s.ctx.submitAndWait(cmd);
@@ -162,6 +174,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     record.color = decodeTarget(vk::readImage(s.ctx, *output), output->desc().format, int(output->desc().width),
                                 outputSize.x, outputSize.y);
     record.colorSha256 = pixelSha256(record.color);
+    if (s.reference) {
+      vk::Image& ref = s.reference->output();
+      const int rw = int(ref.desc().width), rh = int(ref.desc().height);
+      record.reference = decodeTarget(vk::readImage(s.ctx, ref), ref.desc().format, rw, rw, rh);
+      record.hasReference = true;
+    }
     if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
     if (wants(s.spec, spec::AuxBuffer::Velocity)) record.aux.push_back({"velocity", read(s.targets.velocity)});
     if (wants(s.spec, spec::AuxBuffer::Normal)) record.aux.push_back({"normal", read(s.targets.normal)});

@@ -17,9 +17,15 @@ namespace vk {
 class Context;
 }
 
+struct RenderOptions {
+  // Render the supersampled reference beside every frame (costs reference.samples
+  // extra scene renders per frame); its image is read back with the frame's images.
+  bool reference = false;
+};
+
 class Renderer {
  public:
-  Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene);
+  Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene, RenderOptions options = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

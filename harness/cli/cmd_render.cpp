@@ -18,9 +18,10 @@ namespace fs = std::filesystem;
 
 namespace {
 const char* kUsage =
-    "taa-harness render CASE --out DIR [--device NAME] [--validate]\n"
+    "taa-harness render CASE --out DIR [--reference] [--device NAME] [--validate]\n"
     "  writes DIR/CASE/frame_NNNN.exr (linear half float) and .png (tonemapped sRGB) for each\n"
-    "  frame in output.frames, aux buffers from output.aux, records.json and run.log";
+    "  frame in output.frames, aux buffers from output.aux, records.json and run.log;\n"
+    "  --reference also writes frame_NNNN.reference.exr/.png, the supersampled ground truth";
 
 std::string frameName(int frame) {
   char buf[32];
@@ -30,14 +31,16 @@ std::string frameName(int frame) {
 }  // namespace
 
 int cmdRender(const Args& args) {
-  const auto a = parseArgs(args, {"--validate"}, {"--out", "--device"}, kUsage);
+  const auto a = parseArgs(args, {"--validate", "--reference"}, {"--out", "--device"}, kUsage);
   if (a.positional.size() != 1 || !a.values.count("--out")) throw UsageError(std::string("usage: ") + kUsage);
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
   const fs::path dir = fs::path(a.value("--out")) / spec.name;
   fs::create_directories(dir);
 
-  RunContext run(spec, dir, a.value("--device"), a.has("--validate"));
+  RenderOptions options;
+  options.reference = a.has("--reference");
+  RunContext run(spec, dir, a.value("--device"), a.has("--validate"), options);
   std::ofstream log(dir / "run.log");
   for (const auto& line : run.renderer().log()) {
     log << line << "\n";
@@ -53,6 +56,10 @@ int cmdRender(const Args& args) {
       writeExr(dir / (base + ".exr"), r.color);
       writePng(dir / (base + ".png"), r.color);
       for (const auto& aux : r.aux) writeExr(dir / (base + "." + aux.name + ".exr"), aux.image);
+      if (r.hasReference) {
+        writeExr(dir / (base + ".reference.exr"), r.reference);
+        writePng(dir / (base + ".reference.png"), r.reference);
+      }
       j["sha256"] = r.colorSha256;
       std::cout << spec.name << " frame " << r.frame << " sha256 " << r.colorSha256 << "\n";
     }

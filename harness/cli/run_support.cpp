@@ -10,7 +10,7 @@
 namespace taa::cli {
 
 RunContext::RunContext(const spec::CaseSpec& spec, const std::filesystem::path& outDir, const std::string& device,
-                       bool validate)
+                       bool validate, RenderOptions renderOptions)
     : spec_(spec), validate_(validate) {
   vk::ContextOptions options;
   options.device = device;
@@ -19,7 +19,7 @@ RunContext::RunContext(const spec::CaseSpec& spec, const std::filesystem::path& 
   std::filesystem::create_directories(options.shaderCacheDir);
   scene_ = scene::buildScene(spec);
   ctx_ = std::make_unique<vk::Context>(options);
-  renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_);
+  renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_, renderOptions);
 }
 
 RunContext::~RunContext() = default;

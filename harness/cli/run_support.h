@@ -17,7 +17,7 @@ namespace taa::cli {
 class RunContext {
  public:
   RunContext(const spec::CaseSpec& spec, const std::filesystem::path& outDir, const std::string& device,
-             bool validate);
+             bool validate, RenderOptions options = {});
   ~RunContext();
 
   vk::Context& context() { return *ctx_; }

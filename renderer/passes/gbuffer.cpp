@@ -108,7 +108,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
 }
 
 void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
-                           VkBuffer frameUniforms, VkBuffer instances, float lodBias) {
+                           const Frame& f, float lodBias) {
   if (draws.empty()) return;
   pipeline.bind(cmd);
   const VkDeviceSize offset = 0;
@@ -122,8 +122,8 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
     const auto& material = cpu.materials[prim.material];
     if (prim.material != boundMaterial) {
       vk::Bindings()
-          .uniform(GBUF_BINDING_FRAME, frameUniforms, 0, sizeof(gpu::FrameUniforms))
-          .storageBuffer(GBUF_BINDING_INSTANCES, instances, 0, VK_WHOLE_SIZE)
+          .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
+          .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
           .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(prim.material), scene_.sampler(prim.material))
           .push(ctx_, cmd, pipeline);
       boundMaterial = prim.material;
@@ -141,7 +141,8 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList& draws, VkBuffer frameUniforms,
-                         VkBuffer instances, glm::ivec2 size, float lodBias) {
+                         VkDeviceSize uniformOffset, VkBuffer instances, glm::ivec2 size, float lodBias) {
+  const Frame f{frameUniforms, uniformOffset, instances};
   vk::Image* outputs[GBUF_OUT_COUNT] = {&t.color, &t.velocity, &t.normal, &t.ids, &t.albedo};
   VkRenderingAttachmentInfo color[GBUF_OUT_COUNT];
   for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
@@ -174,17 +175,17 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
   vkCmdBeginRendering(cmd, &info);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  drawList(cmd, opaque_, draws.opaque, frameUniforms, instances, lodBias);
+  drawList(cmd, opaque_, draws.opaque, f, lodBias);
   sky_.bind(cmd);
   vk::Bindings()
-      .uniform(GBUF_BINDING_FRAME, frameUniforms, 0, sizeof(gpu::FrameUniforms))
-      .storageBuffer(GBUF_BINDING_INSTANCES, instances, 0, VK_WHOLE_SIZE)
+      .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
+      .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
       .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(0), scene_.sampler(0))
       .push(ctx_, cmd, sky_);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (config_.deferred) {
     vkCmdEndRendering(cmd);
-    lightDeferred(cmd, t, frameUniforms, size);
+    lightDeferred(cmd, t, f, size);
     t.color.use(cmd, vk::Use::ColorAttachment);
     t.depth.use(cmd, vk::Use::DepthAttachment);
     for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
@@ -196,18 +197,18 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
   }
-  drawList(cmd, blended_, draws.blended, frameUniforms, instances, lodBias);
+  drawList(cmd, blended_, draws.blended, f, lodBias);
   vkCmdEndRendering(cmd);
 }
 
-void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, VkBuffer frameUniforms, glm::ivec2 size) {
+void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, const Frame& f, glm::ivec2 size) {
   t.albedo.use(cmd, vk::Use::SampledCompute);
   t.normal.use(cmd, vk::Use::SampledCompute);
   t.depth.use(cmd, vk::Use::SampledCompute);
   t.color.use(cmd, vk::Use::StorageWrite);
   lighting_.bind(cmd);
   vk::Bindings()
-      .uniform(0, frameUniforms, 0, sizeof(gpu::FrameUniforms))
+      .uniform(0, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .sampled(1, t.albedo.view(), pointClamp_.handle())
       .sampled(2, t.normal.view(), pointClamp_.handle())
       .sampled(3, t.depth.view(), pointClamp_.handle())

@@ -39,14 +39,20 @@ class GBufferPass {
  public:
   GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferConfig& config);
 
-  // Records the pass into `cmd` for a frame rendered at `size` (top-left of the targets).
+  // Records the pass into `cmd` for a frame rendered at `size` (top-left of the targets)
+  // with the FrameUniforms found at `frameUniforms` + `uniformOffset`.
   void record(VkCommandBuffer cmd, GBufferTargets& targets, const DrawList& draws, VkBuffer frameUniforms,
-              VkBuffer instances, glm::ivec2 size, float lodBias);
+              VkDeviceSize uniformOffset, VkBuffer instances, glm::ivec2 size, float lodBias);
 
  private:
-  void drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
-                VkBuffer frameUniforms, VkBuffer instances, float lodBias);
-  void lightDeferred(VkCommandBuffer cmd, GBufferTargets& targets, VkBuffer frameUniforms, glm::ivec2 size);
+  struct Frame {
+    VkBuffer uniforms;
+    VkDeviceSize offset;
+    VkBuffer instances;
+  };
+  void drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws, const Frame& f,
+                float lodBias);
+  void lightDeferred(VkCommandBuffer cmd, GBufferTargets& targets, const Frame& f, glm::ivec2 size);
 
   vk::Context& ctx_;
   const GpuScene& scene_;

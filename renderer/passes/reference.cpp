@@ -1,0 +1,100 @@
+#include "passes/reference.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "frame_uniforms.h"
+#include "script/jitter.h"
+#include "vk/context.h"
+
+namespace taa {
+
+namespace {
+
+GBufferConfig referenceConfig(const spec::CaseSpec& spec) {
+  GBufferConfig c;
+  c.width = uint32_t(spec.render.width);
+  c.height = uint32_t(spec.render.height);
+  c.deferred = spec.render.path == spec::RenderPath::Deferred;
+  c.normal = c.deferred;
+  return c;
+}
+
+double radicalInverse2(uint32_t i) {
+  double r = 0.0, f = 0.5;
+  for (; i; i >>= 1, f *= 0.5)
+    if (i & 1u) r += f;
+  return r;
+}
+
+struct AccumulatePush {
+  int32_t width, height;
+  uint32_t mode;
+  float invCount;
+};
+
+}  // namespace
+
+std::vector<glm::vec2> referenceOffsets(int count) {
+  std::vector<glm::vec2> out;
+  const int m = int(std::lround(std::sqrt(double(count))));
+  if (m * m == count) {
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) out.emplace_back((i + 0.5f) / float(m) - 0.5f, (j + 0.5f) / float(m) - 0.5f);
+  } else {
+    for (int i = 0; i < count; ++i)
+      out.emplace_back(float((i + 0.5) / count - 0.5), float(radicalInverse2(uint32_t(i)) + 0.5 / count - 0.5));
+  }
+  return out;
+}
+
+ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene)
+    : ctx_(ctx), spec_(spec), offsets_(referenceOffsets(spec.reference.samples)), config_(referenceConfig(spec)),
+      targets_(ctx, config_), gbuffer_(ctx, scene, config_),
+      accumulate_(vk::createComputePipeline(
+          ctx, "reference_accumulate.comp",
+          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(AccumulatePush))),
+      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+  vk::ImageDesc d;
+  d.name = "reference";
+  d.width = config_.width;
+  d.height = config_.height;
+  d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  accum_ = vk::Image(ctx, d);
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(ctx.physical(), &props);
+  const VkDeviceSize align = props.limits.minUniformBufferOffsetAlignment;
+  stride_ = (sizeof(gpu::FrameUniforms) + align - 1) / align * align;
+  uniforms_ = vk::Buffer(ctx, stride_ * offsets_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+}
+
+void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
+                           VkBuffer instances) {
+  const glm::ivec2 size(spec_.render.width, spec_.render.height);
+  // The same instant as the frame, without the frame's jitter and at output size.
+  script::FrameState sub = state;
+  sub.renderSize = size;
+  for (size_t i = 0; i < offsets_.size(); ++i) {
+    sub.jitter = offsets_[i];
+    sub.jitteredProjection = script::applyJitter(state.camera.projection, offsets_[i], size);
+    const gpu::FrameUniforms u = makeFrameUniforms(sub, spec_.lighting);
+    std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + i * stride_, &u, sizeof(u));
+  }
+  for (size_t i = 0; i < offsets_.size(); ++i) {
+    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), i * stride_, instances, size, 0.0f);
+    targets_.color.use(cmd, vk::Use::SampledCompute);
+    accum_.use(cmd, vk::Use::StorageWrite);
+    accumulate_.bind(cmd);
+    vk::Bindings()
+        .sampled(0, targets_.color.view(), point_.handle())
+        .storage(1, accum_.view())
+        .push(ctx_, cmd, accumulate_);
+    const uint32_t mode = (i > 0 ? 1u : 0u) | (i + 1 == offsets_.size() ? 2u : 0u);
+    const AccumulatePush push{size.x, size.y, mode, 1.0f / float(offsets_.size())};
+    vkCmdPushConstants(cmd, accumulate_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+    vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+  }
+}
+
+}  // namespace taa

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "spec/checks_spec.h"
 #include "spec/fields.h"
 #include "spec/render_spec.h"
 #include "spec/scene_spec.h"
@@ -31,6 +32,7 @@ struct CaseSpec {
   DebugSpec debug;
   OutputSpec output;
   ReferenceSpec reference;
+  ChecksSpec checks;
 };
 
 template <class V>
@@ -49,6 +51,7 @@ void fields(V& v, CaseSpec& s) {
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});
   v.object("reference", s.reference, Meta{"supersampled ground truth", ""});
+  v.object("checks", s.checks, Meta{"golden comparison and invariants of taa-harness run", ""});
 }
 
 }  // namespace taa::spec

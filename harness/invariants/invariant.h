@@ -1,0 +1,61 @@
+// A named check over a case's frame sequence. The runner feeds every frame the
+// invariant needs, in order, then asks for the outcome. Invariants never touch
+// Vulkan: they see read-back images only.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.h"
+#include "spec/case_spec.h"
+
+namespace taa::invariants {
+
+// One frame as an invariant sees it; pointers are null for what was not read back.
+struct FrameView {
+  int frame = 0;
+  bool historyReset = false;        // frame 0, camera cut or scripted reset
+  const Image* output = nullptr;    // the final output (linear HDR RGBA, output size)
+  const Image* reference = nullptr; // supersampled ground truth (output size)
+  const Image* current = nullptr;   // the resolve's input colour this frame (render size)
+  const Image* ids = nullptr;       // object id, material id, mover flag (render size)
+  const Image* velocity = nullptr;  // pixels (render size)
+  std::string sha256;               // of the output
+};
+
+// What the runner must read back for an invariant.
+struct Needs {
+  bool reference = false;
+  bool current = false;
+  bool ids = false;
+  bool velocity = false;
+  bool secondRun = false;  // determinism: the runner renders the case again
+};
+
+struct Outcome {
+  std::string name;
+  bool passed = false;
+  std::string detail;  // one line: what was measured against what bound, where it failed
+  std::vector<std::pair<std::string, double>> values;  // measured figures for the report
+};
+
+class Invariant {
+ public:
+  virtual ~Invariant() = default;
+  virtual void observe(const FrameView& frame) = 0;
+  // Frames of the second render, for invariants whose Needs ask for one.
+  virtual void observeRepeat(const FrameView&) {}
+  virtual Outcome finish() = 0;
+};
+
+Needs needsOf(spec::InvariantKind kind);
+
+// Why the case cannot use this invariant (it checks a technique the case does not
+// enable, or the case lacks what it measures), or "" when it can.
+std::string inapplicable(spec::InvariantKind kind, const spec::CaseSpec& spec);
+
+std::unique_ptr<Invariant> makeInvariant(spec::InvariantKind kind, const spec::CaseSpec& spec);
+
+}  // namespace taa::invariants

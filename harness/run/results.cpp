@@ -1,0 +1,182 @@
+#include "run/results.h"
+
+#include <cmath>
+#include <limits>
+
+namespace taa::run {
+
+const char* toString(FrameStatus s) {
+  switch (s) {
+    case FrameStatus::Exact: return "exact";
+    case FrameStatus::WithinTolerance: return "within_tolerance";
+    case FrameStatus::Failed: return "failed";
+    case FrameStatus::MissingGolden: return "missing_golden";
+  }
+  return "?";
+}
+
+const char* toString(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Pass: return "pass";
+    case CaseStatus::Fail: return "fail";
+    case CaseStatus::Stale: return "stale";
+    case CaseStatus::NoGolden: return "no_golden";
+    case CaseStatus::Error: return "error";
+  }
+  return "?";
+}
+
+namespace {
+
+template <class E>
+E fromString(const std::string& text, std::initializer_list<E> values) {
+  for (E v : values)
+    if (text == toString(v)) return v;
+  throw std::runtime_error("results.json: unknown status '" + text + "'");
+}
+
+// JSON has no infinities: PSNR of identical images (+inf) and errors involving
+// NaN or Inf pixels (+inf) are written as the strings "inf" / "-inf".
+nlohmann::json number(double v) {
+  if (std::isfinite(v)) return v;
+  if (std::isnan(v)) return "nan";
+  return v > 0 ? "inf" : "-inf";
+}
+
+double numberFrom(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key)) return 0.0;
+  const auto& v = j[key];
+  if (v.is_number()) return v.get<double>();
+  const std::string s = v.is_string() ? v.get<std::string>() : "nan";
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+nlohmann::json metricsJson(const ImageMetrics& m) {
+  return {{"max_abs", number(m.maxAbs)},       {"rmse", number(m.rmse)},
+          {"psnr", number(m.psnr)},            {"share_over", number(m.shareOver)},
+          {"flip_mean", number(m.flipMean)},   {"flip_p99", number(m.flipP99)}};
+}
+
+ImageMetrics metricsFrom(const nlohmann::json& j) {
+  ImageMetrics m;
+  m.maxAbs = numberFrom(j, "max_abs");
+  m.rmse = numberFrom(j, "rmse");
+  m.psnr = numberFrom(j, "psnr");
+  m.shareOver = numberFrom(j, "share_over");
+  m.flipMean = numberFrom(j, "flip_mean");
+  m.flipP99 = numberFrom(j, "flip_p99");
+  return m;
+}
+
+}  // namespace
+
+nlohmann::json toJson(const RunResults& r) {
+  nlohmann::json out = {{"device", r.device}, {"fingerprint", r.fingerprint}, {"cases", nlohmann::json::array()}};
+  for (const auto& c : r.cases) {
+    nlohmann::json jc = {{"name", c.name},
+                         {"file", c.file},
+                         {"description", c.description},
+                         {"status", toString(c.status)},
+                         {"message", c.message},
+                         {"bless_command", c.blessCommand},
+                         {"fingerprint", c.fingerprint},
+                         {"golden_fingerprint", c.goldenFingerprint},
+                         {"reference_rmse", c.referenceRmse},
+                         {"frame_ms", c.frameMs},
+                         {"log", c.log},
+                         {"seconds", c.seconds}};
+    for (const auto& f : c.frames) {
+      const auto& i = f.images;
+      jc["frames"].push_back({{"frame", f.frame},
+                              {"status", toString(f.status)},
+                              {"actual_sha256", f.actualSha256},
+                              {"golden_sha256", f.goldenSha256},
+                              {"tolerance_mode", f.toleranceMode},
+                              {"metrics", metricsJson(f.metrics)},
+                              {"failures", f.failures},
+                              {"images",
+                               {{"golden", i.golden},
+                                {"actual", i.actual},
+                                {"diff", i.diff},
+                                {"zoom_golden", i.zoomGolden},
+                                {"zoom_actual", i.zoomActual},
+                                {"zoom_diff", i.zoomDiff},
+                                {"zoom", {i.zoomX, i.zoomY, i.zoomW, i.zoomH}}}}});
+    }
+    for (const auto& inv : c.invariants) {
+      nlohmann::json values = nlohmann::json::object();
+      for (const auto& [k, v] : inv.values) values[k] = number(v);
+      jc["invariants"].push_back(
+          {{"name", inv.name}, {"passed", inv.passed}, {"detail", inv.detail}, {"values", values}});
+    }
+    for (const auto& t : c.timings)
+      jc["timings"].push_back({{"pass", t.pass}, {"median_ms", t.medianMs}, {"p95_ms", t.p95Ms}});
+    out["cases"].push_back(std::move(jc));
+  }
+  return out;
+}
+
+RunResults runResultsFromJson(const nlohmann::json& j) {
+  RunResults r;
+  r.device = j.value("device", "");
+  r.fingerprint = j.value("fingerprint", "");
+  for (const auto& jc : j.value("cases", nlohmann::json::array())) {
+    CaseResult c;
+    c.name = jc.value("name", "");
+    c.file = jc.value("file", "");
+    c.description = jc.value("description", "");
+    c.status = fromString<CaseStatus>(jc.value("status", "error"), {CaseStatus::Pass, CaseStatus::Fail, CaseStatus::Stale,
+                                                                     CaseStatus::NoGolden, CaseStatus::Error});
+    c.message = jc.value("message", "");
+    c.blessCommand = jc.value("bless_command", "");
+    c.fingerprint = jc.value("fingerprint", "");
+    c.goldenFingerprint = jc.value("golden_fingerprint", "");
+    c.referenceRmse = jc.value("reference_rmse", std::vector<double>{});
+    c.frameMs = jc.value("frame_ms", std::vector<double>{});
+    c.log = jc.value("log", std::vector<std::string>{});
+    c.seconds = jc.value("seconds", 0.0);
+    for (const auto& jf : jc.value("frames", nlohmann::json::array())) {
+      FrameComparison f;
+      f.frame = jf.value("frame", 0);
+      f.status = fromString<FrameStatus>(jf.value("status", "failed"), {FrameStatus::Exact, FrameStatus::WithinTolerance,
+                                                                         FrameStatus::Failed, FrameStatus::MissingGolden});
+      f.actualSha256 = jf.value("actual_sha256", "");
+      f.goldenSha256 = jf.value("golden_sha256", "");
+      f.toleranceMode = jf.value("tolerance_mode", false);
+      f.metrics = metricsFrom(jf.value("metrics", nlohmann::json::object()));
+      f.failures = jf.value("failures", std::vector<std::string>{});
+      const auto ji = jf.value("images", nlohmann::json::object());
+      f.images.golden = ji.value("golden", "");
+      f.images.actual = ji.value("actual", "");
+      f.images.diff = ji.value("diff", "");
+      f.images.zoomGolden = ji.value("zoom_golden", "");
+      f.images.zoomActual = ji.value("zoom_actual", "");
+      f.images.zoomDiff = ji.value("zoom_diff", "");
+      const auto zoom = ji.value("zoom", std::vector<int>{0, 0, 0, 0});
+      if (zoom.size() == 4) {
+        f.images.zoomX = zoom[0];
+        f.images.zoomY = zoom[1];
+        f.images.zoomW = zoom[2];
+        f.images.zoomH = zoom[3];
+      }
+      c.frames.push_back(std::move(f));
+    }
+    for (const auto& ji : jc.value("invariants", nlohmann::json::array())) {
+      InvariantResult inv;
+      inv.name = ji.value("name", "");
+      inv.passed = ji.value("passed", false);
+      inv.detail = ji.value("detail", "");
+      const auto values = ji.value("values", nlohmann::json::object());
+      for (const auto& item : values.items()) inv.values.emplace_back(item.key(), numberFrom(values, item.key().c_str()));
+      c.invariants.push_back(std::move(inv));
+    }
+    for (const auto& jt : jc.value("timings", nlohmann::json::array()))
+      c.timings.push_back({jt.value("pass", ""), jt.value("median_ms", 0.0), jt.value("p95_ms", 0.0)});
+    r.cases.push_back(std::move(c));
+  }
+  return r;
+}
+
+}  // namespace taa::run

@@ -1,0 +1,89 @@
+// What a run found, case by case: the data behind the console lines, results.json,
+// the JUnit file and the HTML report.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace taa::run {
+
+struct ImageMetrics {
+  double maxAbs = 0.0;
+  double rmse = 0.0;
+  double psnr = 0.0;
+  double shareOver = 0.0;
+  double flipMean = 0.0;
+  double flipP99 = 0.0;
+};
+
+// Paths are relative to the run's output folder (where report.html lives).
+struct FrameImages {
+  std::string golden;       // PNG of the golden frame (tonemapped)
+  std::string actual;       // PNG of this run's frame
+  std::string diff;         // heatmap PNG of the per-pixel error
+  std::string zoomGolden;   // magnified crop of the worst region
+  std::string zoomActual;
+  std::string zoomDiff;
+  int zoomX = 0, zoomY = 0, zoomW = 0, zoomH = 0;  // the crop in frame pixels
+};
+
+enum class FrameStatus { Exact, WithinTolerance, Failed, MissingGolden };
+
+struct FrameComparison {
+  int frame = 0;
+  FrameStatus status = FrameStatus::Failed;
+  std::string actualSha256;
+  std::string goldenSha256;
+  bool toleranceMode = false;  // environment differs from the golden's: thresholds apply
+  ImageMetrics metrics;
+  std::vector<std::string> failures;  // "rmse 0.021 > 0.01", one per violated threshold
+  FrameImages images;
+};
+
+struct InvariantResult {
+  std::string name;
+  bool passed = false;
+  std::string detail;
+  std::vector<std::pair<std::string, double>> values;
+};
+
+enum class CaseStatus { Pass, Fail, Stale, NoGolden, Error };
+
+struct PassTiming {
+  std::string pass;
+  double medianMs = 0.0;
+  double p95Ms = 0.0;
+};
+
+struct CaseResult {
+  std::string name;
+  std::string file;
+  std::string description;
+  CaseStatus status = CaseStatus::Error;
+  std::string message;        // error text, or the stale/no-golden explanation
+  std::string blessCommand;   // what to run when the change is intended
+  std::string fingerprint;    // this run's environment
+  std::string goldenFingerprint;
+  std::vector<FrameComparison> frames;
+  std::vector<InvariantResult> invariants;
+  std::vector<double> referenceRmse;  // per frame against the reference; empty without one
+  std::vector<double> frameMs;        // per frame, all passes together
+  std::vector<PassTiming> timings;
+  std::vector<std::string> log;       // passes and buffers the renderer allocated
+  double seconds = 0.0;               // wall time of the case (not a result, for scheduling)
+};
+
+struct RunResults {
+  std::string device;
+  std::string fingerprint;
+  std::vector<CaseResult> cases;
+};
+
+const char* toString(FrameStatus s);
+const char* toString(CaseStatus s);
+nlohmann::json toJson(const RunResults& r);
+RunResults runResultsFromJson(const nlohmann::json& j);
+
+}  // namespace taa::run

@@ -300,5 +300,21 @@ TEST(CpuResolve, InverseLumaBlendStaysFiniteNearThePoleAndUpToHalfMax) {
         }
 }
 
+// What a YCoCg box can hand back next to a magenta firefly (see resolve_tone_weight_test):
+// negative green, luma about -190. Weighted blends must stay between black and the inputs (up
+// to inverse luma's rounding, about 2^-24 (1 + luma) relative).
+TEST(CpuResolve, ToneWeightedBlendsStayBoundedForAnOutOfGamutHistory) {
+  const vec3 history(440.0f, -440.0f, 440.0f), current(1000.0f, 0.0f, 1000.0f);
+  ASSERT_LT(cpu::luma(history), -1.0f);
+  for (auto w : {spec::ToneWeight::Karis, spec::ToneWeight::InverseLuma, spec::ToneWeight::Log})
+    for (float alpha : {0.0f, 0.04f, 0.1f, 0.5f, 1.0f}) {
+      const vec3 r = cpu::toneWeightedBlend(history, current, alpha, w);
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_GE(r[k], 0.0f) << spec::enumToString(w) << " alpha " << alpha;
+        ASSERT_LE(r[k], 1000.0f * (1.0f + 1e-4f)) << spec::enumToString(w) << " alpha " << alpha;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace taa

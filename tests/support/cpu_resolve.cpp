@@ -69,6 +69,11 @@ float workingLuma(vec3 w, bool yCoCg) {
 }
 
 vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha, spec::ToneWeight weighting) {
+  if (weighting == spec::ToneWeight::None) return mix(history, current, alpha);
+  // As the shader: the weighted blends see the non-negative part of a colour, since a YCoCg
+  // box can hand back a history with luma <= -1.
+  history = glm::max(history, vec3(0.0f));
+  current = glm::max(current, vec3(0.0f));
   switch (weighting) {
     case spec::ToneWeight::Karis: {
       const float wc = alpha / (1.0f + luma(current));
@@ -82,9 +87,7 @@ vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha, spec::ToneWeight
       return t / std::max(1.0f - luma(t), 1.0f / kHalfMax);
     }
     case spec::ToneWeight::Log: {
-      const vec3 lc = glm::log(1.0f + glm::max(current, vec3(0.0f)));
-      const vec3 lh = glm::log(1.0f + glm::max(history, vec3(0.0f)));
-      return glm::exp(mix(lh, lc, alpha)) - 1.0f;
+      return glm::exp(mix(glm::log(1.0f + history), glm::log(1.0f + current), alpha)) - 1.0f;
     }
     case spec::ToneWeight::None:
       break;

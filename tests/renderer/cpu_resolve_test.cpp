@@ -202,6 +202,11 @@ TEST(CpuResolve, LottesAlphaStaysWithinAlphaMinAndAlphaMax) {
   // A stable pixel leans on history; a pixel that changed completely trusts the current frame.
   EXPECT_EQ(cpu::lottesAlpha(3.0f, 3.0f, aMin, aMax), aMin);
   EXPECT_FLOAT_EQ(cpu::lottesAlpha(0.0f, 2.0f, aMin, aMax), aMax);
+  // Lottes' weight is the squared similarity 1 - |dL| / max(L, 0.2): here 1 - 0.5 / 1.5.
+  const double s = 2.0 / 3.0;
+  EXPECT_NEAR(cpu::lottesAlpha(1.0f, 1.5f, aMin, aMax), aMax + (aMin - aMax) * s * s, 1e-7);
+  // Below 0.2 the floor keeps dark pixels from reading as completely changed.
+  EXPECT_NEAR(cpu::lottesAlpha(0.0f, 0.1f, aMin, aMax), aMax + (aMin - aMax) * 0.25, 1e-7);
   // In between, alpha grows with the relative luma difference.
   float previous = aMin;
   for (float h = 1.0f; h <= 2.0f; h += 0.0625f) {
@@ -215,6 +220,8 @@ TEST(CpuResolve, LottesAlphaStaysWithinAlphaMinAndAlphaMax) {
 TEST(CpuResolve, ReduceBlendNearClampRaisesAlphaTowardTheBoxEdge) {
   const float alpha = 0.1f, lo = 1.0f, hi = 3.0f;
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 2.0f, lo, hi), alpha);  // centre: unchanged
+  // Halfway from the centre to the edge, half of the extra alpha.
+  EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 1.5f, lo, hi), alpha + 0.25f * (1.0f - alpha));
   const float edge = alpha + 0.5f * (1.0f - alpha);
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, lo, lo, hi), edge);
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 5.0f, lo, hi), edge);      // beyond: as the edge

@@ -20,6 +20,13 @@ float workingLuma(vec3 w) { return kYCoCg ? w.x : luma(w); }
 // each sample by 1/(1+luma) so a single bright sample cannot dominate; inverse-luma
 // blends tonemapped colours and maps back; log blends log(1+c).
 vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha) {
+  if (kToneWeight == 0) return mix(history, current, alpha);
+  // The tone curves are defined for light. A YCoCg box's corners lie outside the RGB cube, so
+  // a rectified history can carry negative components, with shrink_chroma or a variance box
+  // even luma <= -1, where 1/(1+luma) changes sign or divides by zero and a dark pixel came
+  // out as a 65504 firefly. The weighted blends see the non-negative part only.
+  history = max(history, vec3(0.0));
+  current = max(current, vec3(0.0));
   if (kToneWeight == 1) {
     float wc = alpha / (1.0 + luma(current));
     float wh = (1.0 - alpha) / (1.0 + luma(history));
@@ -32,9 +39,7 @@ vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha) {
     // colours stay below it, so keep the blend there and bound the result.
     return t / max(1.0 - luma(t), 1.0 / kHalfMax);
   } else if (kToneWeight == 3) {
-    vec3 lc = log(1.0 + max(current, vec3(0.0)));
-    vec3 lh = log(1.0 + max(history, vec3(0.0)));
-    return exp(mix(lh, lc, alpha)) - 1.0;
+    return exp(mix(log(1.0 + history), log(1.0 + current), alpha)) - 1.0;
   }
   return mix(history, current, alpha);
 }

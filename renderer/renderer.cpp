@@ -49,6 +49,13 @@ GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
   return c;
 }
 
+PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
+  PassPlan p = planPasses(spec);
+  p.ids = p.ids || o.captureIds;
+  p.velocity = p.velocity || o.captureVelocity;
+  return p;
+}
+
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!plan.taa) return nullptr;
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
@@ -60,6 +67,7 @@ struct Renderer::State {
   vk::Context& ctx;
   const spec::CaseSpec& spec;
   const scene::Scene& scene;
+  RenderOptions options;
   GpuScene gpuScene;
   PassPlan plan;
   GBufferConfig config;
@@ -75,11 +83,11 @@ struct Renderer::State {
   std::vector<std::string> log;
   int nextFrame = 0;
 
-  State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions options)
-      : ctx(c), spec(s), scene(sc), gpuScene(c, sc), plan(planPasses(s)), config(gbufferConfig(s, plan)),
+  State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions o)
+      : ctx(c), spec(s), scene(sc), options(o), gpuScene(c, sc), plan(planWithCaptures(s, o)), config(gbufferConfig(s, plan)),
         targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
         post(c, s, plan, maxRenderSize(s)),
-        reference(options.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
+        reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
         instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                          sizeof(gpu::InstanceData),
@@ -180,10 +188,14 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
       record.reference = decodeTarget(vk::readImage(s.ctx, ref), ref.desc().format, rw, rw, rh);
       record.hasReference = true;
     }
+    const auto& o = s.options;
     if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
-    if (wants(s.spec, spec::AuxBuffer::Velocity)) record.aux.push_back({"velocity", read(s.targets.velocity)});
+    if (wants(s.spec, spec::AuxBuffer::Velocity) || o.captureVelocity)
+      record.aux.push_back({"velocity", read(s.targets.velocity)});
     if (wants(s.spec, spec::AuxBuffer::Normal)) record.aux.push_back({"normal", read(s.targets.normal)});
-    if (wants(s.spec, spec::AuxBuffer::MaterialId)) record.aux.push_back({"material_id", read(s.targets.ids)});
+    if (wants(s.spec, spec::AuxBuffer::MaterialId) || o.captureIds)
+      record.aux.push_back({"material_id", read(s.targets.ids)});
+    if (o.captureCurrent) record.aux.push_back({"current", read(resolveInput)});
   }
   return record;
 }

@@ -21,6 +21,11 @@ struct RenderOptions {
   // Render the supersampled reference beside every frame (costs reference.samples
   // extra scene renders per frame); its image is read back with the frame's images.
   bool reference = false;
+  // Read back, beside the output, buffers the harness's invariants examine: the
+  // resolve's input colour ("current"), the ids and the velocity targets.
+  bool captureCurrent = false;
+  bool captureIds = false;
+  bool captureVelocity = false;
 };
 
 class Renderer {

@@ -99,7 +99,7 @@ void main() {
   Current cur = currentSample(q, hi);
   vec3 taps[9];
   bool valid[9];
-  vec3 finiteSum = vec3(0.0);
+  vec3 finiteSum = vec3(0.0), centre = vec3(0.0);
   float finiteCount = 0.0;
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
@@ -108,12 +108,13 @@ void main() {
       valid[k] = !any(isnan(c));
       c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(kHalfMax));  // +Inf -> half max
       taps[k] = toWorking(c);
+      if (k == 4) centre = c;
       if (valid[k]) {
         finiteSum += c;
         finiteCount += 1.0;
       }
     }
-  vec3 current = valid[4] ? fromWorking(taps[4]) : (finiteCount > 0.0 ? finiteSum / finiteCount : vec3(0.0));
+  vec3 current = valid[4] ? centre : (finiteCount > 0.0 ? finiteSum / finiteCount : vec3(0.0));
 
   if (!kHasHistory) {
     writeOutput(q, current, 1.0, 0.0, vec2(0.0));

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "case/case_error.h"
+#include "case/validate_taa.h"
 
 namespace taa::cases {
 
@@ -133,6 +134,14 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   validateCamera(p, spec.camera, frames);
   validateMovers(p, spec.movers, present);
   validateJitter(p, spec.jitter, present);
+  for (const auto& [key, msg] : taaProblems(spec, present)) p.add(key, msg);
+  if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only && spec.taa.mode == TaaMode::Off)
+    p.add("material.lod_bias", "applies only with TAA (material.lod_bias_taa_only) and taa.mode is off; enable TAA "
+                               "or set lod_bias_taa_only to false");
+  if (present.count("debug.scale") && spec.debug.output == DebugOutput::None)
+    p.add("debug.scale", "has no effect unless debug.output is set; set it or remove the key");
+  if (spec.debug.output != DebugOutput::None && spec.taa.mode != TaaMode::Full)
+    p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full");
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)

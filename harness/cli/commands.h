@@ -13,5 +13,7 @@ int dispatch(int argc, char** argv);
 int cmdValidate(const Args& args);
 int cmdTechniques(const Args& args);
 int cmdRender(const Args& args);
+int cmdRun(const Args& args);
+int cmdBless(const Args& args);
 
 }  // namespace taa::cli

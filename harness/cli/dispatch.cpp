@@ -24,6 +24,7 @@ const std::map<std::string, Command>& commands() {
       {"validate", {cmdValidate, "check case files; --print shows every value in force"}},
       {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
+
   };
   return table;
 }
@@ -66,6 +67,12 @@ int dispatch(int argc, char** argv) {
     std::cerr << "environment: " << e.what() << "\n";
     return kEnvironment;
   } catch (const ImageIoError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kEnvironment;
+  } catch (const vk::VulkanError& e) {
+    std::cerr << "vulkan: " << e.what() << "\n";
+    return kEnvironment;
+  } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kEnvironment;
   }

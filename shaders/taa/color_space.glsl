@@ -12,8 +12,31 @@ vec3 rgbToYCoCg(vec3 c) {
 
 vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
-vec3 toWorking(vec3 rgb) { return kYCoCg ? rgbToYCoCg(rgb) : rgb; }
-vec3 fromWorking(vec3 w) { return kYCoCg ? yCoCgToRgb(w) : w; }
+// inverse_luma and log run the whole resolve (neighbourhood box, rectification and
+// blend) in a compressed domain, so that one bright sample cannot stretch the box and
+// let a dark history through; Karis keeps the box linear and weights only the blend.
+// (A blend alone in c/(1+luma) space equals Karis' weighted average exactly, so the
+// domain is what tells inverse_luma apart.)
+vec3 toDomain(vec3 c) {
+  if (kToneWeight == 2) {
+    c = max(c, vec3(0.0));
+    return c / (1.0 + luma(c));
+  }
+  if (kToneWeight == 3) return log(1.0 + max(c, vec3(0.0)));
+  return c;
+}
+vec3 fromDomain(vec3 d) {
+  // c / (1 - luma) has a pole at luma 1: a box corner may lie beyond it; bound the result.
+  if (kToneWeight == 2) return d / max(1.0 - luma(d), 1.0 / kHalfMax);
+  if (kToneWeight == 3) return exp(d) - 1.0;
+  return d;
+}
+
+vec3 toWorking(vec3 rgb) {
+  vec3 d = toDomain(rgb);
+  return kYCoCg ? rgbToYCoCg(d) : d;
+}
+vec3 fromWorking(vec3 w) { return fromDomain(kYCoCg ? yCoCgToRgb(w) : w); }
 float workingLuma(vec3 w) { return kYCoCg ? w.x : luma(w); }
 
 // Blends history toward current by alpha in the space the case chose. Karis weights
@@ -31,15 +54,8 @@ vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha) {
     float wc = alpha / (1.0 + luma(current));
     float wh = (1.0 - alpha) / (1.0 + luma(history));
     return (current * wc + history * wh) / max(wc + wh, 1e-20);
-  } else if (kToneWeight == 2) {
-    vec3 tc = current / (1.0 + luma(current));
-    vec3 th = history / (1.0 + luma(history));
-    vec3 t = mix(th, tc, alpha);
-    // The inverse c / (1 - luma) has a pole at luma 1; tonemapped lumas of finite
-    // colours stay below it, so keep the blend there and bound the result.
-    return t / max(1.0 - luma(t), 1.0 / kHalfMax);
-  } else if (kToneWeight == 3) {
-    return exp(mix(log(1.0 + history), log(1.0 + current), alpha)) - 1.0;
+  } else if (kToneWeight == 2 || kToneWeight == 3) {
+    return fromDomain(mix(toDomain(history), toDomain(current), alpha));
   }
   return mix(history, current, alpha);
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "support/cpu_resolve.h"
 #include "support/gpu.h"
@@ -80,6 +81,47 @@ TEST(ResolveToneWeighting, NegativeLumaHistoryDoesNotBecomeAFirefly) {
     EXPECT_LE(maxChannel(gpu.output), 1000.0f) << spec::enumToString(w);
     EXPECT_LE(maxChannel(cpuOut), 1000.0f) << spec::enumToString(w);
   }
+}
+
+}  // namespace
+}  // namespace taa
+
+namespace taa {
+namespace {
+
+// A blend alone in c/(1+luma) space equals Karis' weighted average exactly; what tells
+// inverse_luma and log apart is that their box and clipping run in the compressed domain.
+TEST(ResolveToneWeighting, InverseLumaAndLogClipInTheirDomainSoTheyDifferFromKaris) {
+  Image current(24, 16, 4, 1.0f), history(24, 16, 4, 1.0f);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 24; ++x)
+      for (int c = 0; c < 3; ++c) {
+        // HDR detail with occasional highlights in the current frame, a dull history.
+        const uint32_t h = uint32_t(x * 73856093) ^ uint32_t(y * 19349663) ^ uint32_t(c * 83492791);
+        current.at(x, y, c) = (h % 7 == 0) ? 40.0f : 0.05f + float(h % 97) / 40.0f;
+        history.at(x, y, c) = 0.3f + float((h >> 8) % 13) / 10.0f;
+      }
+  const test::cpu::CpuResolveInputs in{current, history, glm::vec2(0.25f, -0.5f)};
+  spec::TaaSpec taa;
+  taa.rectify = spec::Rectify::Clip;
+  taa.color_space = spec::ColorSpace::Rgb;
+  taa.history_filter = spec::HistoryFilter::Bilinear;
+  taa.velocity_sampling = spec::VelocitySampling::Pixel;
+  auto resolveWith = [&](spec::ToneWeight w) {
+    taa.tonemap_weighting = w;
+    return test::cpu::cpuResolve(in, taa);
+  };
+  const Image karis = resolveWith(spec::ToneWeight::Karis);
+  const Image inverse = resolveWith(spec::ToneWeight::InverseLuma);
+  const Image logDomain = resolveWith(spec::ToneWeight::Log);
+  auto shareDiffering = [](const Image& a, const Image& b) {
+    int n = 0;
+    for (size_t i = 0; i < a.data.size(); ++i) n += std::fabs(a.data[i] - b.data[i]) > 1e-3f * (1.0f + std::fabs(a.data[i]));
+    return double(n) / double(a.data.size());
+  };
+  EXPECT_GT(shareDiffering(karis, inverse), 0.05);
+  EXPECT_GT(shareDiffering(karis, logDomain), 0.05);
+  EXPECT_GT(shareDiffering(inverse, logDomain), 0.05);
 }
 
 }  // namespace

@@ -58,11 +58,27 @@ vec3 yCoCgToRgb(vec3 c) {
   return {c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z};
 }
 
-vec3 toWorking(vec3 rgb, bool yCoCg) {
-  return yCoCg ? rgbToYCoCg(rgb) : rgb;
+// As the shader: inverse_luma and log run box, rectification and blend in their domain.
+vec3 toDomain(vec3 c, spec::ToneWeight weighting) {
+  if (weighting == spec::ToneWeight::InverseLuma) {
+    c = glm::max(c, vec3(0.0f));
+    return c / (1.0f + luma(c));
+  }
+  if (weighting == spec::ToneWeight::Log) return glm::log(1.0f + glm::max(c, vec3(0.0f)));
+  return c;
 }
-vec3 fromWorking(vec3 w, bool yCoCg) {
-  return yCoCg ? yCoCgToRgb(w) : w;
+vec3 fromDomain(vec3 d, spec::ToneWeight weighting) {
+  if (weighting == spec::ToneWeight::InverseLuma) return d / std::max(1.0f - luma(d), 1.0f / kHalfMax);
+  if (weighting == spec::ToneWeight::Log) return glm::exp(d) - 1.0f;
+  return d;
+}
+
+vec3 toWorking(vec3 rgb, bool yCoCg, spec::ToneWeight weighting) {
+  const vec3 d = toDomain(rgb, weighting);
+  return yCoCg ? rgbToYCoCg(d) : d;
+}
+vec3 fromWorking(vec3 w, bool yCoCg, spec::ToneWeight weighting) {
+  return fromDomain(yCoCg ? yCoCgToRgb(w) : w, weighting);
 }
 float workingLuma(vec3 w, bool yCoCg) {
   return yCoCg ? w.x : luma(w);
@@ -80,15 +96,9 @@ vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha, spec::ToneWeight
       const float wh = (1.0f - alpha) / (1.0f + luma(history));
       return (current * wc + history * wh) / std::max(wc + wh, 1e-20f);
     }
-    case spec::ToneWeight::InverseLuma: {
-      const vec3 tc = current / (1.0f + luma(current));
-      const vec3 th = history / (1.0f + luma(history));
-      const vec3 t = mix(th, tc, alpha);
-      return t / std::max(1.0f - luma(t), 1.0f / kHalfMax);
-    }
-    case spec::ToneWeight::Log: {
-      return glm::exp(mix(glm::log(1.0f + history), glm::log(1.0f + current), alpha)) - 1.0f;
-    }
+    case spec::ToneWeight::InverseLuma:
+    case spec::ToneWeight::Log:
+      return fromDomain(mix(toDomain(history, weighting), toDomain(current, weighting), alpha), weighting);
     case spec::ToneWeight::None:
       break;
   }
@@ -309,7 +319,7 @@ Image cpuResolve(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
       const ivec2 q(x, y);
       const vec2 uv = (vec2(q) + 0.5f) * inv;
       Neighborhood n;
-      vec3 finiteSum(0.0f);
+      vec3 finiteSum(0.0f), centre(0.0f);
       float finiteCount = 0.0f;
       for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
@@ -318,13 +328,14 @@ Image cpuResolve(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
           n.valid[k] = !(std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z));
           for (int ch = 0; ch < 3; ++ch)
             c[ch] = std::isnan(c[ch]) ? 0.0f : std::clamp(c[ch], 0.0f, kHalfMax);
-          n.taps[k] = toWorking(c, yCoCg);
+          n.taps[k] = toWorking(c, yCoCg, taa.tonemap_weighting);
+          if (k == 4) centre = c;
           if (n.valid[k]) {
             finiteSum += c;
             finiteCount += 1.0f;
           }
         }
-      const vec3 current = n.valid[4] ? fromWorking(n.taps[4], yCoCg)
+      const vec3 current = n.valid[4] ? centre
                                       : (finiteCount > 0.0f ? finiteSum / finiteCount : vec3(0.0f));
 
       // reprojectVelocity: the velocity is in render pixels; render size == output size here.
@@ -335,13 +346,13 @@ Image cpuResolve(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
       prevUv = glm::clamp(prevUv, vec2(0.0f), vec2(1.0f));
 
       const vec3 history = sampleHistory(in.history, prevUv, taa.history_filter);
-      const vec3 wHistory = toWorking(history, yCoCg);
-      const Box box = neighborhoodBox(n, toWorking(current, yCoCg), taa);
+      const vec3 wHistory = toWorking(history, yCoCg, taa.tonemap_weighting);
+      const Box box = neighborhoodBox(n, toWorking(current, yCoCg, taa.tonemap_weighting), taa);
       const vec3 wRectified = rectifyHistory(wHistory, box, taa.rectify);
 
       float alpha = taa.alpha;
       if (taa.luma_weight)
-        alpha = lottesAlpha(luma(current), luma(fromWorking(wRectified, yCoCg)), taa.alpha_min,
+        alpha = lottesAlpha(luma(current), luma(fromWorking(wRectified, yCoCg, taa.tonemap_weighting)), taa.alpha_min,
                             taa.alpha_max);
       if (taa.reduce_blend_near_clamp)
         alpha = reduceBlendNearClamp(alpha, workingLuma(wHistory, yCoCg),
@@ -351,7 +362,7 @@ Image cpuResolve(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
       if (rejected) alpha = taa.rejection_alpha;
 
       const vec3 result = boundColor(
-          toneWeightedBlend(fromWorking(wRectified, yCoCg), current, alpha, taa.tonemap_weighting));
+          toneWeightedBlend(fromWorking(wRectified, yCoCg, taa.tonemap_weighting), current, alpha, taa.tonemap_weighting));
       for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = result[ch];
     }
   return out;

@@ -21,8 +21,10 @@ inline constexpr float kHalfMax = 65504.0f;
 float luma(glm::vec3 rgb);
 glm::vec3 rgbToYCoCg(glm::vec3 rgb);
 glm::vec3 yCoCgToRgb(glm::vec3 c);
-glm::vec3 toWorking(glm::vec3 rgb, bool yCoCg);
-glm::vec3 fromWorking(glm::vec3 w, bool yCoCg);
+// The resolve's working space: the tone domain of inverse_luma / log (identity for
+// none and Karis), then YCoCg or RGB.
+glm::vec3 toWorking(glm::vec3 rgb, bool yCoCg, spec::ToneWeight weighting = spec::ToneWeight::None);
+glm::vec3 fromWorking(glm::vec3 w, bool yCoCg, spec::ToneWeight weighting = spec::ToneWeight::None);
 float workingLuma(glm::vec3 w, bool yCoCg);
 // Blends history toward current by alpha (the current sample's weight).
 glm::vec3 toneWeightedBlend(glm::vec3 history, glm::vec3 current, float alpha,

@@ -1,0 +1,74 @@
+#include "case/validate_taa.h"
+
+namespace taa::cases {
+
+namespace {
+
+using namespace spec;
+
+class Rules {
+ public:
+  Rules(const std::set<std::string>& present) : present_(present) {}
+  bool set(const std::string& key) const { return present_.count(key) > 0; }
+  void add(const std::string& key, const std::string& msg) { out.emplace_back(key, msg); }
+  // `key` only means something when `condition` holds.
+  void needs(const std::string& key, bool condition, const std::string& what) {
+    if (set(key) && !condition) add(key, "has no effect unless " + what + "; set that or remove the key");
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+
+ private:
+  const std::set<std::string>& present_;
+};
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, const std::set<std::string>& present) {
+  Rules r(present);
+  const auto& t = s.taa;
+  const bool full = t.mode == TaaMode::Full;
+  const bool blends = t.mode == TaaMode::Basic || full;
+  const bool resamples = s.render.upsample != 1.0f || !s.render.scale_schedule.empty();
+  if (resamples && (t.mode == TaaMode::Off || t.mode == TaaMode::PassThrough))
+    r.add("taa.mode", std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
+                                  "output size; '") + enumToString(t.mode) + "' cannot: use basic or full");
+
+  r.needs("taa.alpha", blends, "taa.mode is basic or full");
+  r.needs("taa.tonemap_weighting", blends, "taa.mode is basic or full");
+  for (const char* key : {"taa.use_velocity", "taa.velocity_sampling", "taa.history_filter", "taa.reject_offscreen",
+                          "taa.depth_culling", "taa.consistency", "taa.anti_ghosting", "taa.rejection_alpha",
+                          "taa.rectify", "taa.variance_clip", "taa.shaped_neighborhood", "taa.color_space",
+                          "taa.shrink_chroma", "taa.luma_weight", "taa.velocity_alpha",
+                          "taa.reduce_blend_near_clamp", "taa.velocity_in_alpha"})
+    r.needs(key, full, "taa.mode is full");
+  if (!full) return r.out;
+
+  r.needs("taa.depth_threshold", t.depth_culling, "taa.depth_culling is true");
+  r.needs("taa.consistency_depth", t.consistency, "taa.consistency is true");
+  r.needs("taa.consistency_normal", t.consistency, "taa.consistency is true");
+  if (t.consistency && r.set("taa.history_filter"))
+    r.add("taa.history_filter", "taa.consistency resamples the history tap by tap (2x2, then 3x3); a history filter "
+                                "cannot apply as well: remove one of them");
+  if (t.use_velocity == UseVelocity::Off && t.velocity_sampling == VelocitySampling::Longest3x3)
+    r.add("taa.velocity_sampling", "longest3x3 picks a velocity, but taa.use_velocity is off; use pixel or "
+                                   "closest3x3 (which picks the nearest depth), or turn velocity on");
+  r.needs("taa.variance_gamma", t.variance_clip, "taa.variance_clip is true");
+  const bool rectifies = t.rectify != Rectify::None;
+  r.needs("taa.variance_clip", rectifies, "taa.rectify is clamp or clip");
+  r.needs("taa.shaped_neighborhood", rectifies, "taa.rectify is clamp or clip");
+  r.needs("taa.shrink_chroma", rectifies && t.color_space == ColorSpace::YCoCg,
+          "taa.rectify is clamp or clip and taa.color_space is ycocg");
+  r.needs("taa.alpha_min", t.luma_weight, "taa.luma_weight is true");
+  r.needs("taa.alpha_max", t.luma_weight, "taa.luma_weight is true");
+  if (t.luma_weight && t.alpha_min > t.alpha_max)
+    r.add("taa.alpha_min", "alpha_min must not exceed alpha_max");
+  if (t.luma_weight && r.set("taa.alpha"))
+    r.add("taa.alpha", "taa.luma_weight chooses alpha per pixel within [alpha_min, alpha_max]; remove taa.alpha");
+  r.needs("taa.velocity_alpha_px", t.velocity_alpha, "taa.velocity_alpha is true");
+  r.needs("taa.reduce_blend_near_clamp", rectifies, "taa.rectify is clamp or clip");
+  if (t.anti_ghosting && s.movers.empty())
+    r.add("taa.anti_ghosting", "dynamic anti-ghosting acts on movers only, and the case has none");
+  return r.out;
+}
+
+}  // namespace taa::cases

@@ -1,0 +1,19 @@
+// Cross-key rules of the temporal resolve: a technique's parameter set without the
+// technique, or a combination the resolve cannot honour, is an error rather than a
+// setting silently ignored.
+#pragma once
+
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "spec/case_spec.h"
+
+namespace taa::cases {
+
+// (key path, message with the fix) for every violated rule.
+std::vector<std::pair<std::string, std::string>> taaProblems(const spec::CaseSpec& spec,
+                                                              const std::set<std::string>& present);
+
+}  // namespace taa::cases

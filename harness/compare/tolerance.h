@@ -1,0 +1,30 @@
+// Comparing a frame with its golden when the environment differs: every metric the
+// case's tolerances bound, and the violated bounds as readable lines.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "run/results.h"
+#include "spec/checks_spec.h"
+
+namespace taa::compare {
+
+struct Measured {
+  run::ImageMetrics metrics;
+  Image errorMap;  // FLIP error per pixel, for the heatmap and the worst region
+};
+
+// Linear metrics on RGB with `pixelThreshold` as the per-pixel "over" bound; FLIP on
+// both images tonemapped as the PNGs show them.
+Measured measureAgainstGolden(const Image& golden, const Image& actual, float pixelThreshold);
+
+// "rmse 0.021 > 0.01"-style lines, one per bound the metrics exceed.
+std::vector<std::string> toleranceViolations(const run::ImageMetrics& m, const spec::ToleranceSpec& t);
+
+// The value of a named metric ("max_abs", "rmse", "psnr", "share_over", "flip_mean",
+// "flip_p99"); throws std::invalid_argument listing the names for anything else.
+double metricByName(const run::ImageMetrics& m, const std::string& name);
+
+}  // namespace taa::compare

@@ -1,0 +1,70 @@
+#include "golden/golden_store.h"
+
+#include <fcntl.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "core/image_io.h"
+
+namespace taa::golden {
+
+namespace fs = std::filesystem;
+
+Image GoldenSet::load(const GoldenFrame& frame) const { return readExr(dir / frame.file); }
+
+std::optional<GoldenSet> loadGoldens(const fs::path& root, const std::string& caseName) {
+  const fs::path dir = root / caseName;
+  if (!fs::exists(dir / "manifest.json")) return std::nullopt;
+  return GoldenSet{dir, readManifest(dir / "manifest.json")};
+}
+
+namespace {
+
+void writeText(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+}
+
+// Leftovers of a bless that was killed before its exchange: never part of a set.
+void removeStale(const fs::path& root, const std::string& caseName) {
+  const std::string prefix = "." + caseName + ".bless-";
+  for (const auto& entry : fs::directory_iterator(root))
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) fs::remove_all(entry.path());
+}
+
+}  // namespace
+
+void replaceGoldens(const fs::path& root, const Manifest& manifest,
+                    const std::vector<std::pair<GoldenFrame, Image>>& frames) {
+  fs::create_directories(root);
+  removeStale(root, manifest.caseName);
+  const fs::path target = root / manifest.caseName;
+  const fs::path staging = root / ("." + manifest.caseName + ".bless-" + std::to_string(getpid()));
+  fs::create_directories(staging);
+  try {
+    for (const auto& [frame, image] : frames) writeExr(staging / frame.file, image);
+    writeText(staging / "manifest.json", manifest.toJson().dump(2) + "\n");
+  } catch (...) {
+    fs::remove_all(staging);
+    throw;
+  }
+  if (fs::exists(target)) {
+    if (renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {
+      const std::string why = std::strerror(errno);
+      fs::remove_all(staging);
+      throw std::runtime_error("cannot swap " + staging.string() + " with " + target.string() + ": " + why);
+    }
+    fs::remove_all(staging);  // now holds the previous set
+  } else {
+    fs::rename(staging, target);
+  }
+}
+
+}  // namespace taa::golden

@@ -1,0 +1,34 @@
+// Runs one case end to end: render (and the reference when its checks need one),
+// feed the invariants, compare checked frames with goldens, write the images the
+// report shows. Never throws for a failed check; throws for bad input or a broken
+// environment.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "case/case_loader.h"
+#include "core/image.h"
+#include "run/results.h"
+#include "vk/context.h"
+
+namespace taa::run {
+
+struct RunOptions {
+  std::filesystem::path outDir;       // case outputs go to outDir/NAME/
+  std::filesystem::path goldensRoot;  // empty: the folder goldens/ beside the case's folder
+  bool writeImages = true;            // PNG/EXR of checked frames, diffs and crops
+  // Called before each frame with (frame, frame count); for terminal progress.
+  std::function<void(int, int)> progress;
+};
+
+// Where a case's goldens live: goldens/ next to the folder holding the case file.
+std::filesystem::path defaultGoldensRoot(const std::filesystem::path& caseFile);
+
+// `outputs`, when given, receives the checked frames' images (bless writes them).
+CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunOptions& options,
+                   std::map<int, Image>* outputs = nullptr);
+
+}  // namespace taa::run

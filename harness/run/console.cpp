@@ -1,0 +1,74 @@
+#include "run/console.h"
+
+#include <cstdio>
+#include <string>
+
+namespace taa::run {
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), f, v);
+  return buf;
+}
+}  // namespace
+
+bool caseFailed(const CaseResult& c) { return c.status != CaseStatus::Pass; }
+
+void printCase(std::ostream& out, const CaseResult& c) {
+  for (const auto& f : c.frames) {
+    const bool ok = f.status == FrameStatus::Exact || f.status == FrameStatus::WithinTolerance;
+    out << (ok ? "PASS " : "FAIL ") << c.name << " frame " << f.frame << " golden ";
+    if (f.status == FrameStatus::Exact) {
+      out << "exact";
+    } else if (f.status == FrameStatus::MissingGolden) {
+      out << "missing";
+    } else {
+      out << (f.toleranceMode ? "tolerance" : "exact") << " rmse " << fmt("%.3g", f.metrics.rmse) << " flip_mean "
+          << fmt("%.3g", f.metrics.flipMean);
+    }
+    for (const auto& why : f.failures) out << "; " << why;
+    if (!ok && !f.images.diff.empty()) out << " (diff " << f.images.diff << ")";
+    out << "\n";
+  }
+  for (const auto& inv : c.invariants)
+    out << (inv.passed ? "PASS " : "FAIL ") << c.name << " invariant " << inv.name << ": " << inv.detail << "\n";
+  switch (c.status) {
+    case CaseStatus::Pass:
+      if (!c.message.empty()) out << "NOTE " << c.name << ": " << c.message << "; refresh with " << c.blessCommand << "\n";
+      break;
+    case CaseStatus::Stale:
+      out << "STALE " << c.name << ": " << c.message << "; if intended: " << c.blessCommand << "\n";
+      break;
+    case CaseStatus::NoGolden:
+      out << "FAIL " << c.name << ": " << c.message << ": " << c.blessCommand << "\n";
+      break;
+    case CaseStatus::Error:
+      out << "ERROR " << c.name << ": " << c.message << "\n";
+      break;
+    case CaseStatus::Fail:
+      if (!c.frames.empty() && c.status == CaseStatus::Fail && !c.blessCommand.empty())
+        out << "HINT " << c.name << ": if the change is intended, look at the report, then " << c.blessCommand
+            << "\n";
+      break;
+  }
+}
+
+void printSummary(std::ostream& out, const RunResults& r, double seconds) {
+  int pass = 0, checks = 0;
+  std::string failed;
+  for (const auto& c : r.cases) {
+    checks += int(c.frames.size() + c.invariants.size());
+    if (!caseFailed(c)) {
+      ++pass;
+    } else {
+      failed += (failed.empty() ? "" : ", ") + c.name + " (" + toString(c.status) + ")";
+    }
+  }
+  out << "summary: " << r.cases.size() << " cases, " << pass << " pass, " << (r.cases.size() - pass) << " fail; "
+      << checks << " checks; " << fmt("%.1f", seconds) << " s";
+  if (!failed.empty()) out << "; failing: " << failed;
+  out << "\n";
+}
+
+}  // namespace taa::run

@@ -15,5 +15,6 @@ int cmdTechniques(const Args& args);
 int cmdRender(const Args& args);
 int cmdRun(const Args& args);
 int cmdBless(const Args& args);
+int cmdNewCase(const Args& args);
 
 }  // namespace taa::cli

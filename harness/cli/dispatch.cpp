@@ -22,6 +22,7 @@ struct Command {
 const std::map<std::string, Command>& commands() {
   static const std::map<std::string, Command> table = {
       {"validate", {cmdValidate, "check case files; --print shows every value in force"}},
+      {"new-case", {cmdNewCase, "write a case for a glTF scene with a camera that frames its bounds"}},
       {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
 

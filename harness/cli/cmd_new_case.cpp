@@ -1,0 +1,89 @@
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "case/case_loader.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene.h"
+
+namespace taa::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* kUsage =
+    "taa-harness new-case --scene cases/scenes/NAME.gltf --name NAME [--cases DIR] [--frames N]\n"
+    "  writes DIR/NAME.json (default DIR: the cases/ folder holding the scene) with a camera that\n"
+    "  frames the scene's bounds; then look at `taa-harness render` output and bless it.";
+
+// The scene must live under the cases folder: case files may only reference assets
+// inside their own folder tree (portable, and nothing else on disk is read).
+fs::path relativeInside(const fs::path& scene, const fs::path& casesDir) {
+  const fs::path rel = fs::relative(fs::weakly_canonical(scene), fs::weakly_canonical(casesDir));
+  if (rel.empty() || *rel.begin() == "..")
+    throw UsageError(scene.string() + " is not inside " + casesDir.string() +
+                     "; move it under " + (casesDir / "scenes").string() + " (cases reference assets below them)");
+  return rel;
+}
+}  // namespace
+
+int cmdNewCase(const Args& args) {
+  const auto a = parseArgs(args, {}, {"--scene", "--name", "--cases", "--frames"}, kUsage);
+  if (!a.values.count("--scene") || !a.values.count("--name") || !a.positional.empty())
+    throw UsageError(std::string("usage: ") + kUsage);
+  const fs::path scenePath = a.value("--scene");
+  const std::string name = a.value("--name");
+  if (name.empty() || name.find_first_of("/\\. ") != std::string::npos)
+    throw UsageError("--name '" + name + "': use letters, digits, '-' and '_' (it becomes NAME.json and goldens/NAME)");
+  fs::path casesDir = a.value("--cases");
+  if (casesDir.empty()) {
+    // Default: the nearest ancestor folder named "cases".
+    for (fs::path p = fs::absolute(scenePath).parent_path(); !p.empty() && p != p.root_path(); p = p.parent_path())
+      if (p.filename() == "cases") {
+        casesDir = p;
+        break;
+      }
+    if (casesDir.empty()) throw UsageError(scenePath.string() + " is not under a cases/ folder; pass --cases DIR");
+  }
+  int frames = 16;
+  if (a.values.count("--frames")) frames = std::stoi(a.value("--frames"));
+  const fs::path rel = relativeInside(scenePath, casesDir);
+  const fs::path out = casesDir / (name + ".json");
+  if (fs::exists(out)) throw UsageError(out.string() + " exists; choose another --name or delete it");
+
+  scene::Scene scene;
+  scene.models.push_back(scene::loadGltf(scenePath, scene));
+  glm::vec3 lo, hi;
+  scene::modelBounds(scene, 0, lo, hi);
+  const glm::vec3 centre = (lo + hi) * 0.5f;
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+  // Far enough that the bounding sphere fits the 60-degree vertical field of view,
+  // seen from the front and a little above.
+  const float distance = radius / std::sin(glm::radians(30.0f)) * 1.15f;
+  const glm::vec3 position = centre + glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)) * distance;
+  nlohmann::json j = {
+      {"description", "Scene " + rel.string() + " framed by its bounds (written by taa-harness new-case)"},
+      {"scene", {{"builtin", "none"}, {"gltf", rel.generic_string()}}},
+      {"camera",
+       {{"position", {position.x, position.y, position.z}},
+        {"target", {centre.x, centre.y, centre.z}},
+        {"near", std::max(radius * 0.01f, 1e-4f)},
+        {"far", distance + radius * 4.0f}}},
+      {"script", {{"frames", frames}}},
+      {"output", {{"frames", {frames - 1}}}}};
+  const std::string text = j.dump(2) + "\n";
+  cases::parseCase(text, out);  // what we write must validate
+  std::ofstream(out) << text;
+  std::cout << "wrote " << out.string() << "\nnext: taa-harness render " << out.string()
+            << " --out out/preview   (look at the PNGs), then taa-harness bless " << out.string()
+            << " --reason \"new scene\"\n";
+  return kPass;
+}
+
+}  // namespace taa::cli

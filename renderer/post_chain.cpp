@@ -14,7 +14,8 @@ namespace {
 
 std::string describeImage(const vk::Image& image) {
   return "buffer " + image.desc().name + " " + std::to_string(image.desc().width) + "x" +
-         std::to_string(image.desc().height) + " (" + std::to_string(image.bytes() / 1024) + " KiB)";
+         std::to_string(image.desc().height) + " (" + std::to_string(image.bytes() / 1024) +
+         " KiB)";
 }
 
 }  // namespace
@@ -29,7 +30,8 @@ struct PostChain::Passes {
   vk::Image antialiased;  // FXAA output
 };
 
-PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan, glm::ivec2 maxRenderSize)
+PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan,
+                     glm::ivec2 maxRenderSize)
     : p_(std::make_unique<Passes>()) {
   const auto& post = spec.post;
   if (plan.motionBlur) {
@@ -42,10 +44,12 @@ PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPla
   }
   // After the resolve the input is its output (output size); without a resolve it is
   // the render-size colour, allocated at the largest render size.
-  const glm::ivec2 afterSize = plan.taa ? glm::ivec2(spec.render.width, spec.render.height) : maxRenderSize;
+  const glm::ivec2 afterSize =
+      plan.taa ? glm::ivec2(spec.render.width, spec.render.height) : maxRenderSize;
   if (plan.sharpen) p_->sharpen = std::make_unique<SharpenPass>(ctx, post.sharpen_amount);
   if (plan.cas) p_->cas = std::make_unique<CasPass>(ctx, post.sharpen_amount);
-  if (plan.sharpen || plan.cas) p_->sharpened = makePostImage(ctx, plan.cas ? "cas" : "sharpen", afterSize);
+  if (plan.sharpen || plan.cas)
+    p_->sharpened = makePostImage(ctx, plan.cas ? "cas" : "sharpen", afterSize);
   if (plan.fxaa) {
     p_->fxaa = std::make_unique<FxaaPass>(ctx);
     p_->antialiased = makePostImage(ctx, "fxaa", afterSize);
@@ -54,17 +58,18 @@ PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPla
 
 PostChain::~PostChain() = default;
 
-vk::Image& PostChain::beforeResolve(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& state,
-                                    GBufferTargets& targets) {
+vk::Image& PostChain::beforeResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
+                                    const script::FrameState& state, GBufferTargets& targets) {
   if (!p_->motionBlur) return targets.color;
   timer.begin(cmd, "motion_blur");
-  p_->motionBlur->record(cmd, targets.color, targets.velocity, targets.depth, p_->blurred, state.renderSize);
+  p_->motionBlur->record(cmd, targets.color, targets.velocity, targets.depth, p_->blurred,
+                         state.renderSize);
   timer.end(cmd);
   return p_->blurred;
 }
 
-vk::Image& PostChain::afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState&,
-                                   vk::Image& input, glm::ivec2 size) {
+vk::Image& PostChain::afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
+                                   const script::FrameState&, vk::Image& input, glm::ivec2 size) {
   vk::Image* current = &input;
   if (p_->sharpen) {
     timer.begin(cmd, "sharpen");

@@ -26,11 +26,14 @@ layout(binding = POST_BINDING_INPUT) uniform sampler2D inputTex;
 layout(binding = POST_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
 
 const int kSearchSteps = 12;
-const float kStep[kSearchSteps] = float[](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 2.0, 4.0, 8.0);
+const float kStep[kSearchSteps] =
+    float[](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 2.0, 4.0, 8.0);
 
 ivec2 gHi;
 
-vec3 tonemappedAt(ivec2 q) { return tonemap(scrub(texelFetch(inputTex, clamp(q, ivec2(0), gHi), 0).rgb)); }
+vec3 tonemappedAt(ivec2 q) {
+  return tonemap(scrub(texelFetch(inputTex, clamp(q, ivec2(0), gHi), 0).rgb));
+}
 float lumaAt(ivec2 q) { return sqrt(dot(tonemappedAt(q), vec3(0.299, 0.587, 0.114))); }
 
 // Bilinear interpolation at `pos` (pixel units, centres at +0.5), done by hand so
@@ -39,8 +42,8 @@ float lumaBilinear(vec2 pos) {
   vec2 f = pos - 0.5;
   ivec2 i = ivec2(floor(f));
   vec2 t = f - floor(f);
-  return mix(mix(lumaAt(i), lumaAt(i + ivec2(1, 0)), t.x), mix(lumaAt(i + ivec2(0, 1)), lumaAt(i + ivec2(1, 1)), t.x),
-             t.y);
+  return mix(mix(lumaAt(i), lumaAt(i + ivec2(1, 0)), t.x),
+             mix(lumaAt(i + ivec2(0, 1)), lumaAt(i + ivec2(1, 1)), t.x), t.y);
 }
 
 vec3 tonemappedBilinear(vec2 pos) {
@@ -74,8 +77,10 @@ void main() {
   float lSW = lumaAt(p + ivec2(-1, 1)), lSE = lumaAt(p + ivec2(1, 1));
 
   // Vertical second derivatives (columns W, M, E) measure a horizontal edge.
-  float edgeHorz = abs(lNW + lSW - 2.0 * lW) + 2.0 * abs(lN + lS - 2.0 * lM) + abs(lNE + lSE - 2.0 * lE);
-  float edgeVert = abs(lNW + lNE - 2.0 * lN) + 2.0 * abs(lW + lE - 2.0 * lM) + abs(lSW + lSE - 2.0 * lS);
+  float edgeHorz =
+      abs(lNW + lSW - 2.0 * lW) + 2.0 * abs(lN + lS - 2.0 * lM) + abs(lNE + lSE - 2.0 * lE);
+  float edgeVert =
+      abs(lNW + lNE - 2.0 * lN) + 2.0 * abs(lW + lE - 2.0 * lM) + abs(lSW + lSE - 2.0 * lS);
   bool horzSpan = edgeHorz >= edgeVert;
 
   // Sub-pixel aliasing: how far the pixel stands out of its 3x3 lowpass.

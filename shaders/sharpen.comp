@@ -23,8 +23,8 @@ void main() {
   ivec2 hi = size - 1;
   vec4 centre = texelFetch(inputTex, p, 0);
   vec3 c = scrub(centre.rgb);
-  vec3 laplacian = 4.0 * c - tap(p + ivec2(0, -1), hi) - tap(p + ivec2(0, 1), hi) - tap(p + ivec2(1, 0), hi) -
-                   tap(p + ivec2(-1, 0), hi);
+  vec3 laplacian = 4.0 * c - tap(p + ivec2(0, -1), hi) - tap(p + ivec2(0, 1), hi) -
+                   tap(p + ivec2(1, 0), hi) - tap(p + ivec2(-1, 0), hi);
   vec3 result = c + pc.params.x * 0.25 * laplacian;
   imageStore(outImage, p, vec4(clamp(result, vec3(0.0), vec3(kHalfMax)), centre.a));
 }

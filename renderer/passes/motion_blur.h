@@ -24,8 +24,8 @@ class MotionBlurPass {
 
   // Blurs the top-left `size` pixels of `color` along `velocity` (RG, render pixels,
   // current minus previous position) into `output`; `depth` is reversed Z.
-  void record(VkCommandBuffer cmd, vk::Image& color, vk::Image& velocity, vk::Image& depth, vk::Image& output,
-              glm::ivec2 size);
+  void record(VkCommandBuffer cmd, vk::Image& color, vk::Image& velocity, vk::Image& depth,
+              vk::Image& output, glm::ivec2 size);
   std::string describe() const;
 
  private:

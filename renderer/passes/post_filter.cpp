@@ -12,7 +12,8 @@ vk::Image makePostImage(vk::Context& ctx, const std::string& name, glm::ivec2 si
   d.width = uint32_t(size.x);
   d.height = uint32_t(size.y);
   d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-  d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  d.usage =
+      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   return vk::Image(ctx, d);
 }
 
@@ -24,13 +25,18 @@ gpu::PostPush makePostPush(glm::ivec2 size, glm::vec4 params) {
 }
 
 void requireCovers(const vk::Image& image, glm::ivec2 size, const char* pass) {
-  if (size.x < 1 || size.y < 1 || uint32_t(size.x) > image.desc().width || uint32_t(size.y) > image.desc().height)
-    throw std::logic_error(std::string(pass) + ": region " + std::to_string(size.x) + "x" + std::to_string(size.y) +
-                           " does not fit image '" + image.desc().name + "'");
+  if (size.x < 1 || size.y < 1 || uint32_t(size.x) > image.desc().width ||
+      uint32_t(size.y) > image.desc().height)
+    throw std::logic_error(std::string(pass) + ": region " + std::to_string(size.x) + "x" +
+                           std::to_string(size.y) + " does not fit image '" + image.desc().name +
+                           "'");
 }
 
 PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params)
-    : ctx_(ctx), name_(shader), params_(params), point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+    : ctx_(ctx),
+      name_(shader),
+      params_(params),
+      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   std::vector<VkDescriptorType> bindings(POST_BINDING_COUNT);
   bindings[POST_BINDING_INPUT] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   bindings[POST_BINDING_OUTPUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;

@@ -40,11 +40,8 @@ std::vector<std::string> PassPlan::describe() const {
   std::vector<std::string> out;
   out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
-  if (motionBlur) out.push_back("pass motion_blur");
   if (taa) out.push_back("pass taa_resolve");
-  if (sharpen) out.push_back("pass sharpen");
-  if (cas) out.push_back("pass cas");
-  if (fxaa) out.push_back("pass fxaa");
+  // The post chain lists its own passes with their settings.
   return out;
 }
 

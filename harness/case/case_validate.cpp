@@ -116,6 +116,33 @@ void validateRender(Problems& p, RenderSpec& r) {
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
 }
 
+// Post passes: settings that would silently do nothing are errors, and velocity in
+// alpha only holds together when motion blur writes the speed and a full resolve
+// reads it in place of the velocity buffer.
+void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  const auto& post = s.post;
+  if (present.count("post.sharpen_amount") && post.sharpen == Sharpen::None)
+    p.add("post.sharpen_amount",
+          "set but post.sharpen is none; set post.sharpen to gradient or cas, or remove it");
+  for (const char* key : {"post.motion_blur_samples", "post.motion_blur_scale"})
+    if (present.count(key) && !post.motion_blur)
+      p.add(key, "set but post.motion_blur is off; set post.motion_blur: true or remove it");
+  if (!s.taa.velocity_in_alpha) return;
+  const std::string key = "taa.velocity_in_alpha";
+  if (!post.motion_blur)
+    p.add(key, "the speed in alpha is written by motion blur; set post.motion_blur: true or "
+               "remove it");
+  if (s.taa.mode != TaaMode::Full)
+    p.add(key, "only the full resolve reads the speed (anything else would pass it on as "
+               "alpha); set taa.mode: full or remove it");
+  if (!s.taa.velocity_alpha)
+    p.add(key, "the speed only drives taa.velocity_alpha; set taa.velocity_alpha: true or "
+               "remove it");
+  if (s.taa.use_velocity != UseVelocity::Off)
+    p.add(key, "the resolve would read the velocity buffer anyway; set taa.use_velocity: off "
+               "or remove it");
+}
+
 }  // namespace
 
 void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
@@ -142,6 +169,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
     p.add("debug.scale", "has no effect unless debug.output is set; set it or remove the key");
   if (spec.debug.output != DebugOutput::None && spec.taa.mode != TaaMode::Full)
     p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full");
+  validatePost(p, spec, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)

@@ -142,7 +142,7 @@ void fields(V& v, TaaSpec& s) {
                "shaders/taa/blend_weight.glsl"});
   v.field("velocity_in_alpha", s.velocity_in_alpha,
           Meta{"motion blur packs the per-pixel speed into colour alpha, so the resolve reads colour only "
-               "for velocity_alpha (needs post.motion_blur, velocity_alpha and use_velocity off)",
+               "for velocity_alpha (needs post.motion_blur, mode full, velocity_alpha and use_velocity off)",
                "shaders/motion_blur.comp"});
   v.field("history_format", s.history_format, Meta{"precision of the history buffer", "renderer/passes/taa_resolve.cpp"});
 }
@@ -164,10 +164,15 @@ void fields(V& v, PostSpec& s) {
   v.field("sharpen", s.sharpen,
           Meta{"after the resolve: none, a 5-tap gradient sharpener, or Contrast Adaptive Sharpening",
                "shaders/sharpen.comp"});
-  v.field("sharpen_amount", s.sharpen_amount, Range<float>{0.0f, 1.0f}, Meta{"sharpening strength", "shaders/sharpen.comp"});
+  v.field("sharpen_amount", s.sharpen_amount, Range<float>{0.0f, 1.0f},
+          Meta{"sharpening strength: gradient adds amount x the 5-tap Laplacian / 4; cas moves the "
+               "negative lobe from -1/8 (0) to -1/5 (1)",
+               "shaders/sharpen.comp"});
   v.field("fxaa", s.fxaa, Meta{"FXAA on the output (alone, or after the resolve)", "shaders/fxaa.comp"});
   v.field("motion_blur", s.motion_blur,
-          Meta{"blur along velocity before the resolve", "shaders/motion_blur.comp"});
+          Meta{"blur along each pixel's own velocity before the resolve (centred box, depth-aware: "
+               "nearer surfaces do not bleed into the blur)",
+               "shaders/motion_blur.comp"});
   v.field("motion_blur_samples", s.motion_blur_samples, Range<int>{2, 64},
           Meta{"taps along the velocity vector", "shaders/motion_blur.comp"});
   v.field("motion_blur_scale", s.motion_blur_scale, Range<float>{0.0f, 4.0f},

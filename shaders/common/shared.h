@@ -122,7 +122,31 @@ TAA_BLOCK(TaaUniforms) {
   vec4 planes;            // near, far, consistency depth tolerance, consistency normal dot
 };
 
+// ---- Post passes around the resolve (motion_blur, sharpen, cas, fxaa .comp) ----
+// Each reads through a nearest clamp sampler (texelFetch only) and writes RGBA16F.
+#define MB_BINDING_COLOR 0      // render-size colour
+#define MB_BINDING_VELOCITY 1   // RG16F, render pixels, current minus previous position
+#define MB_BINDING_DEPTH 2      // reversed Z (1 near, 0 far)
+#define MB_BINDING_OUT 3
+#define MB_BINDING_COUNT 4
+
+#define MB_SPEC_SAMPLES 0            // taps along the velocity (post.motion_blur_samples)
+#define MB_SPEC_VELOCITY_IN_ALPHA 1  // alpha = speed in render pixels instead of 1
+
+#define POST_BINDING_INPUT 0   // sharpen, cas, fxaa: the image they filter
+#define POST_BINDING_OUTPUT 1
+#define POST_BINDING_COUNT 2
+
+// Push constants of every post pass: the valid region and the pass's parameters.
+TAA_BLOCK(PostPush) {
+  vec4 size;    // valid width, height, 1/width, 1/height (top-left of the images)
+  vec4 params;  // motion_blur: x scale, y depth tolerance; sharpen: x amount;
+                // cas: x negative-lobe peak (-1/8 .. -1/5); fxaa: x edge threshold,
+                // y edge threshold min, z subpixel amount
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(PostPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
 static_assert(sizeof(FrameUniforms) == 6 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);

@@ -1,0 +1,30 @@
+// FXAA 3.11 quality (shaders/fxaa.comp) with preset 39's search and the reference
+// defaults for thresholds and sub-pixel removal.
+#pragma once
+
+#include <string>
+
+#include "passes/post_filter.h"
+
+namespace taa {
+
+struct FxaaSettings {
+  float edgeThreshold = 0.166f;      // minimum contrast relative to the local max luma
+  float edgeThresholdMin = 0.0833f;  // absolute floor: darks below it are not processed
+  float subpix = 0.75f;              // sub-pixel aliasing removal (0 off .. 1 softest)
+};
+
+class FxaaPass {
+ public:
+  explicit FxaaPass(vk::Context& ctx, const FxaaSettings& settings = {});
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
+    filter_.record(cmd, input, output, size);
+  }
+  std::string describe() const;
+
+ private:
+  FxaaSettings settings_;
+  PostFilter filter_;
+};
+
+}  // namespace taa

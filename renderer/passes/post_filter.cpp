@@ -1,0 +1,62 @@
+#include "passes/post_filter.h"
+
+#include <stdexcept>
+
+#include "vk/context.h"
+
+namespace taa {
+
+vk::Image makePostImage(vk::Context& ctx, const std::string& name, glm::ivec2 size) {
+  vk::ImageDesc d;
+  d.name = name;
+  d.width = uint32_t(size.x);
+  d.height = uint32_t(size.y);
+  d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  d.usage =
+      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  return vk::Image(ctx, d);
+}
+
+gpu::PostPush makePostPush(glm::ivec2 size, glm::vec4 params) {
+  gpu::PostPush push{};
+  push.size = glm::vec4(glm::vec2(size), 1.0f / glm::vec2(size));
+  push.params = params;
+  return push;
+}
+
+void requireCovers(const vk::Image& image, glm::ivec2 size, const char* pass) {
+  if (size.x < 1 || size.y < 1 || uint32_t(size.x) > image.desc().width ||
+      uint32_t(size.y) > image.desc().height)
+    throw std::logic_error(std::string(pass) + ": region " + std::to_string(size.x) + "x" +
+                           std::to_string(size.y) + " does not fit image '" + image.desc().name +
+                           "'");
+}
+
+PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params)
+    : ctx_(ctx),
+      name_(shader),
+      params_(params),
+      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+  std::vector<VkDescriptorType> bindings(POST_BINDING_COUNT);
+  bindings[POST_BINDING_INPUT] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  bindings[POST_BINDING_OUTPUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  pipeline_ = vk::createComputePipeline(ctx, shader, bindings, sizeof(gpu::PostPush));
+}
+
+void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
+  requireCovers(input, size, name_.c_str());
+  requireCovers(output, size, name_.c_str());
+  if (&input == &output) throw std::logic_error(name_ + ": input and output must differ");
+  input.use(cmd, vk::Use::SampledCompute);
+  output.use(cmd, vk::Use::StorageWrite);
+  pipeline_.bind(cmd);
+  vk::Bindings()
+      .sampled(POST_BINDING_INPUT, input.view(), point_.handle())
+      .storage(POST_BINDING_OUTPUT, output.view())
+      .push(ctx_, cmd, pipeline_);
+  const gpu::PostPush push = makePostPush(size, params_);
+  vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+}
+
+}  // namespace taa

@@ -1,0 +1,208 @@
+// The post chain inside the renderer: each pass, when enabled, changes the frame,
+// appears in the run log and in the GPU timings, and the whole chain is
+// deterministic; the case validator refuses settings the passes would ignore.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "case/case_error.h"
+#include "renderer.h"
+#include "scene/build_scene.h"
+#include "support/gpu.h"
+#include "support/process.h"
+
+namespace taa {
+namespace {
+
+// A strafing camera and a fast mover: motion for the blur, edges for the rest.
+const char* kBase = R"({
+  "scene": {"builtin": "checkerboard"},
+  "render": {"width": 160, "height": 90 %s},
+  "camera": {"strafe": {"speed": 3.0, "distance": 1.0}},
+  "movers": [{"shape": "sphere", "start": [-1.5, 0.5, 1], "end": [1.5, 0.5, 1], "speed": 4}],
+  "script": {"frames": 4},
+  "output": {"frames": [3]}
+  %s
+})";
+
+spec::CaseSpec makeCase(const std::string& extra, const std::string& render = "") {
+  char buf[2048];
+  std::snprintf(buf, sizeof(buf), kBase, render.c_str(),
+                extra.empty() ? "" : (", " + extra).c_str());
+  return test::caseFromJson(buf, "post_chain");
+}
+
+struct Rendered {
+  std::vector<std::string> log;
+  FrameRecord last;
+};
+
+Rendered render(const spec::CaseSpec& spec) {
+  const auto scene = scene::buildScene(spec);
+  Renderer renderer(test::gpu(), spec, scene);
+  Rendered out;
+  out.log = renderer.log();
+  for (int f = 0; f < spec.script.frames; ++f)
+    out.last = renderer.renderFrame(f, f == spec.script.frames - 1);
+  return out;
+}
+
+bool logged(const Rendered& r, const std::string& prefix) {
+  return std::any_of(r.log.begin(), r.log.end(),
+                     [&](const std::string& l) { return l.rfind(prefix, 0) == 0; });
+}
+
+bool timed(const Rendered& r, const std::string& pass) {
+  return std::any_of(r.last.gpuMs.begin(), r.last.gpuMs.end(),
+                     [&](const auto& t) { return t.first == pass; });
+}
+
+double meanAbsDiff(const Image& a, const Image& b) {
+  EXPECT_TRUE(a.sameShape(b));
+  double sum = 0.0;
+  for (size_t i = 0; i < a.data.size(); ++i)
+    if (i % 4 != 3) sum += std::fabs(a.data[i] - b.data[i]);
+  return sum / double(a.pixelCount() * 3);
+}
+
+struct PassCase {
+  const char* pass;
+  const char* settings;
+};
+
+class PostPass : public ::testing::TestWithParam<PassCase> {};
+
+TEST_P(PostPass, ChangesTheFrameAndIsLoggedAndTimed) {
+  static const Rendered plain = render(makeCase(""));
+  const Rendered with = render(makeCase(GetParam().settings));
+  const std::string pass = GetParam().pass;
+  EXPECT_TRUE(logged(with, "pass " + pass + ":")) << pass;
+  EXPECT_TRUE(logged(with, "buffer " + pass + " ")) << pass;
+  EXPECT_FALSE(logged(plain, "pass " + pass));
+  EXPECT_TRUE(timed(with, pass));
+  EXPECT_FALSE(timed(plain, pass));
+  ASSERT_TRUE(with.last.hasImages);
+  EXPECT_EQ(with.last.color.width, 160);
+  EXPECT_NE(with.last.colorSha256, plain.last.colorSha256);
+  EXPECT_GT(meanAbsDiff(with.last.color, plain.last.color), 1e-4) << pass;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Post, PostPass,
+    ::testing::Values(PassCase{"motion_blur", R"("post": {"motion_blur": true})"},
+                      PassCase{"sharpen",
+                               R"("post": {"sharpen": "gradient", "sharpen_amount": 0.8})"},
+                      PassCase{"cas", R"("post": {"sharpen": "cas", "sharpen_amount": 0.8})"},
+                      PassCase{"fxaa", R"("post": {"fxaa": true})"}),
+    [](const auto& p) { return std::string(p.param.pass); });
+
+const char* kEverything =
+    R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true, "use_velocity": "off"},
+       "post": {"motion_blur": true, "motion_blur_samples": 6, "sharpen": "cas", "fxaa": true})";
+
+TEST(PostChain, AllPassesRunInOrderAndTwiceGiveIdenticalBytes) {
+  const auto spec = makeCase(kEverything);
+  const Rendered a = render(spec), b = render(spec);
+  std::vector<std::string> order;
+  for (const auto& t : a.last.gpuMs) order.push_back(t.first);
+  EXPECT_EQ(order,
+            (std::vector<std::string>{"gbuffer", "motion_blur", "taa_resolve", "cas", "fxaa"}));
+  EXPECT_EQ(a.last.colorSha256, b.last.colorSha256);
+  for (float v : a.last.color.data) ASSERT_TRUE(std::isfinite(v));
+}
+
+// Lavapipe splits dispatches across its threads; no pass may depend on how.
+TEST(PostChain, OneAndTwoLavapipeThreadsGiveIdenticalFrames) {
+  const std::string dir = std::string(TAA_TEST_OUT) + "/post-threads";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/post_threads.json") << R"({
+    "scene": {"builtin": "checkerboard"},
+    "render": {"width": 160, "height": 90},
+    "camera": {"strafe": {"speed": 3.0, "distance": 1.0}},
+    "script": {"frames": 3},
+    "output": {"frames": [2]},
+    )" << kEverything << "}";
+  std::vector<std::string> hashes;
+  for (const char* env : {"LP_NUM_THREADS=1", "LP_NUM_THREADS=2"}) {
+    const auto r = test::runHarness("render " + dir + "/post_threads.json --out " + dir, env);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.output, m, std::regex("frame 2 sha256 ([0-9a-f]{64})")));
+    hashes.push_back(m[1]);
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+}
+
+TEST(PostChain, RunsWithoutAResolveAndUnderUpsamplingAtTheRightSizes) {
+  // No resolve: the filters work on the (blurred) render-size colour.
+  const Rendered off =
+      render(makeCase(R"("taa": {"mode": "off"}, "post": {"motion_blur": true, "fxaa": true})"));
+  EXPECT_EQ(off.last.color.width, 160);
+  EXPECT_TRUE(logged(off, "buffer fxaa 160x90"));
+  // Upsampling: blur at the 80x45 render size, sharpening at the 160x90 output.
+  const Rendered up = render(
+      makeCase(R"("post": {"motion_blur": true, "sharpen": "gradient"})", R"(, "upsample": 2)"));
+  EXPECT_TRUE(logged(up, "buffer motion_blur 80x45"));
+  EXPECT_TRUE(logged(up, "buffer sharpen 160x90"));
+  EXPECT_EQ(up.last.color.width, 160);
+  EXPECT_EQ(up.last.color.height, 90);
+}
+
+TEST(PostChain, SpeedInAlphaDrivesTheResolveLikeItsOwnReprojection) {
+  // velocity_alpha from the speed the blur packed into alpha, or from the resolve's
+  // own depth reprojection: the same motion, so nearly the same frame; without
+  // velocity_alpha at all, a visibly different one.
+  const std::string blur = R"("post": {"motion_blur": true, "motion_blur_scale": 0.0})";
+  const std::string alpha =
+      R"("velocity_alpha": true, "velocity_alpha_px": 4, "use_velocity": "off")";
+  const auto packed =
+      render(makeCase(R"("taa": {"velocity_in_alpha": true, )" + alpha + "}, " + blur));
+  const auto own = render(makeCase(R"("taa": {)" + alpha + "}, " + blur));
+  const auto none = render(makeCase(R"("taa": {"use_velocity": "off"}, )" + blur));
+  const double close = meanAbsDiff(packed.last.color, own.last.color);
+  const double far = meanAbsDiff(packed.last.color, none.last.color);
+  std::printf("speed in alpha vs own reprojection %.5f, vs no velocity alpha %.5f\n", close, far);
+  EXPECT_LT(close, 0.25 * far);
+}
+
+std::vector<std::string> problemsOf(const std::string& extra) {
+  try {
+    makeCase(extra);
+  } catch (const cases::CaseError& e) {
+    return e.problems();
+  }
+  return {};
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& a,
+              const std::string& b) {
+  return std::any_of(problems.begin(), problems.end(), [&](const std::string& p) {
+    return p.find(a) != std::string::npos && p.find(b) != std::string::npos;
+  });
+}
+
+TEST(PostValidation, RefusesSettingsThePassesWouldIgnore) {
+  auto p = problemsOf(R"("post": {"sharpen_amount": 0.3})");
+  EXPECT_TRUE(mentions(p, "post.sharpen_amount", "post.sharpen to gradient or cas")) << p.size();
+  p = problemsOf(R"("post": {"motion_blur_samples": 4, "motion_blur_scale": 0.5})");
+  EXPECT_TRUE(mentions(p, "post.motion_blur_samples", "post.motion_blur: true"));
+  EXPECT_TRUE(mentions(p, "post.motion_blur_scale", "post.motion_blur: true"));
+  p = problemsOf(R"("taa": {"velocity_in_alpha": true})");
+  EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "post.motion_blur: true"));
+  EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.velocity_alpha: true"));
+  EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.use_velocity: off"));
+  p = problemsOf(R"("taa": {"mode": "basic", "velocity_in_alpha": true, "velocity_alpha": true,
+                            "use_velocity": "off"}, "post": {"motion_blur": true})");
+  EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.mode: full"));
+  EXPECT_TRUE(problemsOf(kEverything).empty());
+  EXPECT_TRUE(problemsOf(R"("post": {"sharpen": "cas", "sharpen_amount": 0.3, "motion_blur": true,
+                                     "motion_blur_samples": 4})")
+                  .empty());
+}
+
+}  // namespace
+}  // namespace taa

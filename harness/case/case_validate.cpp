@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "case/case_error.h"
+#include "invariants/invariant.h"
 
 namespace taa::cases {
 
@@ -115,6 +116,30 @@ void validateRender(Problems& p, RenderSpec& r) {
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
 }
 
+// A listed invariant must measure something the case enables, and parameters of an
+// invariant that is not listed would silently do nothing.
+void validateInvariants(Problems& p, const CaseSpec& spec, const std::set<std::string>& present) {
+  const auto& listed = spec.checks.invariants;
+  for (size_t i = 0; i < listed.size(); ++i) {
+    const std::string key = "checks.invariants[" + std::to_string(i) + "]";
+    if (std::find(listed.begin(), listed.begin() + long(i), listed[i]) != listed.begin() + long(i)) {
+      p.add(key, std::string("'") + enumToString(listed[i]) + "' is listed twice; remove one");
+      continue;
+    }
+    if (auto why = invariants::inapplicable(listed[i], spec); !why.empty()) p.add(key, why);
+  }
+  const std::pair<const char*, InvariantKind> params[] = {
+      {"no_ghosting", InvariantKind::NoGhosting}, {"converges", InvariantKind::Converges},
+      {"temporal_stability", InvariantKind::TemporalStability}, {"energy", InvariantKind::Energy},
+      {"bit_stable", InvariantKind::BitStable}};
+  for (const auto& [name, kind] : params) {
+    const std::string key = std::string("checks.") + name;
+    if (present.count(key) && std::find(listed.begin(), listed.end(), kind) == listed.end())
+      p.add(key, std::string("parameters of ") + name + " are set but checks.invariants does not list it; add \"" +
+                     name + "\" to checks.invariants or remove " + key);
+  }
+}
+
 }  // namespace
 
 void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
@@ -135,6 +160,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   validateJitter(p, spec.jitter, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);
+  validateInvariants(p, spec, present);
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");

@@ -122,7 +122,8 @@ void validateInvariants(Problems& p, const CaseSpec& spec, const std::set<std::s
   const auto& listed = spec.checks.invariants;
   for (size_t i = 0; i < listed.size(); ++i) {
     const std::string key = "checks.invariants[" + std::to_string(i) + "]";
-    if (std::find(listed.begin(), listed.begin() + long(i), listed[i]) != listed.begin() + long(i)) {
+    const auto before = listed.begin() + long(i);
+    if (std::find(listed.begin(), before, listed[i]) != before) {
       p.add(key, std::string("'") + enumToString(listed[i]) + "' is listed twice; remove one");
       continue;
     }
@@ -135,8 +136,9 @@ void validateInvariants(Problems& p, const CaseSpec& spec, const std::set<std::s
   for (const auto& [name, kind] : params) {
     const std::string key = std::string("checks.") + name;
     if (present.count(key) && std::find(listed.begin(), listed.end(), kind) == listed.end())
-      p.add(key, std::string("parameters of ") + name + " are set but checks.invariants does not list it; add \"" +
-                     name + "\" to checks.invariants or remove " + key);
+      p.add(key, std::string("parameters of ") + name +
+                     " are set but checks.invariants does not list it; add \"" + name +
+                     "\" to checks.invariants or remove " + key);
   }
 }
 

@@ -34,7 +34,9 @@ class BitStable : public Invariant {
 
   Outcome finish() override {
     Outcome o{"bit_stable", false, "", {}};
-    o.values = {{"after_frame", after_}, {"frames_compared", double(compared_)}, {"changes", double(changes_)}};
+    o.values = {{"after_frame", after_},
+                {"frames_compared", double(compared_)},
+                {"changes", double(changes_)}};
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -45,10 +47,11 @@ class BitStable : public Invariant {
     }
     o.passed = changes_ == 0;
     if (!o.passed) o.values.push_back({"first_change_frame", firstChange_});
-    o.detail = o.passed ? "output unchanged over " + std::to_string(compared_) + " frame(s) after frame " +
-                              std::to_string(after_)
-                        : "output changed in " + std::to_string(changes_) + " of " + std::to_string(compared_) +
-                              " frame(s) after frame " + std::to_string(after_) + "; first at frame " +
+    o.detail = o.passed ? "output unchanged over " + std::to_string(compared_) +
+                              " frame(s) after frame " + std::to_string(after_)
+                        : "output changed in " + std::to_string(changes_) + " of " +
+                              std::to_string(compared_) + " frame(s) after frame " +
+                              std::to_string(after_) + "; first at frame " +
                               std::to_string(firstChange_);
     return o;
   }
@@ -65,13 +68,16 @@ std::string bitStableInapplicable(const CaseSpec& spec) {
   const std::string name = "bit_stable";
   const int after = spec.checks.bit_stable.after_frame;
   if (after >= spec.script.frames - 1)
-    return name + " compares frames after bit_stable.after_frame " + std::to_string(after) + ", but the last frame is " +
-           std::to_string(spec.script.frames - 1) + "; lower bit_stable.after_frame or raise script.frames";
+    return name + " compares frames after bit_stable.after_frame " + std::to_string(after) +
+           ", but the last frame is " + std::to_string(spec.script.frames - 1) +
+           "; lower bit_stable.after_frame or raise script.frames";
   if (auto what = whatMoves(spec); !what.empty())
-    return name + " needs a static scene, but " + what + "; remove it from checks.invariants or stop the motion";
+    return name + " needs a static scene, but " + what +
+           "; remove it from checks.invariants or stop the motion";
   for (int r : spec.script.reset_history_at)
     if (r > after)
-      return name + " needs an undisturbed history, but script.reset_history_at resets it at frame " +
+      return name +
+             " needs an undisturbed history, but script.reset_history_at resets it at frame " +
              std::to_string(r) + " after bit_stable.after_frame " + std::to_string(after) +
              "; raise bit_stable.after_frame or move the reset";
   // A moving jitter changes every frame's samples, so the output never settles.
@@ -82,6 +88,8 @@ std::string bitStableInapplicable(const CaseSpec& spec) {
   return "";
 }
 
-std::unique_ptr<Invariant> makeBitStable(const CaseSpec& spec) { return std::make_unique<BitStable>(spec); }
+std::unique_ptr<Invariant> makeBitStable(const CaseSpec& spec) {
+  return std::make_unique<BitStable>(spec);
+}
 
 }  // namespace taa::invariants

@@ -17,7 +17,8 @@ using namespace taa::spec;
 
 class Converges : public Invariant {
  public:
-  explicit Converges(const CaseSpec& spec) : ratio_(spec.checks.converges.ratio), fromFrame_(spec.checks.from_frame) {}
+  explicit Converges(const CaseSpec& spec)
+      : ratio_(spec.checks.converges.ratio), fromFrame_(spec.checks.from_frame) {}
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.frame < fromFrame_) return;
@@ -49,14 +50,17 @@ class Converges : public Invariant {
     firstQ /= double(q);
     lastQ /= double(q);
     const double first = rmse_.front(), last = rmse_.back(), bound = ratio_ * first;
-    o.values = {{"first_rmse", first},          {"last_rmse", last},          {"bound", bound},
-                {"first_quarter_mean", firstQ}, {"last_quarter_mean", lastQ}, {"frames", double(n)}};
+    o.values = {
+        {"first_rmse", first},          {"last_rmse", last},          {"bound", bound},
+        {"first_quarter_mean", firstQ}, {"last_quarter_mean", lastQ}, {"frames", double(n)}};
     const bool endOk = last <= bound, trendOk = lastQ <= firstQ;
     o.passed = endOk && trendOk;
-    const std::string span = "frames " + std::to_string(start_) + ".." + std::to_string(start_ + int(n) - 1);
+    const std::string span =
+        "frames " + std::to_string(start_) + ".." + std::to_string(start_ + int(n) - 1);
     o.detail = "RMSE to reference over " + span + ": last " + num(last) + (endOk ? " <= " : " > ") +
-               num(ratio_) + " x first " + num(first) + " = " + num(bound) + "; last-quarter mean " + num(lastQ) +
-               (trendOk ? " <= " : " > ") + "first-quarter mean " + num(firstQ);
+               num(ratio_) + " x first " + num(first) + " = " + num(bound) +
+               "; last-quarter mean " + num(lastQ) + (trendOk ? " <= " : " > ") +
+               "first-quarter mean " + num(firstQ);
     return o;
   }
 
@@ -73,15 +77,19 @@ class Converges : public Invariant {
 std::string convergesInapplicable(const CaseSpec& spec) {
   const std::string name = "converges";
   if (auto what = whatMoves(spec); !what.empty())
-    return name + " needs a static scene, but " + what + "; remove it from checks.invariants or stop the motion";
+    return name + " needs a static scene, but " + what +
+           "; remove it from checks.invariants or stop the motion";
   if (auto r = noHistoryReason(name, spec); !r.empty()) return r;
   // Without sub-pixel jitter every frame samples the same points: nothing to accumulate.
   if (auto why = jitterConstant(spec); !why.empty())
     return name + " needs sub-pixel jitter to accumulate, but " + why +
-           ", so every frame samples the same points; remove it from checks.invariants or enable jitter";
+           ", so every frame samples the same points; remove it from checks.invariants or enable "
+           "jitter";
   return debugViewReason(name, spec);
 }
 
-std::unique_ptr<Invariant> makeConverges(const CaseSpec& spec) { return std::make_unique<Converges>(spec); }
+std::unique_ptr<Invariant> makeConverges(const CaseSpec& spec) {
+  return std::make_unique<Converges>(spec);
+}
 
 }  // namespace taa::invariants

@@ -23,9 +23,10 @@ class Determinism : public Invariant {
     if (firstBad_ < 0) {
       firstBad_ = f.frame;
       why_ = it == first_.end() ? "the first run has no frame " + std::to_string(f.frame)
-             : f.sha256.empty() ? "frame " + std::to_string(f.frame) + " has no hash"
-                                : "frame " + std::to_string(f.frame) + ": " + it->second.substr(0, 12) + "... then " +
-                                      f.sha256.substr(0, 12) + "...";
+             : f.sha256.empty()
+                 ? "frame " + std::to_string(f.frame) + " has no hash"
+                 : "frame " + std::to_string(f.frame) + ": " + it->second.substr(0, 12) +
+                       "... then " + f.sha256.substr(0, 12) + "...";
     }
   }
 
@@ -37,7 +38,8 @@ class Determinism : public Invariant {
         if (firstBad_ < 0 || frame < firstBad_)
           firstBad_ = frame, why_ = "the repeat has no frame " + std::to_string(frame);
       }
-    o.values = {{"frames", double(first_.size())}, {"repeated_frames", double(repeated_)},
+    o.values = {{"frames", double(first_.size())},
+                {"repeated_frames", double(repeated_)},
                 {"mismatches", double(mismatches_)}};
     if (first_.empty() || repeated_ == 0) {
       o.detail = first_.empty() ? "no frames observed" : "the case was not rendered a second time";
@@ -45,9 +47,10 @@ class Determinism : public Invariant {
     }
     o.passed = mismatches_ == 0;
     if (!o.passed) o.values.push_back({"first_mismatch_frame", firstBad_});
-    o.detail = o.passed ? "a second render gave identical hashes for all " + std::to_string(first_.size()) +
-                              " frame(s)"
-                        : std::to_string(mismatches_) + " frame(s) differ in the second render; first: " + why_;
+    o.detail = o.passed ? "a second render gave identical hashes for all " +
+                              std::to_string(first_.size()) + " frame(s)"
+                        : std::to_string(mismatches_) +
+                              " frame(s) differ in the second render; first: " + why_;
     return o;
   }
 
@@ -60,6 +63,8 @@ class Determinism : public Invariant {
 
 }  // namespace
 
-std::unique_ptr<Invariant> makeDeterminism(const spec::CaseSpec&) { return std::make_unique<Determinism>(); }
+std::unique_ptr<Invariant> makeDeterminism(const spec::CaseSpec&) {
+  return std::make_unique<Determinism>();
+}
 
 }  // namespace taa::invariants

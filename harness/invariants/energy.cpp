@@ -22,7 +22,8 @@ double meanLuminance(const Image& img) {
 
 class Energy : public Invariant {
  public:
-  explicit Energy(const CaseSpec& spec) : epsilon_(spec.checks.energy.epsilon), fromFrame_(spec.checks.from_frame) {}
+  explicit Energy(const CaseSpec& spec)
+      : epsilon_(spec.checks.energy.epsilon), fromFrame_(spec.checks.from_frame) {}
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.frame < fromFrame_ || f.historyReset) return;
@@ -45,17 +46,22 @@ class Energy : public Invariant {
       return o;
     }
     if (frames_ == 0) {
-      o.detail = "no frame from checks.from_frame " + std::to_string(fromFrame_) + " on outside a history reset";
+      o.detail = "no frame from checks.from_frame " + std::to_string(fromFrame_) +
+                 " on outside a history reset";
       return o;
     }
-    o.values = {{"worst_relative_difference", worst_}, {"bound", epsilon_}, {"frame", worstFrame_},
-                {"output_mean_luminance", worstOut_}, {"reference_mean_luminance", worstRef_},
-                {"frames_over", double(framesOver_)}, {"frames", double(frames_)}};
+    o.values = {{"worst_relative_difference", worst_},
+                {"bound", epsilon_},
+                {"frame", worstFrame_},
+                {"output_mean_luminance", worstOut_},
+                {"reference_mean_luminance", worstRef_},
+                {"frames_over", double(framesOver_)},
+                {"frames", double(frames_)}};
     o.passed = framesOver_ == 0;
-    o.detail = "mean luminance off the reference by " + num(worst_) + (o.passed ? " <= " : " > ") + num(epsilon_) +
-               " (relative) at worst, frame " + std::to_string(worstFrame_) + ": " + num(worstOut_) + " vs " +
-               num(worstRef_) + "; " + std::to_string(framesOver_) + " of " + std::to_string(frames_) +
-               " frame(s) over";
+    o.detail = "mean luminance off the reference by " + num(worst_) + (o.passed ? " <= " : " > ") +
+               num(epsilon_) + " (relative) at worst, frame " + std::to_string(worstFrame_) + ": " +
+               num(worstOut_) + " vs " + num(worstRef_) + "; " + std::to_string(framesOver_) +
+               " of " + std::to_string(frames_) + " frame(s) over";
     return o;
   }
 
@@ -70,8 +76,12 @@ class Energy : public Invariant {
 
 }  // namespace
 
-std::string energyInapplicable(const CaseSpec& spec) { return debugViewReason("energy", spec); }
+std::string energyInapplicable(const CaseSpec& spec) {
+  return debugViewReason("energy", spec);
+}
 
-std::unique_ptr<Invariant> makeEnergy(const CaseSpec& spec) { return std::make_unique<Energy>(spec); }
+std::unique_ptr<Invariant> makeEnergy(const CaseSpec& spec) {
+  return std::make_unique<Energy>(spec);
+}
 
 }  // namespace taa::invariants

@@ -22,7 +22,8 @@ class Finite : public Invariant {
         bool finite = true;
         for (int c = 0; c < img.channels; ++c) finite = finite && std::isfinite(img.at(x, y, c));
         if (finite) continue;
-        if (bad_ == 0) firstFrame_ = f.frame, firstX_ = x, firstY_ = y, firstValue_ = describe(img, x, y);
+        if (bad_ == 0)
+          firstFrame_ = f.frame, firstX_ = x, firstY_ = y, firstValue_ = describe(img, x, y);
         ++bad_, ++here;
       }
     if (here > 0) ++badFrames_;
@@ -34,7 +35,8 @@ class Finite : public Invariant {
       o.detail = error_;
       return o;
     }
-    o.values = {{"nonfinite_pixels", double(bad_)}, {"frames_with_nonfinite", double(badFrames_)},
+    o.values = {{"nonfinite_pixels", double(bad_)},
+                {"frames_with_nonfinite", double(badFrames_)},
                 {"frames", double(frames_)}};
     if (frames_ == 0) {
       o.detail = "no frames observed";
@@ -46,8 +48,8 @@ class Finite : public Invariant {
     } else {
       o.values.insert(o.values.end(), {{"frame", firstFrame_}, {"x", firstX_}, {"y", firstY_}});
       o.detail = std::to_string(bad_) + " non-finite pixel(s) in " + std::to_string(badFrames_) +
-                 " frame(s); first at frame " + std::to_string(firstFrame_) + " (" + std::to_string(firstX_) +
-                 ", " + std::to_string(firstY_) + "): " + firstValue_;
+                 " frame(s); first at frame " + std::to_string(firstFrame_) + " (" +
+                 std::to_string(firstX_) + ", " + std::to_string(firstY_) + "): " + firstValue_;
     }
     return o;
   }
@@ -68,6 +70,8 @@ class Finite : public Invariant {
 
 }  // namespace
 
-std::unique_ptr<Invariant> makeFinite(const spec::CaseSpec&) { return std::make_unique<Finite>(); }
+std::unique_ptr<Invariant> makeFinite(const spec::CaseSpec&) {
+  return std::make_unique<Finite>();
+}
 
 }  // namespace taa::invariants

@@ -23,7 +23,8 @@ constexpr float kStaticPx = 0.01f;
 class TemporalStability : public Invariant {
  public:
   explicit TemporalStability(const CaseSpec& spec)
-      : factor_(spec.checks.temporal_stability.factor), epsilon_(spec.checks.temporal_stability.epsilon),
+      : factor_(spec.checks.temporal_stability.factor),
+        epsilon_(spec.checks.temporal_stability.epsilon),
         fromFrame_(spec.checks.from_frame) {}
 
   void observe(const FrameView& f) override {
@@ -78,7 +79,8 @@ class TemporalStability : public Invariant {
     }
     if (frames_ == 0) {
       o.detail = "no static pixels (velocity < 0.01 px, no mover, in two consecutive frames) in " +
-                 std::to_string(framesSeen_) + " frame pair(s) checked; the camera or movers cover everything";
+                 std::to_string(framesSeen_) +
+                 " frame pair(s) checked; the camera or movers cover everything";
       return o;
     }
     const double flicker = sumOut_ / frames_, reference = sumRef_ / frames_;
@@ -90,8 +92,8 @@ class TemporalStability : public Invariant {
                 {"mean_static_pixels", double(staticPixels_) / frames_}};
     o.passed = flicker <= bound;
     o.detail = "static-pixel flicker " + num(flicker) + (o.passed ? " <= " : " > ") + num(factor_) +
-               " x reference " + num(reference) + " + " + num(epsilon_) + " = " + num(bound) + " over " +
-               std::to_string(frames_) + " frame(s)";
+               " x reference " + num(reference) + " + " + num(epsilon_) + " = " + num(bound) +
+               " over " + std::to_string(frames_) + " frame(s)";
     return o;
   }
 

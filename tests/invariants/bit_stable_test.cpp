@@ -49,14 +49,17 @@ TEST(InvariantBitStable, StillSettlingAtAfterFrameFails) {
 
 TEST(InvariantBitStable, InapplicableWhenTheInputChanges) {
   EXPECT_EQ(inapplicable(InvariantKind::BitStable, stableCase(5)), "");
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, stableCase(15)),
-                       "bit_stable compares frames after bit_stable.after_frame 15, but the last frame is 15"));
+  EXPECT_TRUE(contains(
+      inapplicable(InvariantKind::BitStable, stableCase(15)),
+      "bit_stable compares frames after bit_stable.after_frame 15, but the last frame is 15"));
   auto moving = stableCase(5);
   moving.movers.emplace_back();
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, moving), "needs a static scene, but movers[0].speed is 1"));
+  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, moving),
+                       "needs a static scene, but movers[0].speed is 1"));
   auto jittered = stableCase(5);
   jittered.jitter.pattern = spec::JitterPattern::Halton;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, jittered), "jitter.pattern halton moves the samples"));
+  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, jittered),
+                       "jitter.pattern halton moves the samples"));
   jittered.jitter.lock = 3;  // locked to one step: constant again
   EXPECT_EQ(inapplicable(InvariantKind::BitStable, jittered), "");
   auto reset = stableCase(5);

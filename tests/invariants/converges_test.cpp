@@ -23,7 +23,8 @@ std::vector<Frame> sequence(int frames, ErrorOf errorOf, int resetAt = -1) {
     const float e = errorOf(f);
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x)
-        for (int c = 0; c < 3; ++c) fr.output.at(x, y, c) += e * (2.0f * noise(x, y, f, uint32_t(c)) - 1.0f);
+        for (int c = 0; c < 3; ++c)
+          fr.output.at(x, y, c) += e * (2.0f * noise(x, y, f, uint32_t(c)) - 1.0f);
     seq.push_back(std::move(fr));
   }
   return seq;
@@ -32,14 +33,16 @@ std::vector<Frame> sequence(int frames, ErrorOf errorOf, int resetAt = -1) {
 }  // namespace
 
 TEST(InvariantConverges, DecayingErrorPasses) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(), sequence(16, [](int f) { return 0.2f * std::pow(0.85f, f); }));
+  const auto o = runAll(InvariantKind::Converges, staticCase(),
+                        sequence(16, [](int f) { return 0.2f * std::pow(0.85f, f); }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_LT(valueOf(o, "last_rmse"), valueOf(o, "bound"));
   EXPECT_EQ(valueOf(o, "frames"), 16.0);
 }
 
 TEST(InvariantConverges, GrowingErrorFails) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(), sequence(16, [](int f) { return 0.02f * float(1 + f); }));
+  const auto o = runAll(InvariantKind::Converges, staticCase(),
+                        sequence(16, [](int f) { return 0.02f * float(1 + f); }));
   EXPECT_FALSE(o.passed);
   EXPECT_GT(valueOf(o, "last_quarter_mean"), valueOf(o, "first_quarter_mean"));
   EXPECT_TRUE(contains(o.detail, "last-quarter mean")) << o.detail;
@@ -47,14 +50,16 @@ TEST(InvariantConverges, GrowingErrorFails) {
 
 // Noise that never accumulates away: the end is not below ratio x the start.
 TEST(InvariantConverges, FlatErrorFailsTheRatio) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(), sequence(16, [](int) { return 0.1f; }));
+  const auto o =
+      runAll(InvariantKind::Converges, staticCase(), sequence(16, [](int) { return 0.1f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, " > 0.6 x first")) << o.detail;
 }
 
 // A reset restarts accumulation: the check judges the run after the last one.
 TEST(InvariantConverges, HistoryResetRestartsTheRun) {
-  const auto seq = sequence(24, [](int f) { return 0.2f * std::pow(0.85f, f < 8 ? f : f - 8); }, 8);
+  const auto seq = sequence(
+      24, [](int f) { return 0.2f * std::pow(0.85f, f < 8 ? f : f - 8); }, 8);
   const auto o = runAll(InvariantKind::Converges, staticCase(), seq);
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "frames"), 16.0);
@@ -63,7 +68,8 @@ TEST(InvariantConverges, HistoryResetRestartsTheRun) {
 
 TEST(InvariantConverges, FromFrameSkipsWarmUp) {
   // Worse for 4 frames, then converging: fails from 0 (trend), passes from 4.
-  const auto seq = sequence(20, [](int f) { return f < 4 ? 0.01f : 0.2f * std::pow(0.85f, f - 4); });
+  const auto seq =
+      sequence(20, [](int f) { return f < 4 ? 0.01f : 0.2f * std::pow(0.85f, f - 4); });
   auto s = staticCase();
   EXPECT_FALSE(runAll(InvariantKind::Converges, s, seq).passed);
   s.checks.from_frame = 4;
@@ -71,7 +77,8 @@ TEST(InvariantConverges, FromFrameSkipsWarmUp) {
 }
 
 TEST(InvariantConverges, TooFewFramesFails) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(), sequence(3, [](int) { return 0.0f; }));
+  const auto o =
+      runAll(InvariantKind::Converges, staticCase(), sequence(3, [](int) { return 0.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "needs at least 4")) << o.detail;
 }
@@ -85,9 +92,15 @@ TEST(InvariantConverges, InapplicableWhenAnythingMovesOrNothingAccumulates) {
     EXPECT_TRUE(contains(why, part)) << "'" << why << "' lacks '" << part << "'";
   };
   expectReason([](auto& s) { s.camera.strafe.speed = 2.0f; },
-               "converges needs a static scene, but camera.strafe.speed is 2; remove it from checks.invariants");
-  expectReason([](auto& s) { s.camera.path.points = {{0, 0, 0}, {1, 0, 0}}; }, "camera.path has 2 points");
-  expectReason([](auto& s) { s.camera.rotate.yaw_deg_per_s = 10.0f; }, "camera.rotate.yaw_deg_per_s is 10");
+               "converges needs a static scene, but camera.strafe.speed is 2; remove it from "
+               "checks.invariants");
+  expectReason(
+      [](auto& s) {
+        s.camera.path.points = {{0, 0, 0}, {1, 0, 0}};
+      },
+      "camera.path has 2 points");
+  expectReason([](auto& s) { s.camera.rotate.yaw_deg_per_s = 10.0f; },
+               "camera.rotate.yaw_deg_per_s is 10");
   expectReason([](auto& s) { s.camera.bob.amplitude = 0.1f; }, "camera.bob.amplitude is 0.1");
   expectReason([](auto& s) { s.camera.cuts.emplace_back(); }, "camera.cuts has 1 cut(s)");
   expectReason([](auto& s) { s.movers.emplace_back(); }, "movers[0].speed is 1");
@@ -98,8 +111,10 @@ TEST(InvariantConverges, InapplicableWhenAnythingMovesOrNothingAccumulates) {
         s.movers[0].rotation_speed_deg = 30.0f;
       },
       "movers[0].rotation_speed_deg is 30");
-  expectReason([](auto& s) { s.taa.mode = spec::TaaMode::PassThrough; }, "taa.mode is pass_through");
-  expectReason([](auto& s) { s.jitter.pattern = spec::JitterPattern::None; }, "jitter.pattern is none");
+  expectReason([](auto& s) { s.taa.mode = spec::TaaMode::PassThrough; },
+               "taa.mode is pass_through");
+  expectReason([](auto& s) { s.jitter.pattern = spec::JitterPattern::None; },
+               "jitter.pattern is none");
   expectReason([](auto& s) { s.jitter.lock = 2; }, "jitter.lock is 2");
   // A mover that stands still does not disturb a static scene.
   auto parked = staticCase();

@@ -21,7 +21,9 @@ std::vector<Frame> hashes(int frames, int changedFrame = -1) {
 
 }  // namespace
 
-TEST(InvariantDeterminism, NeedsASecondRun) { EXPECT_TRUE(needsOf(InvariantKind::Determinism).secondRun); }
+TEST(InvariantDeterminism, NeedsASecondRun) {
+  EXPECT_TRUE(needsOf(InvariantKind::Determinism).secondRun);
+}
 
 TEST(InvariantDeterminism, IdenticalRepeatPasses) {
   const auto o = runAll(InvariantKind::Determinism, staticCase(), hashes(8), hashes(8));

@@ -28,13 +28,15 @@ std::vector<Frame> sequence(int frames, Gain gain) {
 }  // namespace
 
 TEST(InvariantEnergy, SmallDifferencePasses) {
-  const auto o = runAll(InvariantKind::Energy, staticCase(), sequence(6, [](int) { return 1.01f; }));
+  const auto o =
+      runAll(InvariantKind::Energy, staticCase(), sequence(6, [](int) { return 1.01f; }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_NEAR(valueOf(o, "worst_relative_difference"), 0.01, 1e-5);
 }
 
 TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
-  const auto o = runAll(InvariantKind::Energy, staticCase(), sequence(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
+  const auto o = runAll(InvariantKind::Energy, staticCase(),
+                        sequence(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "frame"), 4.0);
   EXPECT_EQ(valueOf(o, "frames_over"), 1.0);
@@ -43,7 +45,8 @@ TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
 }
 
 TEST(InvariantEnergy, DarkenedOutputFails) {
-  EXPECT_FALSE(runAll(InvariantKind::Energy, staticCase(), sequence(4, [](int) { return 0.9f; })).passed);
+  EXPECT_FALSE(
+      runAll(InvariantKind::Energy, staticCase(), sequence(4, [](int) { return 0.9f; })).passed);
 }
 
 TEST(InvariantEnergy, ResetsAndWarmUpAreSkipped) {
@@ -62,5 +65,6 @@ TEST(InvariantEnergy, InapplicableOnlyToDebugViews) {
   s.render.upsample = 2.0f;
   EXPECT_EQ(inapplicable(InvariantKind::Energy, s), "");
   s.debug.output = spec::DebugOutput::Velocity;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::Energy, s), "energy measures the image, but debug.output is velocity"));
+  EXPECT_TRUE(contains(inapplicable(InvariantKind::Energy, s),
+                       "energy measures the image, but debug.output is velocity"));
 }

@@ -29,7 +29,8 @@ Image neighbourhoodMean(const Image& cur) {
         double sum = 0.0;
         int n = 0;
         for (int j = std::max(y - 1, 0); j <= std::min(y + 1, cur.height - 1); ++j)
-          for (int i = std::max(x - 1, 0); i <= std::min(x + 1, cur.width - 1); ++i) sum += cur.at(i, j, c), ++n;
+          for (int i = std::max(x - 1, 0); i <= std::min(x + 1, cur.width - 1); ++i)
+            sum += cur.at(i, j, c), ++n;
         out.at(x, y, c) = halfRound(float(sum / n));
       }
   return out;
@@ -103,7 +104,8 @@ TEST(InvariantHistoryBounded, ToleranceCoversHalfRoundingOnly) {
       for (int i = 0; i <= 2; ++i)
         for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
     setRgb(seq[1].output, 1, 1, hi[0] * scale, hi[1], hi[2]);
-    EXPECT_EQ(runAll(InvariantKind::HistoryBounded, rgbCase(), seq).passed, scale < 1.001f) << scale;
+    EXPECT_EQ(runAll(InvariantKind::HistoryBounded, rgbCase(), seq).passed, scale < 1.001f)
+        << scale;
   }
 }
 
@@ -131,6 +133,29 @@ TEST(InvariantHistoryBounded, YCoCgAcceptsOnlyNegativesClampedToZero) {
   EXPECT_TRUE(check(0.5f, 0.5f, 0.0f).passed) << check(0.5f, 0.5f, 0.0f).detail;
   EXPECT_FALSE(check(0.5f, 0.5f, 0.3f).passed);  // chroma off the box, nothing clamped
   EXPECT_FALSE(check(0.2f, 0.9f, 0.0f).passed);  // zero blue, but no negative blue fits
+}
+
+// Grey and yellow neighbours: the box corner h = RGB (0.7, 0.2, -0.3). Karis blends
+// max(h, 0) = (0.7, 0.2, 0) with the grey centre: (0.45, 0.2, 0.1), 0.0375 outside the box
+// and no channel zero. Only Karis explains it; a plain blend clamps at the end instead.
+TEST(InvariantHistoryBounded, KarisAcceptsItsLiftedNegativeHistory) {
+  Frame f0, f1;
+  f0.frame = 0, f0.reset = true, f1.frame = 1;
+  f1.current = rgba(0.2f, 0.2f, 0.2f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = kW / 2; x < kW; ++x) setRgb(f1.current, x, y, 1, 1, 0);
+  f1.output = f1.current;
+  setRgb(f1.output, kW / 2 - 1, 5, 0.45f, 0.2f, 0.1f);
+  f0.current = f0.output = f1.current;
+  auto s = staticCase();
+  const auto plain = runAll(InvariantKind::HistoryBounded, s, {f0, f1});
+  EXPECT_FALSE(plain.passed);
+  EXPECT_NEAR(valueOf(plain, "max_excess"), 0.0375, 1e-4);
+  s.taa.tonemap_weighting = spec::ToneWeight::Karis;
+  const auto karis = runAll(InvariantKind::HistoryBounded, s, {f0, f1});
+  EXPECT_TRUE(karis.passed) << karis.detail;
+  setRgb(f1.output, kW / 2 - 1, 5, 0.45f, 0.9f, 0.1f);  // no lift explains this green
+  EXPECT_FALSE(runAll(InvariantKind::HistoryBounded, s, {f0, f1}).passed);
 }
 
 // shrink_chroma lets the box's chroma reach an eighth of the luma extent around the current
@@ -177,10 +202,16 @@ TEST(InvariantHistoryBounded, InapplicableWhereTheBoxDoesNotBoundTheOutput) {
   expectReason([](auto& s) { s.taa.mode = spec::TaaMode::Off; }, "taa.mode is off");
   expectReason([](auto& s) { s.taa.tonemap_weighting = spec::ToneWeight::InverseLuma; },
                "taa.tonemap_weighting is inverse_luma");
-  expectReason([](auto& s) { s.taa.tonemap_weighting = spec::ToneWeight::Log; }, "taa.tonemap_weighting is log");
+  expectReason([](auto& s) { s.taa.tonemap_weighting = spec::ToneWeight::Log; },
+               "taa.tonemap_weighting is log");
   expectReason([](auto& s) { s.post.sharpen = spec::Sharpen::Cas; }, "post.sharpen is cas");
   expectReason([](auto& s) { s.post.fxaa = true; }, "post.fxaa");
   expectReason([](auto& s) { s.render.upsample = 2.0f; }, "render.upsample is 2");
-  expectReason([](auto& s) { s.render.scale_schedule.push_back({4, 0.5f}); }, "render.scale_schedule");
-  expectReason([](auto& s) { s.debug.output = spec::DebugOutput::Velocity; }, "debug.output is velocity");
+  expectReason(
+      [](auto& s) {
+        s.render.scale_schedule.push_back({4, 0.5f});
+      },
+      "render.scale_schedule");
+  expectReason([](auto& s) { s.debug.output = spec::DebugOutput::Velocity; },
+               "debug.output is velocity");
 }

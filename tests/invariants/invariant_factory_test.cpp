@@ -44,18 +44,24 @@ TEST(InvariantFactory, NeedsMatchWhatEachInvariantReads) {
 }
 
 TEST(InvariantValidation, InapplicableInvariantIsAProblemAtItsKey) {
-  const auto p = problemsOf(R"({"taa": {"rectify": "none"}, "checks": {"invariants": ["finite", "history_bounded"]}})");
+  const auto p = problemsOf(
+      R"({"taa": {"rectify": "none"}, "checks": {"invariants": ["finite", "history_bounded"]}})");
   ASSERT_EQ(p.size(), 1u);
-  EXPECT_TRUE(contains(p[0], "cases/t.json: checks.invariants[1]: history_bounded checks the clamp/clip box, but "
-                             "taa.rectify is none; remove it from checks.invariants or enable taa.rectify"))
+  EXPECT_TRUE(
+      contains(p[0],
+               "cases/t.json: checks.invariants[1]: history_bounded checks the clamp/clip box, but "
+               "taa.rectify is none; remove it from checks.invariants or enable taa.rectify"))
       << p[0];
 }
 
 TEST(InvariantValidation, ParametersOfAnUnlistedInvariantAreAProblem) {
-  const auto p = problemsOf(R"({"checks": {"invariants": ["energy"], "no_ghosting": {"frames": 4}}})");
+  const auto p =
+      problemsOf(R"({"checks": {"invariants": ["energy"], "no_ghosting": {"frames": 4}}})");
   ASSERT_EQ(p.size(), 1u);
-  EXPECT_TRUE(contains(p[0], "checks.no_ghosting: parameters of no_ghosting are set but checks.invariants does "
-                             "not list it"))
+  EXPECT_TRUE(
+      contains(p[0],
+               "checks.no_ghosting: parameters of no_ghosting are set but checks.invariants does "
+               "not list it"))
       << p[0];
 }
 
@@ -68,8 +74,8 @@ TEST(InvariantValidation, DuplicateIsAProblem) {
 TEST(InvariantValidation, ApplicableInvariantsWithTheirParametersLoad) {
   EXPECT_TRUE(problemsOf(R"({
     "movers": [{"speed": 2}],
-    "checks": {"invariants": ["history_bounded", "no_ghosting", "temporal_stability", "finite", "energy",
-                             "determinism"],
+    "checks": {"invariants": ["history_bounded", "no_ghosting", "temporal_stability", "finite",
+                             "energy", "determinism"],
                "no_ghosting": {"frames": 4}, "energy": {"epsilon": 0.05}}})")
                   .empty());
   EXPECT_TRUE(problemsOf(R"({"jitter": {"pattern": "none"},

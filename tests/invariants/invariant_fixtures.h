@@ -19,7 +19,8 @@ constexpr int kH = 12;
 
 // Integer hash (lowbias32) -> [0, 1): the same noise on every machine.
 inline float noise(int x, int y, int frame, uint32_t seed = 0) {
-  uint32_t h = uint32_t(x) * 0x9E3779B1u ^ uint32_t(y) * 0x85EBCA77u ^ uint32_t(frame) * 0xC2B2AE3Du ^ seed;
+  uint32_t h =
+      uint32_t(x) * 0x9E3779B1u ^ uint32_t(y) * 0x85EBCA77u ^ uint32_t(frame) * 0xC2B2AE3Du ^ seed;
   h ^= h >> 16;
   h *= 0x7FEB352Du;
   h ^= h >> 15;
@@ -71,8 +72,8 @@ struct Frame {
   }
 };
 
-inline Outcome runAll(spec::InvariantKind kind, const spec::CaseSpec& spec, const std::vector<Frame>& frames,
-                      const std::vector<Frame>& repeat = {}) {
+inline Outcome runAll(spec::InvariantKind kind, const spec::CaseSpec& spec,
+                      const std::vector<Frame>& frames, const std::vector<Frame>& repeat = {}) {
   auto inv = makeInvariant(kind, spec);
   EXPECT_NE(inv, nullptr);
   for (const auto& f : frames) inv->observe(f.view());

@@ -11,8 +11,12 @@ constexpr int kFrames = 12;
 constexpr int kK = 3;
 
 // A 3x3 red block moving right 1 px per frame over a textured background, from x = 1.
-int moverLeft(int frame) { return 1 + frame; }
-bool covered(int x, int y, int frame) { return x >= moverLeft(frame) && x < moverLeft(frame) + 3 && y >= 4 && y < 7; }
+int moverLeft(int frame) {
+  return 1 + frame;
+}
+bool covered(int x, int y, int frame) {
+  return x >= moverLeft(frame) && x < moverLeft(frame) + 3 && y >= 4 && y < 7;
+}
 
 // The output shows the mover colour at pixels it left fewer than `trail` frames ago (a
 // ghost), plus small deterministic noise everywhere.
@@ -28,12 +32,14 @@ std::vector<Frame> moverSequence(int trail, bool moving = true) {
     fr.ids = rgba(0, 0, 0);
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x)
-        if (covered(x, y, t)) setRgb(fr.reference, x, y, 0.9f, 0.1f, 0.1f), fr.ids.at(x, y, 2) = 1.0f;
+        if (covered(x, y, t))
+          setRgb(fr.reference, x, y, 0.9f, 0.1f, 0.1f), fr.ids.at(x, y, 2) = 1.0f;
     fr.output = fr.reference;
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
         bool ghost = false;
-        for (int back = 1; back < trail && t - back >= 0; ++back) ghost = ghost || covered(x, y, t - back);
+        for (int back = 1; back < trail && t - back >= 0; ++back)
+          ghost = ghost || covered(x, y, t - back);
         if (ghost && !covered(x, y, t)) setRgb(fr.output, x, y, 0.9f, 0.1f, 0.1f);
         for (int c = 0; c < 3; ++c) fr.output.at(x, y, c) += 0.01f * (noise(x, y, f) - 0.5f);
       }
@@ -96,7 +102,8 @@ TEST(InvariantNoGhosting, MissingIdsFails) {
 
 TEST(InvariantNoGhosting, InapplicableWithoutMovingMoversOrHistory) {
   EXPECT_EQ(inapplicable(InvariantKind::NoGhosting, moverCase()), "");
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, staticCase()), "the case has no movers"));
+  EXPECT_TRUE(
+      contains(inapplicable(InvariantKind::NoGhosting, staticCase()), "the case has no movers"));
   auto still = moverCase();
   still.movers[0].speed = 0.0f;
   EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, still), "no mover moves"));

@@ -11,8 +11,8 @@ constexpr int kFrames = 10;
 
 // Background plus per-frame noise of the given amplitudes in the reference and the output;
 // `velocityPx` on every pixel; pixels with x < moverColumns are flagged as a mover.
-std::vector<Frame> sequence(float refAmp, float outAmp, float velocityPx = 0.0f, int moverColumns = 0,
-                            float moverAmp = 0.0f) {
+std::vector<Frame> sequence(float refAmp, float outAmp, float velocityPx = 0.0f,
+                            int moverColumns = 0, float moverAmp = 0.0f) {
   const Image bg = background();
   std::vector<Frame> seq;
   for (int f = 0; f < kFrames; ++f) {
@@ -56,13 +56,16 @@ TEST(InvariantTemporalStability, ThreeTimesTheReferenceFlickerFails) {
 
 // A still reference: the bound is epsilon alone.
 TEST(InvariantTemporalStability, EpsilonBoundsFlickerOfAStillReference) {
-  EXPECT_TRUE(runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.002f)).passed);
-  EXPECT_FALSE(runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.05f)).passed);
+  EXPECT_TRUE(
+      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.002f)).passed);
+  EXPECT_FALSE(
+      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.05f)).passed);
 }
 
 // Movers change legitimately; only static pixels count.
 TEST(InvariantTemporalStability, MoverPixelsAreNotStatic) {
-  const auto o = runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f, 0.0f, 4, 3.0f));
+  const auto o =
+      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f, 0.0f, 4, 3.0f));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "mean_static_pixels"), double((kW - 4) * kH));
 }
@@ -95,5 +98,6 @@ TEST(InvariantTemporalStability, InapplicableWithoutHistoryOrPerPixelBuffers) {
   EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, up), "render.upsample is 2"));
   auto dbg = staticCase();
   dbg.debug.output = spec::DebugOutput::ClampDistance;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, dbg), "debug.output is clamp_distance"));
+  EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, dbg),
+                       "debug.output is clamp_distance"));
 }

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 
-#include "case/case_error.h"
 #include "invariants/invariant.h"
+#include "case/case_error.h"
 
 namespace taa::cases {
 
@@ -162,10 +162,10 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   validateJitter(p, spec.jitter, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);
-  validateInvariants(p, spec, present);
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
+  validateInvariants(p, spec, present);
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 
-#include "invariants/invariant.h"
+#include "case/validate_invariants.h"
 #include "case/case_error.h"
 
 namespace taa::cases {
@@ -116,32 +116,6 @@ void validateRender(Problems& p, RenderSpec& r) {
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
 }
 
-// A listed invariant must measure something the case enables, and parameters of an
-// invariant that is not listed would silently do nothing.
-void validateInvariants(Problems& p, const CaseSpec& spec, const std::set<std::string>& present) {
-  const auto& listed = spec.checks.invariants;
-  for (size_t i = 0; i < listed.size(); ++i) {
-    const std::string key = "checks.invariants[" + std::to_string(i) + "]";
-    const auto before = listed.begin() + long(i);
-    if (std::find(listed.begin(), before, listed[i]) != before) {
-      p.add(key, std::string("'") + enumToString(listed[i]) + "' is listed twice; remove one");
-      continue;
-    }
-    if (auto why = invariants::inapplicable(listed[i], spec); !why.empty()) p.add(key, why);
-  }
-  const std::pair<const char*, InvariantKind> params[] = {
-      {"no_ghosting", InvariantKind::NoGhosting}, {"converges", InvariantKind::Converges},
-      {"temporal_stability", InvariantKind::TemporalStability}, {"energy", InvariantKind::Energy},
-      {"bit_stable", InvariantKind::BitStable}};
-  for (const auto& [name, kind] : params) {
-    const std::string key = std::string("checks.") + name;
-    if (present.count(key) && std::find(listed.begin(), listed.end(), kind) == listed.end())
-      p.add(key, std::string("parameters of ") + name +
-                     " are set but checks.invariants does not list it; add \"" + name +
-                     "\" to checks.invariants or remove " + key);
-  }
-}
-
 }  // namespace
 
 void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
@@ -165,7 +139,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
-  validateInvariants(p, spec, present);
+  for (const auto& [key, msg] : invariantProblems(spec, present)) p.add(key, msg);
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.

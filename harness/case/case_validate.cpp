@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 
+#include "case/validate_invariants.h"
 #include "case/case_error.h"
 #include "case/validate_taa.h"
 
@@ -175,6 +176,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
+  for (const auto& [key, msg] : invariantProblems(spec, present)) p.add(key, msg);
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.

@@ -1,0 +1,118 @@
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "cli/run_cases.h"
+#include "golden/bless.h"
+#include "golden/golden_store.h"
+#include "run/console.h"
+
+namespace taa::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* kUsage =
+    "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR]\n"
+    "taa-harness bless --failed-from out/results.json --reason \"...\"   (re-bless what failed last run)\n"
+    "  renders each case, runs its invariants (a failing invariant refuses the bless unless --force),\n"
+    "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
+
+std::vector<std::string> failedCases(const fs::path& results) {
+  std::ifstream in(results);
+  if (!in) throw UsageError(results.string() + ": cannot read; pass the results.json of a previous run");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  std::vector<std::string> files;
+  for (const auto& c : run::runResultsFromJson(j).cases)
+    if (run::caseFailed(c) && c.status != run::CaseStatus::Error) files.push_back(c.file);
+  return files;
+}
+
+void printChanges(const run::CaseResult& r) {
+  if (r.frames.empty()) return;
+  for (const auto& f : r.frames) {
+    std::cout << "  " << r.name << " frame " << f.frame << ": ";
+    if (f.status == run::FrameStatus::MissingGolden)
+      std::cout << "new golden\n";
+    else if (f.status == run::FrameStatus::Exact)
+      std::cout << "unchanged\n";
+    else
+      std::cout << "changed: max_abs " << f.metrics.maxAbs << ", rmse " << f.metrics.rmse << ", psnr "
+                << f.metrics.psnr << " dB, flip_mean " << f.metrics.flipMean << ", flip_p99 " << f.metrics.flipP99
+                << " (old " << f.goldenSha256.substr(0, 12) << ", new " << f.actualSha256.substr(0, 12) << ")\n";
+  }
+}
+}  // namespace
+
+int cmdBless(const Args& args) {
+  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device"}, kUsage);
+  const std::string reason = a.value("--reason");
+  if (reason.find_first_not_of(" \t") == std::string::npos)
+    throw UsageError("--reason is required: say why the images changed (it is stored in the manifest)\nusage: " +
+                     std::string(kUsage));
+  std::vector<std::string> paths = a.positional;
+  if (a.values.count("--failed-from")) {
+    const auto failed = failedCases(a.value("--failed-from"));
+    if (failed.empty()) {
+      std::cout << "nothing to bless: no case failed in " << a.value("--failed-from") << "\n";
+      return kPass;
+    }
+    paths.insert(paths.end(), failed.begin(), failed.end());
+  }
+  if (paths.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
+  const CaseBatch batch = loadBatch(paths, "");
+  BatchOptions options;
+  options.run.outDir = a.value("--out", "out/bless");
+  options.run.goldensRoot = a.value("--goldens");
+  options.device = a.value("--device");
+  fs::create_directories(options.run.outDir);
+  const auto outcome = runBatch(batch, options, nullptr, /*keepOutputs=*/true);
+  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
+
+  int exit = kPass;
+  for (size_t k = 0; k < batch.cases.size(); ++k) {
+    const auto& loaded = batch.cases[k];
+    const auto& r = outcome.results.cases[k];
+    if (r.status == run::CaseStatus::Error) {
+      std::cout << "REFUSED " << r.name << ": " << r.message << "\n";
+      exit = kRegression;
+      continue;
+    }
+    bool invariantsFailed = false;
+    for (const auto& inv : r.invariants)
+      if (!inv.passed) {
+        std::cout << "FAIL " << r.name << " invariant " << inv.name << ": " << inv.detail << "\n";
+        invariantsFailed = true;
+      }
+    if (invariantsFailed && !a.has("--force")) {
+      std::cout << "REFUSED " << r.name << ": invariants fail; fix the case or pass --force to bless anyway\n";
+      exit = kRegression;
+      continue;
+    }
+    printChanges(r);
+    const fs::path root = options.run.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file)
+                                                          : options.run.goldensRoot;
+    const auto old = golden::loadGoldens(root, loaded.spec.name);
+    const auto& frames = outcome.outputs.at(loaded.spec.name);
+    const auto manifest =
+        golden::makeManifest(loaded, outcome.environment, frames, reason, old ? &old->manifest : nullptr);
+    std::vector<std::pair<golden::GoldenFrame, Image>> files;
+    for (const auto& gf : manifest.frames) files.emplace_back(gf, frames.at(gf.frame));
+    golden::replaceGoldens(root, manifest, files);
+    std::cout << "BLESSED " << r.name << ": " << manifest.frames.size() << " frame(s) in " << (root / r.name).string()
+              << " (" << reason << ")\n";
+  }
+  return exit;
+}
+
+}  // namespace taa::cli

@@ -1,0 +1,139 @@
+#include "cli/run_cases.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include "case/case_error.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "core/image_io.h"
+#include "golden/environment.h"
+#include "scene/scene_error.h"
+#include "vk/check.h"
+
+namespace taa::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> expand(const std::vector<std::string>& paths) {
+  std::vector<fs::path> files;
+  for (const auto& p : paths) {
+    if (fs::is_directory(p)) {
+      std::vector<fs::path> inDir;
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.path().extension() == ".json") inDir.push_back(e.path());
+      std::sort(inDir.begin(), inDir.end());
+      files.insert(files.end(), inDir.begin(), inDir.end());
+    } else {
+      files.emplace_back(p);
+    }
+  }
+  return files;
+}
+
+std::pair<int, int> parseShard(const std::string& shard) {
+  const auto slash = shard.find('/');
+  try {
+    if (slash != std::string::npos) {
+      const int i = std::stoi(shard.substr(0, slash)), n = std::stoi(shard.substr(slash + 1));
+      if (n >= 1 && i >= 1 && i <= n) return {i, n};
+    }
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N, e.g. --shard 2/4");
+}
+
+std::function<void(int, int)> terminalProgress(const std::string& name, size_t index, size_t count) {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [name, index, count](int f, int frames) {
+    std::cerr << "\r[" << index + 1 << "/" << count << "] " << name << " frame " << f + 1 << "/" << frames
+              << "\033[K" << std::flush;
+    if (f + 1 == frames) std::cerr << "\r\033[K" << std::flush;
+  };
+}
+
+}  // namespace
+
+CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard) {
+  CaseBatch batch;
+  std::vector<std::string> problems;
+  for (const auto& file : expand(paths)) {
+    try {
+      batch.cases.push_back(cases::loadCase(file));
+    } catch (const cases::CaseError& e) {
+      problems.insert(problems.end(), e.problems().begin(), e.problems().end());
+    }
+  }
+  if (!problems.empty()) throw cases::CaseError(problems);
+  if (batch.cases.empty()) throw UsageError("no case files found in the given paths");
+  if (!shard.empty()) {
+    const auto [i, n] = parseShard(shard);
+    CaseBatch mine;
+    for (size_t k = 0; k < batch.cases.size(); ++k)
+      if (int(k % size_t(n)) == i - 1) mine.cases.push_back(std::move(batch.cases[k]));
+    return mine;
+  }
+  return batch;
+}
+
+BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
+                      const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs) {
+  BatchOutcome out;
+  vk::ContextOptions co;
+  co.device = options.device;
+  co.validate = options.validate;
+  co.shaderCacheDir = options.run.outDir / ".shader-cache";
+  fs::create_directories(co.shaderCacheDir);
+  vk::Context ctx(co);
+  out.results.device = ctx.info().name;
+  out.environment = golden::currentEnvironment(ctx.info());
+  out.results.fingerprint = out.environment.fingerprint();
+  bool regression = false, badInput = false;
+  for (size_t k = 0; k < batch.cases.size(); ++k) {
+    const auto& loaded = batch.cases[k];
+    run::RunOptions ro = options.run;
+    ro.progress = terminalProgress(loaded.spec.name, k, batch.cases.size());
+    run::CaseResult result;
+    try {
+      const int before = ctx.validationMessages();
+      std::map<int, Image>* keep = keepOutputs ? &out.outputs[loaded.spec.name] : nullptr;
+      result = run::runCase(ctx, loaded, ro, keep);
+      if (ctx.validationMessages() > before) {
+        result.status = run::CaseStatus::Fail;
+        result.message += std::string(result.message.empty() ? "" : "; ") +
+                          std::to_string(ctx.validationMessages() - before) + " validation message(s) (see stderr)";
+      }
+    } catch (const scene::SceneError& e) {
+      result.name = loaded.spec.name;
+      result.file = loaded.spec.file.string();
+      result.status = run::CaseStatus::Error;
+      result.message = e.what();
+      badInput = true;
+    } catch (const ImageIoError& e) {
+      result.name = loaded.spec.name;
+      result.file = loaded.spec.file.string();
+      result.status = run::CaseStatus::Error;
+      result.message = e.what();
+      regression = true;
+    } catch (const std::runtime_error& e) {
+      if (dynamic_cast<const vk::EnvironmentError*>(&e) || dynamic_cast<const vk::VulkanError*>(&e)) throw;
+      result.name = loaded.spec.name;
+      result.file = loaded.spec.file.string();
+      result.status = run::CaseStatus::Error;
+      result.message = e.what();
+      regression = true;
+    }
+    regression |= result.status != run::CaseStatus::Pass;
+    if (onCase) onCase(result);
+    out.results.cases.push_back(std::move(result));
+  }
+  out.exitCode = badInput ? kBadInput : regression ? kRegression : kPass;
+  return out;
+}
+
+}  // namespace taa::cli

@@ -69,7 +69,8 @@ img { image-rendering: pixelated; display: block; background: #888; }
   background: repeating-linear-gradient(45deg, #fafafa, #fafafa 6px, #f0f0f0 6px, #f0f0f0 12px); }
 .ab-tools { display: flex; gap: 6px; align-items: center; font: 12px var(--mono);
   margin: 8px 0 3px; flex-wrap: wrap; }
-.ab-scroll { max-width: 100%; max-height: 80vh; overflow: auto; border: 1px solid var(--line); }
+.ab-scroll { display: inline-block; max-width: 100%; max-height: 80vh; overflow: auto;
+  border: 1px solid var(--line); vertical-align: top; }
 .split { position: relative; display: inline-block; line-height: 0; cursor: ew-resize;
   touch-action: none; user-select: none; outline: none; }
 .split:focus-visible { box-shadow: 0 0 0 2px #2f6fdb; }
@@ -161,7 +162,7 @@ const char* const kReportJs = R"JS(
   function autoZoom(ab) {
     var n = ab.querySelector('.ab-actual').naturalWidth;
     var room = Math.min(ab.clientWidth || 1024, 1024);
-    var z = [4, 2, 1].filter(function (k) { return n * k <= room; })[0] || 1;
+    var z = [8, 4, 2, 1].filter(function (k) { return n * k <= room; })[0] || 1;
     setZoom(ab, z);
   }
   function whenLoaded(img, f) {
@@ -190,6 +191,13 @@ const char* const kReportJs = R"JS(
       } else {
         img.classList.add('fit');
       }
+    });
+  });
+  // Crops arrive magnified already; small ones get another whole factor to about 256 px.
+  document.querySelectorAll('.crops img').forEach(function (img) {
+    whenLoaded(img, function () {
+      var n = img.naturalWidth;
+      img.style.width = (n * Math.min(4, Math.max(1, Math.floor(256 / n)))) + 'px';
     });
   });
   document.querySelectorAll('button.copy').forEach(function (b) {

@@ -58,7 +58,14 @@ std::string metricsTable(const run::CaseResult& c, const std::string& id) {
     s += std::string("<tr") + (bad ? " class=\"bad\"" : "") + "><td class=\"num\"><a href=\"#" +
          id + "-f" + std::to_string(f.frame) + "\">" + std::to_string(f.frame) + "</a></td>";
     s += "<td><span class=\"badge " + frameClass(f.status) + "\">" + frameLabel(f.status) +
-         "</span></td><td>" + (f.toleranceMode ? "tolerance" : "exact") + "</td>";
+         "</span></td>";
+    if (f.status == run::FrameStatus::MissingGolden) {
+      // Nothing was compared: zeros here would read as a perfect match.
+      s += "<td colspan=\"" + std::to_string(kColumns.size() + 1) +
+           "\" class=\"muted\">not compared: no golden</td></tr>\n";
+      continue;
+    }
+    s += std::string("<td>") + (f.toleranceMode ? "tolerance" : "exact") + "</td>";
     for (const auto& col : kColumns) {
       const bool hit = failedMetric(f, col.key) || failedMetric(f, col.title);
       s += std::string("<td class=\"num") + (hit ? " bad" : "") + "\">" +
@@ -140,6 +147,7 @@ std::string curves(const run::CaseResult& c) {
 }
 
 std::string timingsTable(const run::CaseResult& c) {
+  if (c.timings.empty() && c.seconds == 0.0) return "";  // the case never got to render
   std::string s = "<h3>Pass timings</h3>\n";
   if (c.timings.empty()) {
     s += "<p class=\"muted\">no timings recorded</p>\n";
@@ -190,10 +198,15 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
   s += curves(c);
   for (const auto& f : c.frames) s += renderFrame(f, id + "-f" + std::to_string(f.frame), dir);
   s += timingsTable(c);
-  s += "<details><summary>renderer log (" + std::to_string(c.log.size()) +
-       " lines: passes and buffers)</summary><pre class=\"log\">";
-  for (const auto& line : c.log) s += escapeMarkup(line) + "\n";
-  s += "</pre></details>\n</section>\n";
+  if (c.log.empty()) {
+    s += "<p class=\"muted\">no renderer log</p>\n";
+  } else {
+    s += "<details><summary>renderer log (" + std::to_string(c.log.size()) +
+         " lines: passes and buffers)</summary><pre class=\"log\">";
+    for (const auto& line : c.log) s += escapeMarkup(line) + "\n";
+    s += "</pre></details>\n";
+  }
+  s += "</section>\n";
   return s;
 }
 

@@ -21,7 +21,7 @@ std::string splitView(const run::FrameImages& im, const fs::path& dir) {
     return "<div class=\"missing\">A/B view needs both the golden and the actual image</div>\n";
   std::string s = "<div class=\"ab\" data-zoom=\"auto\">\n<div class=\"ab-tools\">";
   s += "<span>A/B: golden | actual; drag, or focus and use \xE2\x86\x90 \xE2\x86\x92</span>";
-  for (const char* z : {"1", "2", "4"})
+  for (const char* z : {"1", "2", "4", "8"})
     s += std::string("<button type=\"button\" class=\"zoom\" data-zoom=\"") + z +
          "\" aria-pressed=\"false\">" + z + "x</button>";
   s += "</div>\n<div class=\"ab-scroll\"><div class=\"split\" tabindex=\"0\" role=\"slider\" "

@@ -29,7 +29,7 @@ struct Axis {
   std::string label(double v) const {
     if (log) {
       // Decades read best as plain numbers ("1000", "0.001") until they get long.
-      const int e = int(std::lround(std::log10(v)));
+      const int e = int(std::floor(std::log10(v) + 1e-9));
       return e > -6 && e < 6 ? formatFixed(v, std::max(0, -e)) : formatNumber(v, 3);
     }
     return decimals >= 0 ? formatFixed(v, decimals) : formatNumber(v, 3);
@@ -98,9 +98,14 @@ Axis makeAxis(std::vector<double> values, bool log, bool fromZero, bool snap, bo
     if (l1 <= l0) l1 = l0 + 1;
     a.lo = l0;
     a.hi = l1;
-    // One tick per decade, thinned when there are many decades.
+    // One tick per decade, thinned when there are many decades; 2 and 5 in between when there
+    // are only one or two, so a narrow range still has something to read values against.
     const int stride = std::max(1, int(std::ceil((l1 - l0 + 1) / maxTicks)));
-    for (int e = int(l0); e <= int(l1); e += stride) a.ticks.push_back(std::pow(10.0, e));
+    for (int e = int(l0); e <= int(l1); e += stride) {
+      a.ticks.push_back(std::pow(10.0, e));
+      if (l1 - l0 <= 2 && e < int(l1))
+        for (const double m : {2.0, 5.0}) a.ticks.push_back(m * std::pow(10.0, e));
+    }
     return a;
   }
   if (fromZero) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
@@ -185,7 +190,8 @@ std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& o)
         if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) return true;
     return false;
   }();
-  Axis ax = makeAxis(xs, o.logX, false, false, o.integerX, std::max(2, int(w / 70)));
+  // Frame axes end at the first and last frame; other axes end on a labelled tick.
+  Axis ax = makeAxis(xs, o.logX, false, !o.integerX, o.integerX, std::max(2, int(w / 70)));
   Axis ay = makeAxis(ys, o.logY, o.yFromZero, true, false, std::max(2, int(h / 40)));
   ax.p0 = kMarginLeft;
   ax.p1 = w - kMarginRight;

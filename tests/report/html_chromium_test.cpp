@@ -11,6 +11,7 @@
 
 #include "report/fixture.h"
 #include "report/html_report.h"
+#include "report/svg_plot.h"
 #include "report/text_util.h"
 
 namespace fs = std::filesystem;
@@ -71,8 +72,32 @@ TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {
     GTEST_SKIP() << "chromium not found (apt-get install chromium, or set TAA_CHROMIUM)";
   const fs::path dir = fs::absolute(taa::test::freshDir("chromium"));
   const auto results = taa::test::sampleRun(dir);
-  taa::report::writeHtmlReport(dir / "report.html", results);
-  const std::string html = taa::report::renderHtmlReport(results, dir);
+  // The shape the error-versus-time sweep will have: a scatter, its Pareto front and a table.
+  const std::vector<double> ms = {1.1, 1.6, 2.4, 3.9, 2.0, 5.2},
+                            err = {0.05, 0.02, 0.012, 0.011, 0.03, 0.0105};
+  taa::report::PlotSeries runs{
+      .name = "configs", .x = ms, .y = err, .line = false, .markers = true};
+  taa::report::PlotSeries front{.name = "Pareto front", .colour = "#c62828", .highlight = true};
+  std::vector<std::vector<std::string>> rows;
+  for (size_t i : taa::report::paretoFront(ms, err)) {
+    front.x.push_back(ms[i]);
+    front.y.push_back(err[i]);
+  }
+  for (size_t i = 0; i < ms.size(); ++i)
+    rows.push_back({"config " + std::to_string(i), taa::report::formatNumber(ms[i]),
+                    taa::report::formatNumber(err[i])});
+  taa::report::ReportExtras extras;
+  extras.sections.push_back({"Error versus run time", "Pareto front in red.",
+                             taa::report::svgPlot({runs, front}, {.width = 560,
+                                                                  .height = 260,
+                                                                  .title = "sweep",
+                                                                  .xLabel = "ms per frame",
+                                                                  .yLabel = "RMSE",
+                                                                  .logY = true,
+                                                                  .yFromZero = false}),
+                             taa::report::htmlTable({"config", "ms", "RMSE"}, rows)});
+  taa::report::writeHtmlReport(dir / "report.html", results, extras);
+  const std::string html = taa::report::renderHtmlReport(results, dir, extras);
   const size_t images = count(html, "<img ");
 
   const auto start = std::chrono::steady_clock::now();
@@ -90,6 +115,7 @@ TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {
   EXPECT_EQ(body["data-images-loaded"], std::to_string(images) + "/" + std::to_string(images))
       << "broken: " << body["data-images-broken"];
   EXPECT_EQ(body.count("data-js-error"), 0u) << body["data-js-error"];
+  EXPECT_NE(dom.find("<h2>Error versus run time</h2>"), std::string::npos);
   // 2x zoom of the 48 px wide test frame; a press at a quarter of its width; two arrow keys move
   // the divider one image pixel each.
   EXPECT_EQ(body["data-split-width"], "96");

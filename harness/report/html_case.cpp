@@ -18,7 +18,7 @@ std::string num(double v, int significant = 4) {
   return escapeMarkup(formatNumber(v, significant));
 }
 
-// Lower case without '_' or spaces, so "max_abs", "maxAbs" and "Max abs" all compare equal.
+// Lower case without '_', '-' or spaces, so "max_abs", "maxAbs" and "Max abs" compare equal.
 std::string squash(std::string_view text) {
   std::string out;
   for (char c : text)
@@ -30,8 +30,7 @@ std::string squash(std::string_view text) {
 bool failedMetric(const run::FrameComparison& f, std::string_view metric) {
   const std::string key = squash(metric);
   return std::any_of(f.failures.begin(), f.failures.end(), [&](const std::string& line) {
-    const std::string head = squash(line.substr(0, line.find_first_of("0123456789<>=:")));
-    return head == key;
+    return squash(line).starts_with(key);  // "flip_p99 0.3 > 0.2", "FLIP p99: 0.3 > 0.2"
   });
 }
 

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string findChromium() {
-  if (const char* env = std::getenv("TAA_CHROMIUM"); env && *env) return env;
+  if (const char* env = std::getenv("TAA_CHROMIUM"); env && *env) return fs::exists(env) ? env : "";
   for (const char* p : {"/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"})
     if (fs::exists(p)) return p;
   return "";

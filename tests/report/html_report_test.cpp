@@ -109,10 +109,10 @@ TEST_F(ReportHtml, ListsCasesFailuresAndEscapesUserText) {
 
 TEST_F(ReportHtml, MetricsShowNonFiniteValuesAndMarkFailures) {
   EXPECT_NE(html_.find("<td class=\"num\">inf</td>"), std::string::npos);  // PSNR of exact frame
-  EXPECT_NE(html_.find("<td class=\"num\">nan</td>"), std::string::npos);
+  EXPECT_NE(html_.find("<td class=\"num bad\">nan</td>"), std::string::npos);
   EXPECT_NE(html_.find("<td class=\"num bad\">0.021</td>"), std::string::npos);
   EXPECT_NE(html_.find("<td class=\"num bad\">0.08</td>"), std::string::npos);
-  EXPECT_EQ(count(html_, "num bad"), 2u);
+  EXPECT_EQ(count(html_, "num bad"), 3u);  // share over and max abs did not fail
   EXPECT_NE(html_.find("x 25, y 19, 12\xC3\x97"
                        "8 px"),
             std::string::npos);  // crop rectangle

@@ -1,0 +1,212 @@
+// One case of the report: status and message, metrics, invariants, curves, frames, timings, log.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string>
+
+#include "report/html_parts.h"
+#include "report/svg_plot.h"
+#include "report/text_util.h"
+
+namespace taa::report::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string num(double v, int significant = 4) {
+  return escapeMarkup(formatNumber(v, significant));
+}
+
+// Lower case without '_', '-' or spaces, so "max_abs", "maxAbs" and "Max abs" compare equal.
+std::string squash(std::string_view text) {
+  std::string out;
+  for (char c : text)
+    if (c != '_' && c != ' ' && c != '-') out += char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Whether a failure line ("rmse 0.021 > 0.01") is about the given metric, to mark its cell.
+bool failedMetric(const run::FrameComparison& f, std::string_view metric) {
+  const std::string key = squash(metric);
+  return std::any_of(f.failures.begin(), f.failures.end(), [&](const std::string& line) {
+    return squash(line).starts_with(key);  // "flip_p99 0.3 > 0.2", "FLIP p99: 0.3 > 0.2"
+  });
+}
+
+std::string metricsTable(const run::CaseResult& c, const std::string& id) {
+  if (c.frames.empty()) return "<p class=\"muted\">no frames were compared</p>\n";
+  struct Column {
+    const char* title;
+    const char* key;
+    double run::ImageMetrics::*field;
+  };
+  static constexpr std::array<Column, 6> kColumns = {{
+      {"max abs", "max_abs", &run::ImageMetrics::maxAbs},
+      {"RMSE", "rmse", &run::ImageMetrics::rmse},
+      {"PSNR dB", "psnr", &run::ImageMetrics::psnr},
+      {"share over", "share_over", &run::ImageMetrics::shareOver},
+      {"FLIP mean", "flip_mean", &run::ImageMetrics::flipMean},
+      {"FLIP p99", "flip_p99", &run::ImageMetrics::flipP99},
+  }};
+  std::string s = "<table class=\"metrics\"><tr><th>frame</th><th>status</th><th>mode</th>";
+  for (const auto& col : kColumns) s += std::string("<th class=\"num\">") + col.title + "</th>";
+  s += "</tr>\n";
+  for (const auto& f : c.frames) {
+    const bool bad = f.status == run::FrameStatus::Failed;
+    s += std::string("<tr") + (bad ? " class=\"bad\"" : "") + "><td class=\"num\"><a href=\"#" +
+         id + "-f" + std::to_string(f.frame) + "\">" + std::to_string(f.frame) + "</a></td>";
+    s += "<td><span class=\"badge " + frameClass(f.status) + "\">" + frameLabel(f.status) +
+         "</span></td>";
+    if (f.status == run::FrameStatus::MissingGolden) {
+      // Nothing was compared: zeros here would read as a perfect match.
+      s += "<td colspan=\"" + std::to_string(kColumns.size() + 1) +
+           "\" class=\"muted\">not compared: no golden</td></tr>\n";
+      continue;
+    }
+    s += std::string("<td>") + (f.toleranceMode ? "tolerance" : "exact") + "</td>";
+    for (const auto& col : kColumns) {
+      const bool hit = failedMetric(f, col.key) || failedMetric(f, col.title);
+      s += std::string("<td class=\"num") + (hit ? " bad" : "") + "\">" +
+           num(f.metrics.*col.field) + "</td>";
+    }
+    s += "</tr>\n";
+  }
+  return s + "</table>\n";
+}
+
+std::string invariantsTable(const run::CaseResult& c) {
+  if (c.invariants.empty()) return "";
+  std::string s =
+      "<h3>Invariants</h3>\n<table class=\"invariants\"><tr><th>result</th>"
+      "<th>invariant</th><th>detail</th><th>values</th></tr>\n";
+  for (const auto& inv : c.invariants) {
+    s += std::string("<tr") + (inv.passed ? "" : " class=\"bad\"") + "><td><span class=\"badge " +
+         (inv.passed ? "st-pass\">PASS" : "st-fail\">FAIL") + "</span></td><td class=\"mono\">" +
+         escapeMarkup(inv.name) + "</td><td>" + escapeMarkup(inv.detail) +
+         "</td><td class=\"mono\">";
+    for (size_t i = 0; i < inv.values.size(); ++i)
+      s += (i ? "<br>" : "") + escapeMarkup(inv.values[i].first) + " = " +
+           num(inv.values[i].second, 6);
+    s += "</td></tr>\n";
+  }
+  return s + "</table>\n";
+}
+
+std::string curves(const run::CaseResult& c) {
+  const bool anyGolden = std::any_of(c.frames.begin(), c.frames.end(), [](const auto& f) {
+    return f.status != run::FrameStatus::MissingGolden;
+  });
+  if (c.referenceRmse.empty() && c.frameMs.empty() && !anyGolden) return "";
+  PlotOptions o;
+  o.width = 620;
+  o.height = 200;
+  o.integerX = true;
+  o.xLabel = "frame";
+  for (const auto& f : c.frames) o.xMarks.push_back(f.frame);
+  std::string s = "<h3>Over the sequence</h3>\n<div class=\"plots\">\n";
+  {
+    std::vector<PlotSeries> series;
+    PlotSeries ref{.name = "RMSE vs reference"};
+    for (size_t i = 0; i < c.referenceRmse.size(); ++i) {
+      ref.x.push_back(double(i));
+      ref.y.push_back(c.referenceRmse[i]);
+    }
+    if (!ref.x.empty()) series.push_back(ref);
+    PlotSeries golden{.name = "RMSE vs golden", .line = false, .markers = true};
+    PlotSeries failed{
+        .name = "failed", .colour = "#c62828", .line = false, .markers = true, .highlight = true};
+    for (const auto& f : c.frames) {
+      if (f.status == run::FrameStatus::MissingGolden) continue;
+      PlotSeries& target = f.status == run::FrameStatus::Failed ? failed : golden;
+      target.x.push_back(f.frame);
+      target.y.push_back(f.metrics.rmse);
+      target.pointLabels.push_back("frame " + std::to_string(f.frame) + ": RMSE " +
+                                   formatNumber(f.metrics.rmse, 4));
+    }
+    if (!golden.x.empty()) series.push_back(golden);
+    if (!failed.x.empty()) series.push_back(failed);
+    o.title = "error per frame (dashed: checked frames)";
+    o.yLabel = "RMSE";
+    s += svgPlot(series, o);
+  }
+  if (!c.frameMs.empty()) {
+    PlotSeries ms{.name = "frame time", .colour = "#555"};
+    for (size_t i = 0; i < c.frameMs.size(); ++i) {
+      ms.x.push_back(double(i));
+      ms.y.push_back(c.frameMs[i]);
+    }
+    o.title = "frame time";
+    o.yLabel = "ms";
+    o.width = 420;
+    o.height = 160;
+    s += svgPlot({ms}, o);
+  }
+  return s + "</div>\n";
+}
+
+std::string timingsTable(const run::CaseResult& c) {
+  if (c.timings.empty() && c.seconds == 0.0) return "";  // the case never got to render
+  std::string s = "<h3>Pass timings</h3>\n";
+  if (c.timings.empty()) {
+    s += "<p class=\"muted\">no timings recorded</p>\n";
+  } else {
+    s += "<table class=\"timings\"><tr><th>pass</th><th class=\"num\">median ms</th>"
+         "<th class=\"num\">p95 ms</th></tr>\n";
+    for (const auto& t : c.timings)
+      s += "<tr><td class=\"mono\">" + escapeMarkup(t.pass) + "</td><td class=\"num\">" +
+           escapeMarkup(formatFixed(t.medianMs, 3)) + "</td><td class=\"num\">" +
+           escapeMarkup(formatFixed(t.p95Ms, 3)) + "</td></tr>\n";
+    s += "</table>\n";
+  }
+  return s + "<p class=\"muted mono\">case wall time " + escapeMarkup(formatFixed(c.seconds, 2)) +
+         " s</p>\n";
+}
+
+}  // namespace
+
+std::string renderCase(const run::CaseResult& c, size_t index, const std::string& runFingerprint,
+                       const fs::path& dir) {
+  const std::string id = "case-" + std::to_string(index);
+  std::string s = "<section class=\"case " + caseClass(c.status) + "\" id=\"" + id +
+                  "\" data-case=\"" + escapeMarkup(c.name) + "\">\n";
+  s += "<h2><span class=\"badge " + caseClass(c.status) + "\">" + caseLabel(c.status) +
+       "</span><span>" + escapeMarkup(c.name) + "</span><span class=\"file\">" +
+       escapeMarkup(c.file) + "</span></h2>\n";
+  if (!c.description.empty()) s += "<p class=\"desc\">" + escapeMarkup(c.description) + "</p>\n";
+  if (!c.message.empty()) s += "<div class=\"msg\">" + escapeMarkup(c.message) + "</div>\n";
+  if (!c.blessCommand.empty())
+    s += "<div class=\"bless\"><span class=\"muted\">bless:</span><code>" +
+         escapeMarkup(c.blessCommand) +
+         "</code><button type=\"button\" class=\"copy\">copy"
+         "</button></div>\n";
+  const bool ownFingerprint = !c.fingerprint.empty() && c.fingerprint != runFingerprint;
+  if (ownFingerprint || !c.goldenFingerprint.empty()) {
+    s += "<dl class=\"kv\">";
+    if (ownFingerprint) s += "<dt>fingerprint</dt><dd>" + escapeMarkup(c.fingerprint) + "</dd>";
+    if (!c.goldenFingerprint.empty()) {
+      const std::string& mine = c.fingerprint.empty() ? runFingerprint : c.fingerprint;
+      s += "<dt>golden made on</dt><dd>" + escapeMarkup(c.goldenFingerprint) +
+           (c.goldenFingerprint == mine ? " (same environment)" : " (different environment)") +
+           "</dd>";
+    }
+    s += "</dl>\n";
+  }
+  s += "<h3>Frames compared with goldens</h3>\n" + metricsTable(c, id);
+  s += invariantsTable(c);
+  s += curves(c);
+  for (const auto& f : c.frames) s += renderFrame(f, id + "-f" + std::to_string(f.frame), dir);
+  s += timingsTable(c);
+  if (c.log.empty()) {
+    s += "<p class=\"muted\">no renderer log</p>\n";
+  } else {
+    s += "<details><summary>renderer log (" + std::to_string(c.log.size()) +
+         " lines: passes and buffers)</summary><pre class=\"log\">";
+    for (const auto& line : c.log) s += escapeMarkup(line) + "\n";
+    s += "</pre></details>\n";
+  }
+  s += "</section>\n";
+  return s;
+}
+
+}  // namespace taa::report::detail

@@ -1,0 +1,130 @@
+// Opens the report in headless Chromium (Debian's chromium package, installed by
+// ci/install-deps.sh) and reads back what the page's own script found: whether every image
+// decoded, whether the page rendered, and where the A/B divider went after a scripted zoom click,
+// pointer press and two arrow keys.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <regex>
+
+#include "report/fixture.h"
+#include "report/html_report.h"
+#include "report/svg_plot.h"
+#include "report/text_util.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string findChromium() {
+  if (const char* env = std::getenv("TAA_CHROMIUM"); env && *env) return fs::exists(env) ? env : "";
+  for (const char* p : {"/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"})
+    if (fs::exists(p)) return p;
+  return "";
+}
+
+std::string run(const std::string& command) {
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return "";
+  std::string out;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+  pclose(pipe);
+  return out;
+}
+
+// The DOM after the page's scripts ran: no network (file:// only; features that phone home are
+// off), a fresh profile so no state leaks between runs, virtual time so loading finishes fast.
+std::string dumpDom(const std::string& chromium, const fs::path& profile, const std::string& url,
+                    const fs::path& log) {
+  return run("timeout 120 '" + chromium +
+             "' --headless --no-sandbox --disable-gpu --disable-quic "
+             "--no-first-run --disable-background-networking --disable-component-update "
+             "--disable-sync --disable-extensions --user-data-dir='" +
+             profile.string() + "' --virtual-time-budget=5000 --dump-dom '" + url + "' 2>'" +
+             log.string() + "'");
+}
+
+std::map<std::string, std::string> bodyAttributes(const std::string& dom) {
+  std::map<std::string, std::string> out;
+  std::smatch body;
+  if (!std::regex_search(dom, body, std::regex("<body([^>]*)>"))) return out;
+  const std::string attrs = body[1];
+  const std::regex attr("([\\w-]+)=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(attrs.begin(), attrs.end(), attr);
+       it != std::sregex_iterator(); ++it)
+    out[(*it)[1]] = (*it)[2];
+  return out;
+}
+
+size_t count(const std::string& hay, const std::string& needle) {
+  size_t n = 0;
+  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
+  return n;
+}
+
+TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {
+  const std::string chromium = findChromium();
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium not found (apt-get install chromium, or set TAA_CHROMIUM)";
+  const fs::path dir = fs::absolute(taa::test::freshDir("chromium"));
+  const auto results = taa::test::sampleRun(dir);
+  // The shape the error-versus-time sweep will have: a scatter, its Pareto front and a table.
+  const std::vector<double> ms = {1.1, 1.6, 2.4, 3.9, 2.0, 5.2},
+                            err = {0.05, 0.02, 0.012, 0.011, 0.03, 0.0105};
+  taa::report::PlotSeries runs{
+      .name = "configs", .x = ms, .y = err, .line = false, .markers = true};
+  taa::report::PlotSeries front{.name = "Pareto front", .colour = "#c62828", .highlight = true};
+  std::vector<std::vector<std::string>> rows;
+  for (size_t i : taa::report::paretoFront(ms, err)) {
+    front.x.push_back(ms[i]);
+    front.y.push_back(err[i]);
+  }
+  for (size_t i = 0; i < ms.size(); ++i)
+    rows.push_back({"config " + std::to_string(i), taa::report::formatNumber(ms[i]),
+                    taa::report::formatNumber(err[i])});
+  taa::report::ReportExtras extras;
+  extras.sections.push_back({"Error versus run time", "Pareto front in red.",
+                             taa::report::svgPlot({runs, front}, {.width = 560,
+                                                                  .height = 260,
+                                                                  .title = "sweep",
+                                                                  .xLabel = "ms per frame",
+                                                                  .yLabel = "RMSE",
+                                                                  .logY = true,
+                                                                  .yFromZero = false}),
+                             taa::report::htmlTable({"config", "ms", "RMSE"}, rows)});
+  taa::report::writeHtmlReport(dir / "report.html", results, extras);
+  const std::string html = taa::report::renderHtmlReport(results, dir, extras);
+  const size_t images = count(html, "<img ");
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::string url = "file://" + taa::report::encodePath((dir / "report.html").string()) +
+                          "#zoom=2&split=0.25&keys=ArrowRight,ArrowRight";
+  const std::string dom = dumpDom(chromium, dir / "profile", url, dir / "chromium.log");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RecordProperty("chromium_seconds", std::to_string(seconds));
+  ASSERT_NE(dom.find("</html>"), std::string::npos)
+      << "no DOM from chromium; see " << (dir / "chromium.log");
+
+  auto body = bodyAttributes(dom);
+  EXPECT_EQ(body["data-render-ok"], "1");
+  EXPECT_EQ(body["data-images-loaded"], std::to_string(images) + "/" + std::to_string(images))
+      << "broken: " << body["data-images-broken"];
+  EXPECT_EQ(body.count("data-js-error"), 0u) << body["data-js-error"];
+  EXPECT_NE(dom.find("<h2>Error versus run time</h2>"), std::string::npos);
+  // 2x zoom of the 48 px wide test frame; a press at a quarter of its width; two arrow keys move
+  // the divider one image pixel each.
+  EXPECT_EQ(body["data-split-width"], "96");
+  EXPECT_EQ(body["data-split-after-pointer"], "0.2500");
+  EXPECT_EQ(body["data-split-after-keys"], "0.2917");
+  std::smatch divider;
+  ASSERT_TRUE(std::regex_search(dom, divider, std::regex("class=\"divider\" style=\"([^\"]*)\"")));
+  EXPECT_EQ(divider[1], "left: 29.17%;");
+  EXPECT_LT(seconds, 60.0);
+}
+
+}  // namespace

@@ -1,0 +1,154 @@
+#include "report/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "report/fixture.h"
+#include "report/svg_plot.h"
+
+namespace fs = std::filesystem;
+using taa::report::renderHtmlReport;
+using taa::report::writeHtmlReport;
+
+namespace {
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string percentDecode(const std::string& s) {
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '%' && i + 2 < s.size()) {
+      out += char(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> attributeValues(const std::string& html, const std::string& attr) {
+  std::vector<std::string> out;
+  const std::regex re("\\s" + attr + "=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), re); it != std::sregex_iterator();
+       ++it)
+    out.push_back((*it)[1]);
+  return out;
+}
+
+size_t count(const std::string& hay, const std::string& needle) {
+  size_t n = 0;
+  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
+  return n;
+}
+
+class ReportHtml : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = taa::test::freshDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    results_ = taa::test::sampleRun(dir_);
+    writeHtmlReport(dir_ / "report.html", results_);
+    html_ = readFile(dir_ / "report.html");
+  }
+  fs::path dir_;
+  taa::run::RunResults results_;
+  std::string html_;
+};
+
+TEST_F(ReportHtml, EveryImageExistsBesideTheReport) {
+  const auto srcs = attributeValues(html_, "src");
+  EXPECT_EQ(srcs.size(), count(html_, "<img "));
+  // 2 checked frames with 6 images each plus the A/B pair, the golden-less actual, and one frame
+  // whose zoomed diff is missing.
+  EXPECT_EQ(srcs.size(), 8u + 8u + 7u + 1u);
+  for (const auto& src : srcs) {
+    EXPECT_FALSE(src.empty());
+    EXPECT_NE(src[0], '/') << src;
+    EXPECT_TRUE(fs::is_regular_file(dir_ / percentDecode(src))) << src;
+  }
+  // A placeholder, not a broken image.
+  EXPECT_NE(html_.find("diff crop: missing img/deleted_zoom.png"), std::string::npos);
+}
+
+TEST_F(ReportHtml, NoExternalReferences) {
+  std::string lower = html_;
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* bad : {"http", "://", "url(", "@import", "<link", "<iframe", "src=\"//"})
+    EXPECT_EQ(lower.find(bad), std::string::npos) << bad;
+  for (const auto& href : attributeValues(html_, "href")) EXPECT_EQ(href[0], '#') << href;
+  // Exactly one script element: the report's own, inline.
+  EXPECT_EQ(count(lower, "<script"), 1u);
+  EXPECT_EQ(count(lower, "<script>"), 1u);
+}
+
+TEST_F(ReportHtml, ListsCasesFailuresAndEscapesUserText) {
+  for (const auto& c : results_.cases) {
+    EXPECT_NE(html_.find(">" + c.name + "<"), std::string::npos) << c.name;
+    EXPECT_NE(html_.find("data-case=\"" + c.name + "\""), std::string::npos) << c.name;
+  }
+  for (const char* label : {">PASS<", ">FAIL<", ">NO GOLDEN<", ">ERROR<", ">FAILED<", ">EXACT<"})
+    EXPECT_NE(html_.find(label), std::string::npos) << label;
+  EXPECT_NE(html_.find("<li>rmse 0.021 &gt; 0.01</li>"), std::string::npos);
+  EXPECT_NE(html_.find("<li>flip_mean 0.08 &gt; 0.05</li>"), std::string::npos);
+  EXPECT_NE(html_.find("residual 0.12 &gt; 0.05 after 8 frames"), std::string::npos);
+  EXPECT_NE(html_.find("Thin geometry &lt;script&gt;alert(1)&lt;/script&gt; &amp; ghosting"),
+            std::string::npos);
+  EXPECT_NE(html_.find("&quot;&lt;bin&gt;&quot;"), std::string::npos);
+  EXPECT_NE(html_.find("<code>taa-harness bless cases/moving_fence.json</code>"),
+            std::string::npos);
+  EXPECT_NE(html_.find("data-case-count=\"4\""), std::string::npos);
+}
+
+TEST_F(ReportHtml, MetricsShowNonFiniteValuesAndMarkFailures) {
+  EXPECT_NE(html_.find("<td class=\"num\">inf</td>"), std::string::npos);  // PSNR of exact frame
+  EXPECT_NE(html_.find("<td class=\"num bad\">nan</td>"), std::string::npos);
+  EXPECT_NE(html_.find("<td class=\"num bad\">0.021</td>"), std::string::npos);
+  EXPECT_NE(html_.find("<td class=\"num bad\">0.08</td>"), std::string::npos);
+  EXPECT_EQ(count(html_, "num bad"), 3u);  // share over and max abs did not fail
+  EXPECT_NE(html_.find("x 25, y 19, 12\xC3\x97"
+                       "8 px"),
+            std::string::npos);  // crop rectangle
+  EXPECT_NE(html_.find("<td class=\"num\">1.250</td><td class=\"num\">1.500</td>"),
+            std::string::npos);  // pass timing median, p95
+}
+
+TEST_F(ReportHtml, CaseWithoutFramesOrImagesStillRenders) {
+  EXPECT_NE(html_.find("no frames were compared"), std::string::npos);
+  EXPECT_NE(html_.find("A/B view needs both the golden and the actual image"), std::string::npos);
+  EXPECT_NE(html_.find("golden frame 0: no image"), std::string::npos);
+  EXPECT_EQ(count(html_, "<section class=\"case "), 4u);
+  EXPECT_EQ(count(html_, "<svg "), 4u);  // error and frame-time curves of the two full cases
+}
+
+TEST_F(ReportHtml, DeterministicAtomicAndExtendable) {
+  EXPECT_EQ(renderHtmlReport(results_, dir_), html_);
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+
+  taa::report::ReportExtras extras;
+  taa::report::PlotSeries s{.name = "runs", .x = {1, 2, 3}, .y = {0.3, 0.1, 0.2}};
+  extras.sections.push_back(
+      {"Error vs time <sweep>", "a & b", taa::report::svgPlot({s}, {.title = "sweep"}),
+       taa::report::htmlTable({"config", "ms", "rmse"}, {{"a<b", "1.5", "inf"}, {"c"}})});
+  const std::string withExtra = renderHtmlReport(results_, dir_, extras);
+  EXPECT_NE(withExtra.find("<h2>Error vs time &lt;sweep&gt;</h2>"), std::string::npos);
+  EXPECT_NE(withExtra.find("<p>a &amp; b</p>"), std::string::npos);
+  EXPECT_NE(withExtra.find("<td>a&lt;b</td><td class=\"num\">1.5</td><td class=\"num\">inf</td>"),
+            std::string::npos);
+  EXPECT_NE(withExtra.find("<tr><td>c</td><td></td><td></td></tr>"), std::string::npos);
+  EXPECT_LT(withExtra.find("class=\"extra\""), withExtra.find("<script>"));
+}
+
+TEST(ReportHtmlWrite, FailsLoudlyWhenTheFolderIsMissing) {
+  EXPECT_THROW(writeHtmlReport("/nonexistent-dir/report.html", {}), std::runtime_error);
+}
+
+}  // namespace

@@ -25,6 +25,7 @@ const std::map<std::string, Command>& commands() {
       {"new-case", {cmdNewCase, "write a case for a glTF scene with a camera that frames its bounds"}},
       {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
+      {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},
       {"bless", {cmdBless, "write a case's goldens (atomic) with the reason, after its invariants pass"}},
 
   };

@@ -1,0 +1,84 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include "case/case_loader.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "cli/run_cases.h"
+#include "compare/tolerance.h"
+#include "report/html_report.h"
+#include "report/junit.h"
+#include "run/console.h"
+
+namespace taa::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* kUsage =
+    "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] [--validate]\n"
+    "                        [--metric NAME --above X]\n"
+    "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants and\n"
+    "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
+    "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices.\n"
+    "  --metric NAME --above X: exit 1 when a checked frame's NAME (max_abs, rmse, psnr, share_over,\n"
+    "  flip_mean, flip_p99) against its golden exceeds X, else 0 (bit-exactness is not required).\n"
+    "exit: 0 pass, 1 regression, 2 bad input, 3 environment";
+
+// Applies --metric/--above: quality drift past a bound, ignoring bit-exactness.
+int metricVerdict(const run::RunResults& results, const std::string& metric, double above) {
+  bool bad = false;
+  for (const auto& c : results.cases)
+    for (const auto& f : c.frames) {
+      if (f.status == run::FrameStatus::MissingGolden) {
+        std::cout << "MISSING " << c.name << " frame " << f.frame << ": no golden to measure against\n";
+        bad = true;
+        continue;
+      }
+      const double v = compare::metricByName(f.metrics, metric);
+      const bool over = metric == "psnr" ? v < above : !(v <= above);
+      std::cout << (over ? "ABOVE " : "OK ") << c.name << " frame " << f.frame << " " << metric << " " << v
+                << (metric == "psnr" ? " (bound: at least " : " (bound: at most ") << above << ")\n";
+      bad |= over;
+    }
+  return bad ? kRegression : kPass;
+}
+}  // namespace
+
+int cmdRun(const Args& args) {
+  const auto a =
+      parseArgs(args, {"--validate"}, {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kUsage);
+  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
+  if (a.values.count("--metric") != a.values.count("--above"))
+    throw UsageError(std::string("--metric and --above go together\nusage: ") + kUsage);
+  if (a.values.count("--metric")) {
+    run::ImageMetrics probe;
+    compare::metricByName(probe, a.value("--metric"));  // rejects an unknown name before rendering
+  }
+  CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
+  const fs::path out = a.value("--out", "out");
+  fs::create_directories(out);
+  const auto start = std::chrono::steady_clock::now();
+  BatchOptions options;
+  options.run.outDir = out;
+  options.run.goldensRoot = a.value("--goldens");
+  options.device = a.value("--device");
+  options.validate = a.has("--validate");
+  const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::ofstream(out / "results.json") << run::toJson(outcome.results).dump(1) << "\n";
+  report::writeJUnit(out / "junit.xml", outcome.results);
+  report::writeHtmlReport(out / "report.html", outcome.results);
+  run::printSummary(std::cout, outcome.results, seconds);
+  std::cout << "report: " << (out / "report.html").string() << "\n";
+  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
+  if (a.values.count("--metric")) return metricVerdict(outcome.results, a.value("--metric"), std::stod(a.value("--above")));
+  return outcome.exitCode;
+}
+
+}  // namespace taa::cli

@@ -56,8 +56,13 @@ int cmdRun(const Args& args) {
   if (a.values.count("--metric") != a.values.count("--above"))
     throw UsageError(std::string("--metric and --above go together\nusage: ") + kUsage);
   if (a.values.count("--metric")) {
-    run::ImageMetrics probe;
-    compare::metricByName(probe, a.value("--metric"));  // rejects an unknown name before rendering
+    try {
+      run::ImageMetrics probe;
+      compare::metricByName(probe, a.value("--metric"));  // rejects an unknown name before rendering
+      std::stod(a.value("--above"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--metric/--above: ") + e.what());
+    }
   }
   CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
   const fs::path out = a.value("--out", "out");

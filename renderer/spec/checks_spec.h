@@ -9,14 +9,19 @@
 
 namespace taa::spec {
 
+// Defaults measured on lavapipe between CPU feature levels (x86-64-v4 against
+// GALLIUM_OVERRIDE_CPU_CAPS=sse4.1): TAA's feedback turns low-bit differences into a
+// few large single-pixel ones in high-frequency regions (max_abs 0.26, RMSE 0.0074,
+// FLIP mean 0.0013, p99 0.013 on checkerboard_static), so single-pixel bounds are
+// loose and the perceptual and aggregate ones carry the check.
 struct ToleranceSpec {
-  float max_abs = 0.25f;
-  float rmse = 0.01f;
-  float psnr_min = 32.0f;
+  float max_abs = 1.0f;
+  float rmse = 0.02f;
+  float psnr_min = 30.0f;
   float pixel_threshold = 0.05f;
   float pixels_over = 0.02f;
-  float flip_mean = 0.03f;
-  float flip_p99 = 0.35f;
+  float flip_mean = 0.01f;
+  float flip_p99 = 0.1f;
 };
 
 template <class V>

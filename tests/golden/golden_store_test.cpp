@@ -1,0 +1,104 @@
+// Replacing a case's goldens is all or nothing: a failure part-way (or a bless
+// killed before its exchange) leaves the previous set whole and loadable.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/image_io.h"
+#include "golden/golden_store.h"
+
+namespace taa::golden {
+namespace {
+
+namespace fs = std::filesystem;
+
+Manifest manifestFor(const std::string& reason, const std::vector<int>& frames) {
+  Manifest m;
+  m.caseName = "c";
+  m.caseSha256 = std::string(64, 'a');
+  m.bless = {"2026-11-22", "abc", reason};
+  for (int f : frames) m.frames.push_back({f, "frame_" + std::to_string(f) + ".exr", "", 4, 3});
+  return m;
+}
+
+std::vector<std::pair<GoldenFrame, Image>> filesFor(const Manifest& m, float value) {
+  std::vector<std::pair<GoldenFrame, Image>> out;
+  for (const auto& f : m.frames) out.emplace_back(f, Image(4, 3, 4, value));
+  return out;
+}
+
+fs::path freshRoot(const char* name) {
+  const fs::path root = fs::path(TAA_TEST_OUT) / "golden-store" / name;
+  fs::remove_all(root);
+  fs::create_directories(root);
+  return root;
+}
+
+TEST(GoldenStore, ReplaceWritesAndSwapsTheWholeSet) {
+  const fs::path root = freshRoot("swap");
+  const auto first = manifestFor("first", {1, 2});
+  replaceGoldens(root, first, filesFor(first, 0.25f));
+  const auto second = manifestFor("second", {3});
+  replaceGoldens(root, second, filesFor(second, 0.5f));
+  const auto loaded = loadGoldens(root, "c");
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->manifest.bless.reason, "second");
+  ASSERT_EQ(loaded->manifest.frames.size(), 1u);
+  EXPECT_FLOAT_EQ(loaded->load(loaded->manifest.frames[0]).at(0, 0, 0), 0.5f);
+  EXPECT_FALSE(fs::exists(root / "c" / "frame_1.exr"));  // nothing of the old set lingers
+  for (const auto& e : fs::directory_iterator(root)) EXPECT_EQ(e.path().filename(), "c");
+}
+
+TEST(GoldenStore, FailurePartWayLeavesTheOldSetWhole) {
+  const fs::path root = freshRoot("failure");
+  const auto good = manifestFor("good", {1, 2});
+  replaceGoldens(root, good, filesFor(good, 0.25f));
+  const auto bad = manifestFor("bad", {1, 2});
+  auto files = filesFor(bad, 0.75f);
+  files[1].second = Image();  // the second frame cannot be written
+  EXPECT_ANY_THROW(replaceGoldens(root, bad, files));
+  const auto loaded = loadGoldens(root, "c");
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->manifest.bless.reason, "good");
+  for (const auto& f : loaded->manifest.frames) EXPECT_FLOAT_EQ(loaded->load(f).at(0, 0, 0), 0.25f);
+  for (const auto& e : fs::directory_iterator(root)) EXPECT_EQ(e.path().filename(), "c");  // no staging left
+}
+
+TEST(GoldenStore, LeftoversOfAKilledBlessAreIgnoredThenCleaned) {
+  const fs::path root = freshRoot("killed");
+  const auto good = manifestFor("good", {1});
+  replaceGoldens(root, good, filesFor(good, 0.25f));
+  // What a bless killed before its exchange leaves: a hidden, half-written folder.
+  fs::create_directories(root / ".c.bless-999999");
+  std::ofstream(root / ".c.bless-999999" / "frame_1.exr") << "partial";
+  EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "good");
+  const auto next = manifestFor("next", {1});
+  replaceGoldens(root, next, filesFor(next, 0.5f));
+  EXPECT_FALSE(fs::exists(root / ".c.bless-999999"));
+  EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "next");
+}
+
+TEST(GoldenStore, MalformedManifestNamesTheFile) {
+  const fs::path root = freshRoot("malformed");
+  fs::create_directories(root / "c");
+  std::ofstream(root / "c" / "manifest.json") << "{\"case\": 1}";
+  try {
+    loadGoldens(root, "c");
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("manifest.json"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GoldenStore, ManifestRoundTripKeepsEveryField) {
+  auto m = manifestFor("why", {7});
+  m.environment = {"llvmpipe (LLVM 15.0.6, 256 bits)", "llvmpipe", "Mesa 22.3.6", "1.3.230", "x86-64-v3"};
+  m.history.push_back({"2026-01-01", "def", "older"});
+  const auto back = Manifest::fromJson(m.toJson(), "m.json");
+  EXPECT_EQ(back.toJson(), m.toJson());
+  EXPECT_EQ(back.environment.fingerprint(), m.environment.fingerprint());
+}
+
+}  // namespace
+}  // namespace taa::golden

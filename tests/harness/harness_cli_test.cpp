@@ -1,0 +1,202 @@
+// The harness as users drive it: exit codes, bless, stale goldens, the tolerance
+// path on another CPU feature level, metric mode, shards and re-blessing failures.
+// Each test works in its own temporary tree (cases/ + goldens/), never the repo's.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/process.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kSmallCase = R"({
+  "description": "small moving case for CLI tests",
+  "scene": {"builtin": "checkerboard"},
+  "render": {"width": 64, "height": 36},
+  "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
+  "script": {"frames": 6},
+  "output": {"frames": [2, 5]}
+})";
+
+class HarnessCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    root_ = fs::path(TAA_TEST_OUT) / "harness-cli" / info->name();
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "cases");
+    writeCase("small", kSmallCase);
+  }
+  void writeCase(const std::string& name, const std::string& json) {
+    std::ofstream(root_ / "cases" / (name + ".json")) << json;
+  }
+  std::string casePath(const std::string& name) const { return (root_ / "cases" / (name + ".json")).string(); }
+  test::ProcessResult harness(const std::string& args, const std::string& env = "") {
+    return test::runHarness(args + " ", env);
+  }
+  test::ProcessResult run(const std::string& name, const std::string& extra = "", const std::string& env = "") {
+    return harness("run " + casePath(name) + " --out " + (root_ / "out").string() + " " + extra, env);
+  }
+  test::ProcessResult bless(const std::string& name, const std::string& extra = "") {
+    return harness("bless " + casePath(name) + " --out " + (root_ / "bless-out").string() +
+                   " --reason 'test bless' " + extra);
+  }
+  nlohmann::json results() const {
+    std::ifstream in(root_ / "out" / "results.json");
+    return nlohmann::json::parse(in);
+  }
+  fs::path root_;
+};
+
+TEST_F(HarnessCli, MissingGoldensFailThenBlessThenExactPass) {
+  auto r = run("small");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("no goldens"), std::string::npos);
+  r = bless("small");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(root_ / "goldens/small/manifest.json"));
+  EXPECT_TRUE(fs::exists(root_ / "goldens/small/frame_0005.exr"));
+  r = run("small");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("PASS small frame 5 golden exact"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(root_ / "out/report.html"));
+  EXPECT_TRUE(fs::exists(root_ / "out/junit.xml"));
+  EXPECT_EQ(results()["cases"][0]["status"], "pass");
+}
+
+TEST_F(HarnessCli, ManifestRecordsReasonDriverCommitAndHistory) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  ASSERT_EQ(harness("bless " + casePath("small") + " --out " + (root_ / "b2").string() + " --reason 'second'").exitCode, 0);
+  std::ifstream in(root_ / "goldens/small/manifest.json");
+  const auto m = nlohmann::json::parse(in);
+  EXPECT_EQ(m["reason"], "second");
+  EXPECT_EQ(m["history"][0]["reason"], "test bless");
+  EXPECT_NE(m["environment"]["device"].get<std::string>().find("llvmpipe"), std::string::npos);
+  EXPECT_FALSE(m["environment"]["driver_info"].get<std::string>().empty());
+  EXPECT_FALSE(m["environment"]["cpu_features"].get<std::string>().empty());
+  EXPECT_EQ(m["renderer_commit"].get<std::string>().size() >= 40, true);
+  EXPECT_EQ(m["frames"].size(), 2u);
+  EXPECT_EQ(m["case_sha256"].get<std::string>().size(), 64u);
+}
+
+TEST_F(HarnessCli, ChangedPixelsInTheSameEnvironmentAreARegression) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  // A different alpha is a real change of the output.
+  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.5}})"));
+  const auto r = run("small");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("pixels differ from the golden in the same environment"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("STALE small"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(root_ / "out/small/frame_0005.diff.png"));
+}
+
+TEST_F(HarnessCli, EditedCaseWithUnchangedPixelsPassesWithStaleNote) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  std::string edited = kSmallCase;
+  edited.replace(edited.find("small moving case"), 5, "tiny");
+  writeCase("small", edited);
+  const auto r = run("small");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("NOTE small: the case file changed"), std::string::npos) << r.output;
+}
+
+TEST_F(HarnessCli, OtherCpuFeatureLevelUsesTolerancesAndStillCatchesARegression) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  const std::string sse = "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1";
+  auto r = run("small", "", sse);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("golden tolerance"), std::string::npos) << r.output;
+  const auto res = results();
+  EXPECT_NE(res["fingerprint"], res["cases"][0]["golden_fingerprint"]);
+  EXPECT_NE(res["fingerprint"].get<std::string>().find("override:sse4.1"), std::string::npos);
+  EXPECT_TRUE(res["cases"][0]["frames"][1]["tolerance_mode"].get<bool>());
+  // The same environment change with a real regression (no jitter: the frame aliases).
+  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1,
+                                                     R"(, "jitter": {"pattern": "none"}})"));
+  r = run("small", "", sse);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("FAIL small frame 5 golden tolerance"), std::string::npos) << r.output;
+}
+
+TEST_F(HarnessCli, BadInputExitsTwoAndNamesFileKeyAndFix) {
+  writeCase("bad", R"({"taa": {"alpah": 0.2}})");
+  const auto r = run("bad");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.json: taa.alpah: unknown key; did you mean 'taa.alpha'?"), std::string::npos)
+      << r.output;
+}
+
+TEST_F(HarnessCli, MissingDeviceExitsThreeWithTheFix) {
+  const auto r = run("small", "--device no-such-gpu");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("no Vulkan 1.3 device matches 'no-such-gpu'"), std::string::npos) << r.output;
+}
+
+TEST_F(HarnessCli, BlessRefusesFailingInvariantsUnlessForced) {
+  // A moving camera cannot converge: the invariant is inapplicable and validation refuses
+  // it, so use energy with an impossible bound instead.
+  writeCase("strict", R"({
+    "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "script": {"frames": 4}, "checks": {"invariants": ["energy"], "energy": {"epsilon": 0}}
+  })");
+  auto r = bless("strict");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("REFUSED strict"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(root_ / "goldens/strict"));
+  r = bless("strict", "--force");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(root_ / "goldens/strict/manifest.json"));
+}
+
+TEST_F(HarnessCli, BlessNeedsAReason) {
+  const auto r = harness("bless " + casePath("small") + " --reason ''");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--reason is required"), std::string::npos);
+}
+
+TEST_F(HarnessCli, ReblessOnlyTheCasesThatFailedLastRun) {
+  writeCase("other", kSmallCase);
+  ASSERT_EQ(bless("other").exitCode, 0);
+  auto r = harness("run " + (root_ / "cases").string() + " --out " + (root_ / "out").string());
+  EXPECT_EQ(r.exitCode, 1) << r.output;  // small has no goldens yet
+  r = harness("bless --failed-from " + (root_ / "out/results.json").string() + " --out " +
+              (root_ / "bo").string() + " --reason 'bless what failed'");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("BLESSED small"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("BLESSED other"), std::string::npos) << r.output;
+}
+
+TEST_F(HarnessCli, MetricModeBoundsDriftInsteadOfBitExactness) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.11}})"));
+  EXPECT_EQ(run("small").exitCode, 1);
+  EXPECT_EQ(run("small", "--metric flip_mean --above 0.5").exitCode, 0);
+  const auto r = run("small", "--metric flip_mean --above 0.0000001");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("ABOVE small frame 5 flip_mean"), std::string::npos) << r.output;
+  EXPECT_EQ(run("small", "--metric nonsense --above 1").exitCode, 2);
+}
+
+TEST_F(HarnessCli, ShardsPartitionTheCases) {
+  for (const char* n : {"a", "b", "c"}) writeCase(n, R"({"render": {"width": 16, "height": 9}, "script": {"frames": 1}, "checks": {"golden": false}})");
+  fs::remove(root_ / "cases/small.json");
+  std::string seen;
+  for (int i = 1; i <= 2; ++i) {
+    const auto r = harness("run " + (root_ / "cases").string() + " --shard " + std::to_string(i) + "/2 --out " +
+                           (root_ / ("o" + std::to_string(i))).string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(root_ / ("o" + std::to_string(i)) / "results.json");
+    const auto results = nlohmann::json::parse(in);
+    for (const auto& c : results["cases"]) seen += c["name"].get<std::string>();
+  }
+  EXPECT_EQ(seen, "acb");
+  EXPECT_EQ(harness("run " + (root_ / "cases").string() + " --shard 3/2").exitCode, 2);
+}
+
+}  // namespace
+}  // namespace taa

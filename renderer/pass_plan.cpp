@@ -15,10 +15,11 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   PassPlan p;
   const auto& t = s.taa;
   p.taa = t.mode != TaaMode::Off;
-  const bool full = t.mode == TaaMode::Full;
+  const bool accumulate = t.mode == TaaMode::Accumulate;
+  const bool full = t.mode == TaaMode::Full || t.mode == TaaMode::Adaptive || accumulate;
   const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
   const bool antiGhost = full && t.anti_ghosting;
-  const bool consistency = full && t.consistency;
+  const bool consistency = (full && t.consistency) || accumulate;
   p.motionBlur = s.post.motion_blur;
   p.velocity = reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
   p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||

@@ -15,6 +15,7 @@
 #include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
+#include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
 #include "vk/transfer.h"
@@ -58,6 +59,9 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!plan.taa) return nullptr;
+  if (spec.taa.mode == spec::TaaMode::Tscmaa || spec.taa.mode == spec::TaaMode::Adaptive)
+    throw vk::EnvironmentError(std::string("taa.mode ") + spec::enumToString(spec.taa.mode) +
+                               " is not built into this renderer yet");
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 

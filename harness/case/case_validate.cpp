@@ -180,6 +180,8 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.
+  // Temporal accumulation's published blend weight is 0.2 (seed 003).
+  if (spec.taa.mode == TaaMode::Accumulate && !present.count("taa.alpha")) spec.taa.alpha = 0.2f;
   if (spec.output.frames.empty()) spec.output.frames.push_back(frames - 1);
   std::sort(spec.output.frames.begin(), spec.output.frames.end());
   spec.output.frames.erase(std::unique(spec.output.frames.begin(), spec.output.frames.end()),

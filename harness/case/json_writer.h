@@ -2,6 +2,8 @@
 // and lists every setting with its type, range and default (techniques --json).
 #pragma once
 
+#include <charconv>
+#include <cstdlib>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -13,14 +15,23 @@
 
 namespace taa::cases {
 
+// Floats print as their shortest decimal form (0.2, not 0.20000000298023224).
+inline double shortest(float v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::strtod(std::string(buf, r.ptr).c_str(), nullptr);
+}
+
 template <class T>
 nlohmann::json toJson(const T& value) {
-  if constexpr (std::is_enum_v<T>) {
+  if constexpr (std::is_same_v<T, float>) {
+    return shortest(value);
+  } else if constexpr (std::is_enum_v<T>) {
     return spec::enumToString(value);
   } else if constexpr (std::is_same_v<T, glm::vec2>) {
-    return nlohmann::json::array({value.x, value.y});
+    return nlohmann::json::array({shortest(value.x), shortest(value.y)});
   } else if constexpr (std::is_same_v<T, glm::vec3>) {
-    return nlohmann::json::array({value.x, value.y, value.z});
+    return nlohmann::json::array({shortest(value.x), shortest(value.y), shortest(value.z)});
   } else {
     return value;
   }
@@ -82,7 +93,7 @@ class SchemaLister {
   void field(const char* key, T& value, const spec::Meta& meta) { add(key, value, meta, nullptr); }
   template <class T, class R>
   void field(const char* key, T& value, spec::Range<R> range, const spec::Meta& meta) {
-    nlohmann::json r = nlohmann::json::array({range.lo, range.hi});
+    nlohmann::json r = nlohmann::json::array({toJson(range.lo), toJson(range.hi)});
     add(key, value, meta, &r);
   }
   template <class S>

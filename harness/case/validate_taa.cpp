@@ -26,8 +26,9 @@ class Rules {
 std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, const std::set<std::string>& present) {
   Rules r(present);
   const auto& t = s.taa;
-  const bool full = t.mode == TaaMode::Full;
-  const bool blends = t.mode == TaaMode::Basic || full;
+  const bool full = t.mode == TaaMode::Full || t.mode == TaaMode::Adaptive;
+  const bool accumulate = t.mode == TaaMode::Accumulate;
+  const bool blends = t.mode == TaaMode::Basic || full || accumulate;
   const bool resamples = s.render.upsample != 1.0f || !s.render.scale_schedule.empty();
   if (resamples && (t.mode == TaaMode::Off || t.mode == TaaMode::PassThrough))
     r.add("taa.mode", std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
@@ -35,17 +36,26 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, 
 
   r.needs("taa.alpha", blends, "taa.mode is basic or full");
   r.needs("taa.tonemap_weighting", blends, "taa.mode is basic or full");
-  for (const char* key : {"taa.use_velocity", "taa.velocity_sampling", "taa.history_filter", "taa.reject_offscreen",
-                          "taa.depth_culling", "taa.consistency", "taa.anti_ghosting", "taa.rejection_alpha",
+  // Accumulation reprojects (velocity or depth), tests consistency per tap and blends;
+  // the colour-based techniques of the full resolve are not part of it.
+  for (const char* key : {"taa.use_velocity", "taa.velocity_sampling", "taa.reject_offscreen", "taa.rejection_alpha",
+                          "taa.consistency_depth", "taa.consistency_normal"})
+    r.needs(key, full || accumulate, "taa.mode is full or accumulate");
+  for (const char* key : {"taa.history_filter", "taa.depth_culling", "taa.consistency", "taa.anti_ghosting",
                           "taa.rectify", "taa.variance_clip", "taa.shaped_neighborhood", "taa.color_space",
                           "taa.shrink_chroma", "taa.luma_weight", "taa.velocity_alpha",
                           "taa.reduce_blend_near_clamp", "taa.velocity_in_alpha"})
     r.needs(key, full, "taa.mode is full");
-  if (!full) return r.out;
+  if (!full && !accumulate) return r.out;
+  if (accumulate) {
+    if (t.use_velocity == UseVelocity::Off && t.velocity_sampling == VelocitySampling::Longest3x3)
+      r.add("taa.velocity_sampling", "longest3x3 picks a velocity, but taa.use_velocity is off");
+    return r.out;
+  }
 
   r.needs("taa.depth_threshold", t.depth_culling, "taa.depth_culling is true");
-  r.needs("taa.consistency_depth", t.consistency, "taa.consistency is true");
-  r.needs("taa.consistency_normal", t.consistency, "taa.consistency is true");
+  r.needs("taa.consistency_depth", t.consistency || accumulate, "taa.consistency is true");
+  r.needs("taa.consistency_normal", t.consistency || accumulate, "taa.consistency is true");
   if (t.consistency && r.set("taa.history_filter"))
     r.add("taa.history_filter", "taa.consistency resamples the history tap by tap (2x2, then 3x3); a history filter "
                                 "cannot apply as well: remove one of them");

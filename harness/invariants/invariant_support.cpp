@@ -38,9 +38,10 @@ std::string whatMoves(const CaseSpec& spec) {
 }
 
 std::string noHistoryReason(const std::string& name, const CaseSpec& spec) {
-  if (spec.taa.mode == TaaMode::Basic || spec.taa.mode == TaaMode::Full) return "";
-  return name + " needs a temporal history, but taa.mode is " + enumToString(spec.taa.mode) +
-         "; remove it from checks.invariants or set taa.mode to basic or full";
+  const auto m = spec.taa.mode;
+  if (m != TaaMode::Off && m != TaaMode::PassThrough) return "";
+  return name + " needs a temporal history, but taa.mode is " + enumToString(m) +
+         "; remove it from checks.invariants or set taa.mode to one that keeps a history";
 }
 
 std::string renderSizeReason(const std::string& name, const CaseSpec& spec) {

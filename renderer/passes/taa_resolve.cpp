@@ -43,7 +43,17 @@ glm::ivec2 outputSize(const CaseSpec& s) { return {s.render.width, s.render.heig
 }  // namespace
 
 vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
-  const auto& t = spec.taa;
+  // Accumulation is the full resolve with per-tap geometric consistency as its only
+  // history validation and no colour rectification, filter or dynamic alpha.
+  TaaSpec t = spec.taa;
+  if (t.mode == TaaMode::Accumulate) {
+    t.consistency = true;
+    t.depth_culling = t.anti_ghosting = false;
+    t.rectify = Rectify::None;
+    t.variance_clip = t.shaped_neighborhood = t.shrink_chroma = false;
+    t.luma_weight = t.velocity_alpha = t.reduce_blend_near_clamp = t.velocity_in_alpha = false;
+    t.tonemap_weighting = ToneWeight::None;
+  }
   const int mode = t.mode == TaaMode::PassThrough ? 0 : t.mode == TaaMode::Basic ? 1 : 2;
   const bool full = mode == 2;
   const bool upsample = spec.render.upsample != 1.0f || !spec.render.scale_schedule.empty();

@@ -6,9 +6,10 @@
 
 namespace taa::spec {
 
-enum class TaaMode { Off, PassThrough, Basic, Full };
+enum class TaaMode { Off, PassThrough, Basic, Full, Accumulate, Tscmaa, Adaptive };
 TAA_ENUM_NAMES(TaaMode, {TaaMode::Off, "off"}, {TaaMode::PassThrough, "pass_through"}, {TaaMode::Basic, "basic"},
-               {TaaMode::Full, "full"})
+               {TaaMode::Full, "full"}, {TaaMode::Accumulate, "accumulate"}, {TaaMode::Tscmaa, "tscmaa"},
+               {TaaMode::Adaptive, "adaptive"})
 
 enum class ToneWeight { None, Karis, InverseLuma, Log };
 TAA_ENUM_NAMES(ToneWeight, {ToneWeight::None, "none"}, {ToneWeight::Karis, "karis"},
@@ -71,7 +72,9 @@ void fields(V& v, TaaSpec& s) {
   const char* resolve = "shaders/taa_resolve.comp";
   v.field("mode", s.mode,
           Meta{"off: no temporal pass; pass_through: copy the input; basic: blend with the same pixel "
-               "(no reprojection, shows ghosting); full: every enabled technique",
+               "(no reprojection, shows ghosting); full: every enabled technique; accumulate: temporal "
+               "accumulation with geometric consistency (SVGF, alpha 0.2); tscmaa: CMAA plus TAA on edge "
+               "pixels; adaptive: full TAA plus ray-traced samples where a segmentation marks aliasing",
                resolve});
   v.field("alpha", s.alpha, Range<float>{0.0f, 1.0f},
           Meta{"weight of the current sample (higher = less history)", "shaders/taa/blend_weight.glsl"});

@@ -9,6 +9,7 @@
 #include "gpu_scene.h"
 #include "pass_plan.h"
 #include "passes/gbuffer.h"
+#include "passes/inject.h"
 #include "passes/reference.h"
 #include "passes/taa_resolve.h"
 #include "post_chain.h"
@@ -81,6 +82,7 @@ struct Renderer::State {
   std::unique_ptr<TaaResolvePass> resolve;
   PostChain post;
   std::unique_ptr<ReferencePass> reference;
+  std::unique_ptr<InjectPass> inject;
   vk::Buffer frameUniforms;
   vk::Buffer instances;
   vk::GpuTimer timer;
@@ -92,6 +94,7 @@ struct Renderer::State {
         targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
         post(c, s, plan, maxRenderSize(s)),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
+        inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
         instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                          sizeof(gpu::InstanceData),
@@ -101,6 +104,7 @@ struct Renderer::State {
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
     for (const auto& p : post.describe()) log.push_back(p);
+    if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
       log.push_back("pass reference (" + std::to_string(reference->samples()) + " samples at " +
                     std::to_string(s.render.width) + "x" + std::to_string(s.render.height) + ")");
@@ -140,6 +144,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), 0, s.instances.handle(), state.renderSize,
                    lodBias);
   s.timer.end(cmd);
+  if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
   vk::Image& resolveInput = s.post.beforeResolve(cmd, s.timer, state, s.targets);
   vk::Image* output = &resolveInput;
   glm::ivec2 outputSize = state.renderSize;

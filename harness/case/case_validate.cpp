@@ -173,6 +173,18 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   validatePost(p, spec, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);
+  checkFrames(p, "inject.frames", spec.inject.frames, frames);
+  if (spec.inject.pixels.size() > 8) p.add("inject.pixels", "at most 8 pixels; split the injection over frames");
+  if (!spec.inject.frames.empty() && spec.inject.pixels.empty())
+    p.add("inject.pixels", "inject.frames is set but no pixel is; give pixels like [[10, 5]]");
+  if (spec.inject.frames.empty() && (present.count("inject.pixels") || present.count("inject.value")))
+    p.add("inject.frames", "pixels or value set but no frame; list the frames to inject into");
+  for (size_t i = 0; i < spec.inject.pixels.size(); ++i) {
+    const auto px = spec.inject.pixels[i];
+    if (px.x < 0 || px.y < 0 || px.x >= float(spec.render.width) || px.y >= float(spec.render.height) ||
+        px.x != std::floor(px.x) || px.y != std::floor(px.y))
+      p.add("inject.pixels[" + std::to_string(i) + "]", "must be whole pixel coordinates inside the render target");
+  }
   for (size_t i = 0; i < spec.render.scale_schedule.size(); ++i)
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");

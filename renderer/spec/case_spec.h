@@ -8,6 +8,7 @@
 
 #include "spec/checks_spec.h"
 #include "spec/fields.h"
+#include "spec/inject_spec.h"
 #include "spec/render_spec.h"
 #include "spec/scene_spec.h"
 #include "spec/script_spec.h"
@@ -32,6 +33,7 @@ struct CaseSpec {
   DebugSpec debug;
   OutputSpec output;
   ReferenceSpec reference;
+  InjectSpec inject;
   ChecksSpec checks;
 };
 
@@ -51,6 +53,7 @@ void fields(V& v, CaseSpec& s) {
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});
   v.object("reference", s.reference, Meta{"supersampled ground truth", ""});
+  v.object("inject", s.inject, Meta{"stress: non-finite values written into the rendered colour", ""});
   v.object("checks", s.checks, Meta{"golden comparison and invariants of taa-harness run", ""});
 }
 

@@ -145,7 +145,14 @@ TAA_BLOCK(PostPush) {
                 // y edge threshold min, z subpixel amount
 };
 
+// ---- Stress injection (inject.comp) ----
+TAA_BLOCK(InjectPush) {
+  vec4 pixels[4];  // xy and zw: two pixel coordinates each (up to 8)
+  vec4 params;     // x: pixel count, y: 0 nan, 1 +inf, 2 -inf
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(InjectPush) == 80);
 static_assert(sizeof(PostPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
 static_assert(sizeof(FrameUniforms) == 6 * 64 + 6 * 16);

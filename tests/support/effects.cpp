@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -15,6 +18,25 @@ spec::CaseSpec effectCase(const std::string& base, const std::string& patch) {
   j.merge_patch(nlohmann::json::parse(patch));
   return caseFromJson(j.dump(), "effect");
 }
+
+const EffectRun& renderOnce(const std::string& base, const std::string& patch, const std::vector<int>& withImages,
+                            const RenderOptions& options) {
+  static std::map<std::string, std::unique_ptr<EffectRun>> cache;
+  std::string key = base + '\n' + patch + '\n';
+  for (int f : withImages) key += std::to_string(f) + ',';
+  key += std::to_string(options.reference) + std::to_string(options.captureCurrent) +
+         std::to_string(options.captureIds) + std::to_string(options.captureVelocity);
+  auto& slot = cache[key];
+  if (!slot) {
+    auto run = std::make_unique<EffectRun>();
+    run->spec = effectCase(base, patch);
+    run->frames = renderCase(run->spec, withImages, options);
+    slot = std::move(run);
+  }
+  return *slot;
+}
+
+void report(const std::string& what, double value) { std::printf("  [measured] %-58s %.6g\n", what.c_str(), value); }
 
 const Image& auxImage(const FrameRecord& r, const std::string& name) {
   if (name == "reference") {
@@ -61,6 +83,11 @@ Mask dilate(const Mask& m, int width, int height, int radius) {
 }
 
 int count(const Mask& m) { return int(std::count(m.begin(), m.end(), true)); }
+
+Mask moverMask(const FrameRecord& r) {
+  const Image& ids = auxImage(r, "material_id");
+  return maskWhere(ids.width, ids.height, [&](int x, int y) { return ids.at(x, y, 2) > 0.5f; });
+}
 
 namespace {
 
@@ -139,6 +166,36 @@ double localContrast(const Image& img, const Mask& mask) {
     ++n;
   });
   return n ? sum / n : 0.0;
+}
+
+Mask vacatedMask(const EffectRun& run, int from, int to) {
+  const Mask now = moverMask(run[to]);
+  const int w = run[to].color.width, h = run[to].color.height;
+  Mask covered(now.size(), false);
+  for (int f = from; f < to; ++f) {
+    const Mask m = moverMask(run[f]);
+    for (size_t i = 0; i < m.size(); ++i) covered[i] = covered[i] || m[i];
+  }
+  return maskAnd(covered, maskNot(dilate(now, w, h, 1)));
+}
+
+Mask silhouetteMask(const FrameRecord& r, int radius) {
+  const Mask m = moverMask(r);
+  const int w = r.color.width, h = r.color.height;
+  return maskAnd(dilate(m, w, h, radius), dilate(maskNot(m), w, h, radius));
+}
+
+double meanFlicker(const EffectRun& run, int first, int last, const Mask& mask) {
+  double sum = 0.0;
+  for (int f = first + 1; f <= last; ++f) sum += meanAbs(run[f].color, run[f - 1].color, mask);
+  return sum / double(last - first);
+}
+
+bool rgbIdentical(const Image& a, const Image& b) {
+  if (!a.sameShape(b) || a.channels < 3) return false;
+  for (size_t p = 0; p < a.pixelCount(); ++p)
+    if (std::memcmp(&a.data[p * a.channels], &b.data[p * b.channels], 3 * sizeof(float)) != 0) return false;
+  return true;
 }
 
 bool allFiniteAtMost(const Image& img, float limit) {

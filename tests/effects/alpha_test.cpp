@@ -22,7 +22,8 @@ TEST(EffectAlpha, AlphaOneReproducesTheCurrentFrameExactly) {
   const std::vector<int> all = {0, 1, 2, 3, 4, 5, 6, 7};
   const auto& full = renderOnce(kMoving, R"({"taa": {"alpha": 1.0}})", all);
   const auto& pass = renderOnce(kMoving, R"({"taa": {"mode": "pass_through"}})", all);
-  for (int f = 0; f < 8; ++f) EXPECT_TRUE(test::rgbIdentical(full[f].color, pass[f].color)) << "frame " << f;
+  for (int f = 0; f < 8; ++f)
+    EXPECT_TRUE(test::rgbIdentical(full[f].color, pass[f].color)) << "frame " << f;
   // alpha 0.5 must not: the comparison sees history when there is some.
   const auto& half = renderOnce(kMoving, R"({"taa": {"alpha": 0.5}})", all);
   EXPECT_GT(test::differing(half[7].color, pass[7].color, 1e-3), 500);

@@ -62,7 +62,8 @@ TEST(EffectDebugOutput, RejectionMaskIsOneOnTheRevealedBorderAndZeroInside) {
       if (prevX < -1.5f) {
         ++border;
         wrong += mask.at(x, y, 0) != 1.0f;
-      } else if (prevX > 2.0f && prevX < mask.width - 2.0f && prevY > 2.0f && prevY < mask.height - 2.0f) {
+      } else if (prevX > 2.0f && prevX < mask.width - 2.0f && prevY > 2.0f &&
+                 prevY < mask.height - 2.0f) {
         ++inside;
         wrong += mask.at(x, y, 0) != 0.0f;
       }

@@ -20,9 +20,10 @@ using test::report;
 // and without motion: out = h + alpha (c - h) per channel. Channels whose current and history
 // differ by less than 0.05 say little and are skipped.
 std::vector<float> inferredAlphas(const std::string& taa) {
-  const auto spec = test::effectCase(R"({"render": {"width": 48, "height": 32}, "script": {"frames": 2},
+  const auto spec =
+      test::effectCase(R"({"render": {"width": 48, "height": 32}, "script": {"frames": 2},
       "jitter": {"pattern": "none"}})",
-                                     R"({"taa": )" + taa + "}");
+                       R"({"taa": )" + taa + "}");
   test::SyntheticResolve in;
   in.current = Image(48, 32, 4, 1.0f);
   in.history = Image(48, 32, 4, 1.0f);
@@ -32,7 +33,8 @@ std::vector<float> inferredAlphas(const std::string& taa) {
       const float level = 0.1f + 2.0f * test::hashUnit(3, x, y);
       for (int c = 0; c < 3; ++c) {
         in.current.at(x, y, c) = level * (0.8f + 0.4f * test::hashUnit(4, x, y, c));
-        in.history.at(x, y, c) = level * (0.05f + 3.0f * float(y) / 32.0f) * (0.8f + 0.4f * test::hashUnit(5, x, y, c));
+        in.history.at(x, y, c) =
+            level * (0.05f + 3.0f * float(y) / 32.0f) * (0.8f + 0.4f * test::hashUnit(5, x, y, c));
       }
     }
   const auto r = test::gpuResolve(spec, in);
@@ -40,7 +42,8 @@ std::vector<float> inferredAlphas(const std::string& taa) {
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 48; ++x)
       for (int c = 0; c < 3; ++c) {
-        const float h = r.history.at(x, y, c), cur = r.current.at(x, y, c), out = r.output.at(x, y, c);
+        const float h = r.history.at(x, y, c), cur = r.current.at(x, y, c),
+                    out = r.output.at(x, y, c);
         if (std::fabs(cur - h) > 0.05f) alphas.push_back((out - h) / (cur - h));
       }
   return alphas;
@@ -58,7 +61,8 @@ TEST(EffectLumaWeight, AlphaStaysWithinItsBoundsAndSpansThem) {
   EXPECT_LT(*lo, 0.1f);  // similar lumas lean on the history
   EXPECT_GT(*hi, 0.5f);  // very different lumas trust the current frame
   // Without luma weighting the same inputs blend with the one alpha.
-  const auto fixed = inferredAlphas(R"({"rectify": "none", "alpha": 0.1, "history_format": "rgba32f"})");
+  const auto fixed =
+      inferredAlphas(R"({"rectify": "none", "alpha": 0.1, "history_format": "rgba32f"})");
   const auto [flo, fhi] = std::minmax_element(fixed.begin(), fixed.end());
   EXPECT_NEAR(*flo, 0.1f, 1e-3f);
   EXPECT_NEAR(*fhi, 0.1f, 1e-3f);
@@ -83,7 +87,8 @@ double redness(const Image& img, const Image& ref, const test::Mask& mask) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
       if (mask[size_t(y) * img.width + x]) {
-        sum += std::max(0.0f, (img.at(x, y, 0) - img.at(x, y, 1)) - (ref.at(x, y, 0) - ref.at(x, y, 1)));
+        sum += std::max(0.0f,
+                        (img.at(x, y, 0) - img.at(x, y, 1)) - (ref.at(x, y, 0) - ref.at(x, y, 1)));
         ++n;
       }
   return n ? sum / n : 0.0;
@@ -96,7 +101,8 @@ TEST(EffectVelocityAlpha, FastMoverLeavesAShorterTrail) {
   o.captureIds = true;
   const auto& plain = renderOnce(kMover, "{}", frames, o);
   const auto& fast =
-      renderOnce(kMover, R"({"taa": {"velocity_alpha": true, "velocity_alpha_px": 0.5}})", {16, 17, 18, 19, 20, 21, 22, 23});
+      renderOnce(kMover, R"({"taa": {"velocity_alpha": true, "velocity_alpha_px": 0.5}})",
+                 {16, 17, 18, 19, 20, 21, 22, 23});
   double ePlain = 0.0, eFast = 0.0, rPlain = 0.0, rFast = 0.0;
   int trailPlain = 0, trailFast = 0;
   for (int f = 16; f <= 23; ++f) {
@@ -132,7 +138,8 @@ TEST(EffectReduceBlend, LessFlickerOnTheFence) {
   const std::vector<int> frames = {16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
   const auto& plain = renderOnce(kFence, "{}", frames);
   const auto& reduced = renderOnce(kFence, R"({"taa": {"reduce_blend_near_clamp": true}})", frames);
-  const double fPlain = test::meanFlicker(plain, 16, 31), fReduced = test::meanFlicker(reduced, 16, 31);
+  const double fPlain = test::meanFlicker(plain, 16, 31),
+               fReduced = test::meanFlicker(reduced, 16, 31);
   report("mean |frame-to-frame change|, frames 16-31, plain", fPlain);
   report("mean |frame-to-frame change|, frames 16-31, reduce_blend_near_clamp", fReduced);
   EXPECT_LT(fReduced, 0.9 * fPlain);

@@ -28,9 +28,11 @@ struct Measured {
 Measured measure(const char* filter) {
   RenderOptions o;
   o.reference = true;
-  const auto& truth = renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
-  const auto& run = renderOnce(kPan, std::string(R"({"taa": {"history_filter": ")") + filter + "\"}}", kLast4,
-                               std::string(filter) == "catmull_rom_5" ? o : RenderOptions{});
+  const auto& truth =
+      renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
+  const auto& run =
+      renderOnce(kPan, std::string(R"({"taa": {"history_filter": ")") + filter + "\"}}", kLast4,
+                 std::string(filter) == "catmull_rom_5" ? o : RenderOptions{});
   Measured m;
   for (int f : kLast4) {
     m.error += test::rmse(run[f].color, truth[f].reference) / kLast4.size();
@@ -49,7 +51,8 @@ TEST(EffectHistoryFilter, CatmullRomIsCloserToTheReferenceThanBilinearUnderAPan)
   report("reference local contrast", [] {
     RenderOptions o;
     o.reference = true;
-    const auto& truth = renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
+    const auto& truth =
+        renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
     return test::localContrast(truth[23].reference);
   }());
 }

@@ -24,7 +24,9 @@ RenderOptions current() {
   return o;
 }
 
-bool outputIsInput(const FrameRecord& r) { return test::rgbIdentical(r.color, test::auxImage(r, "current")); }
+bool outputIsInput(const FrameRecord& r) {
+  return test::rgbIdentical(r.color, test::auxImage(r, "current"));
+}
 
 TEST(EffectHistoryReset, ScriptedResetFrameOutputsTheCurrentFrame) {
   const auto& run = renderOnce(kBase, R"({"script": {"reset_history_at": [5]}})", kAll, current());
@@ -38,8 +40,9 @@ TEST(EffectHistoryReset, ScriptedResetFrameOutputsTheCurrentFrame) {
 
 TEST(EffectHistoryReset, CameraCutOutputsTheCurrentFrame) {
   const auto& run = renderOnce(
-      kBase, R"({"camera": {"cuts": [{"frame": 7, "position": [3, 2, 4], "target": [0, 0.5, -2]}]}})", kAll,
-      current());
+      kBase,
+      R"({"camera": {"cuts": [{"frame": 7, "position": [3, 2, 4], "target": [0, 0.5, -2]}]}})",
+      kAll, current());
   EXPECT_TRUE(run[7].cameraCut);
   EXPECT_TRUE(run[7].historyReset);
   EXPECT_TRUE(outputIsInput(run[7]));

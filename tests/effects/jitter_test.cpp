@@ -53,8 +53,10 @@ int edgeColumn(const Image& ids, int y) {
 TEST(EffectJitter, ManualHalfPixelOffsetsShiftAVerticalEdgeByOnePixel) {
   RenderOptions o;
   o.captureIds = true;
-  const auto& right = renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[0.5, 0]]}})", {0}, o);
-  const auto& left = renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[-0.5, 0]]}})", {0}, o);
+  const auto& right =
+      renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[0.5, 0]]}})", {0}, o);
+  const auto& left =
+      renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[-0.5, 0]]}})", {0}, o);
   const Image& idsR = test::auxImage(right[0], "material_id");
   const Image& idsL = test::auxImage(left[0], "material_id");
   int rows = 0;
@@ -98,7 +100,9 @@ RenderOptions current() {
   return o;
 }
 
-const Image& raw(const test::EffectRun& run, int f) { return test::auxImage(run[f], "current"); }
+const Image& raw(const test::EffectRun& run, int f) {
+  return test::auxImage(run[f], "current");
+}
 
 TEST(EffectJitter, LockPinsOneStepOfTheSequence) {
   const auto& free = renderOnce(kRaw, "{}", kAll, current());
@@ -114,7 +118,8 @@ TEST(EffectJitter, LockPinsOneStepOfTheSequence) {
 TEST(EffectJitter, SlowdownHoldsEachStepForKFrames) {
   const auto& free = renderOnce(kRaw, "{}", kAll, current());
   const auto& slow = renderOnce(kRaw, R"({"jitter": {"slowdown": 3}})", kAll, current());
-  for (int f = 0; f < 9; ++f) EXPECT_TRUE(test::bitIdentical(raw(slow, f), raw(free, f / 3))) << "frame " << f;
+  for (int f = 0; f < 9; ++f)
+    EXPECT_TRUE(test::bitIdentical(raw(slow, f), raw(free, f / 3))) << "frame " << f;
   EXPECT_FALSE(test::bitIdentical(raw(slow, 2), raw(slow, 3)));
 }
 

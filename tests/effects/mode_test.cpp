@@ -24,7 +24,8 @@ TEST(EffectPassThrough, OutputIsTheInputBitForBit) {
   o.captureCurrent = true;
   const auto& run = renderOnce(moving, "{}", {0, 1, 2, 3}, o);
   for (int f = 0; f < 4; ++f)
-    EXPECT_TRUE(test::bitIdentical(run[f].color, test::auxImage(run[f], "current"))) << "frame " << f;
+    EXPECT_TRUE(test::bitIdentical(run[f].color, test::auxImage(run[f], "current")))
+        << "frame " << f;
 }
 
 // A camera panning at ~1 px per frame over the checkerboard.

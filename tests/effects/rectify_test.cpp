@@ -32,7 +32,8 @@ double ghosting(const std::string& taa) {
   const auto& truth = renderOnce(kMover, R"({"taa": {"rectify": "none"}})", kFrames, o);
   const auto& run = renderOnce(kMover, R"({"taa": )" + taa + "}", {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;
-  for (int f = 16; f <= 23; ++f) sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
+  for (int f = 16; f <= 23; ++f)
+    sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
   report("ghosting (trail rmse), " + taa, sum / 8.0);
   return sum / 8.0;
 }
@@ -52,8 +53,9 @@ TEST(EffectRectify, ClampKeepsTheOutputInsideTheCurrentFrames3x3Box) {
   RenderOptions o;
   o.captureCurrent = true;
   auto outside = [&](const char* rectify) {
-    const auto& run =
-        renderOnce(kMover, std::string(R"({"taa": {"color_space": "rgb", "rectify": ")") + rectify + "\"}}", {20}, o);
+    const auto& run = renderOnce(
+        kMover, std::string(R"({"taa": {"color_space": "rgb", "rectify": ")") + rectify + "\"}}",
+        {20}, o);
     const Image& out = run[20].color;
     const Image& cur = test::auxImage(run[20], "current");
     int n = 0;
@@ -96,7 +98,8 @@ TEST(EffectShapedNeighborhood, ShapedBoxGhostsLessThanThePlain3x3Box) {
 // it widens the chroma box compared with plain YCoCg clipping (both numbers are reported) and
 // still clears most of the ghost compared with no rectification.
 TEST(EffectShrinkChroma, ReducesGhostingComparedWithNoRectification) {
-  const double shrink = ghosting(R"({"rectify": "clip", "color_space": "ycocg", "shrink_chroma": true})");
+  const double shrink =
+      ghosting(R"({"rectify": "clip", "color_space": "ycocg", "shrink_chroma": true})");
   EXPECT_LT(shrink, 0.5 * ghosting(kNone));
   EXPECT_GT(std::abs(shrink - ghosting(kClipYCoCg)), 0.05 * shrink);  // it is not a no-op
 }

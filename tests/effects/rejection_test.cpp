@@ -38,7 +38,8 @@ test::Mask revealed(const FrameRecord& r) {
 
 TEST(EffectRejectOffscreen, RevealedBorderPixelsAreTheCurrentFrame) {
   const auto& on = renderOnce(kPan, "{}", {5}, currentAndVelocity());
-  const auto& off = renderOnce(kPan, R"({"taa": {"reject_offscreen": false}})", {5}, currentAndVelocity());
+  const auto& off =
+      renderOnce(kPan, R"({"taa": {"reject_offscreen": false}})", {5}, currentAndVelocity());
   const test::Mask border = revealed(on[5]);
   report("revealed border pixels, frame 5", test::count(border));
   ASSERT_GT(test::count(border), 150);
@@ -69,7 +70,8 @@ double trailError(const std::string& patch) {
   const auto& truth = renderOnce(kMover, "{}", kFrames, o);
   const auto& run = renderOnce(kMover, patch, {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;
-  for (int f = 16; f <= 23; ++f) sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
+  for (int f = 16; f <= 23; ++f)
+    sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
   report("mean rmse in the vacated trail, " + patch, sum / 8.0);
   return sum / 8.0;
 }
@@ -91,11 +93,13 @@ TEST(EffectAntiGhosting, ClearsTheTrailOfAMover) {
 TEST(EffectRejectionAlpha, ChangesRejectedPixelsOnly) {
   const char* culled = R"({"taa": {"depth_culling": true, "rejection_alpha": 1.0}})";
   const auto& one = renderOnce(kMover, culled, {1});
-  const auto& half = renderOnce(kMover, R"({"taa": {"depth_culling": true, "rejection_alpha": 0.5}})", {1});
-  const auto& mask = renderOnce(kMover, R"({"taa": {"depth_culling": true}, "debug": {"output": "rejection"}})", {1});
+  const auto& half =
+      renderOnce(kMover, R"({"taa": {"depth_culling": true, "rejection_alpha": 0.5}})", {1});
+  const auto& mask = renderOnce(
+      kMover, R"({"taa": {"depth_culling": true}, "debug": {"output": "rejection"}})", {1});
   const Image& rejected = mask[1].color;
-  const test::Mask isRejected =
-      test::maskWhere(rejected.width, rejected.height, [&](int x, int y) { return rejected.at(x, y, 0) > 0.5f; });
+  const test::Mask isRejected = test::maskWhere(
+      rejected.width, rejected.height, [&](int x, int y) { return rejected.at(x, y, 0) > 0.5f; });
   report("rejected pixels, frame 1", test::count(isRejected));
   ASSERT_GT(test::count(isRejected), 20);
   EXPECT_EQ(test::differing(one[1].color, half[1].color, 0.0, test::maskNot(isRejected)), 0);

@@ -39,7 +39,8 @@ TEST(EffectReprojection, DepthMatchesVelocityOnAStaticSceneUnderCameraMotion) {
   const auto whole = [](int) { return test::Mask{}; };
   const double eAll = meanError(all, all, whole), eOff = meanError(off, all, whole);
   double eRaw = 0.0;  // the jittered frames themselves: what no history would give
-  for (int f : kLast8) eRaw += test::rmse(test::auxImage(all[f], "current"), all[f].reference) / kLast8.size();
+  for (int f : kLast8)
+    eRaw += test::rmse(test::auxImage(all[f], "current"), all[f].reference) / kLast8.size();
   report("mean rmse vs reference, use_velocity all (velocity)", eAll);
   report("mean rmse vs reference, use_velocity off (depth)", eOff);
   report("mean rmse vs reference, raw jittered frames", eRaw);
@@ -66,7 +67,8 @@ RenderOptions withIds(bool reference) {
 
 TEST(EffectReprojection, VelocityFollowsAMoverThatDepthReprojectionSmears) {
   const std::vector<int> frames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
-  const auto& all = renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})", frames, withIds(true));
+  const auto& all =
+      renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})", frames, withIds(true));
   const auto& movers = renderOnce(kMover, R"({"taa": {"use_velocity": "movers"}})", kLast8);
   const auto& off = renderOnce(kMover, R"({"taa": {"use_velocity": "off"}})", kLast8);
   // The mover and 3 pixels around it: its own pixels and the strip it just left.
@@ -87,12 +89,14 @@ TEST(EffectReprojection, VelocityFollowsAMoverThatDepthReprojectionSmears) {
 }
 
 TEST(EffectVelocitySampling, Closest3x3ReducesErrorAtAMoverSilhouette) {
-  const auto& closest = renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})",
-                                   {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23}, withIds(true));
-  const auto& pixel =
-      renderOnce(kMover, R"({"taa": {"use_velocity": "all", "velocity_sampling": "pixel"}})", kLast8);
+  const auto& closest =
+      renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})",
+                 {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23}, withIds(true));
+  const auto& pixel = renderOnce(
+      kMover, R"({"taa": {"use_velocity": "all", "velocity_sampling": "pixel"}})", kLast8);
   const auto edge = [&](int f) { return test::silhouetteMask(closest[f], 1); };
-  const double eClosest = meanError(closest, closest, edge), ePixel = meanError(pixel, closest, edge);
+  const double eClosest = meanError(closest, closest, edge),
+               ePixel = meanError(pixel, closest, edge);
   report("mean rmse at the silhouette (+-1 px), closest3x3", eClosest);
   report("mean rmse at the silhouette (+-1 px), pixel", ePixel);
   EXPECT_LT(eClosest, 0.92 * ePixel);

@@ -50,7 +50,8 @@ TEST(EffectDynamicResolution, PanningErrorStaysCloseToTheFixedResolutionRun) {
   o.reference = true;
   const auto& fixed = renderOnce(kPan, "{}", frames, o);
   const auto& dynamic = renderOnce(
-      kPan, R"({"render": {"scale_schedule": [{"frame": 0, "scale": 1.0}, {"frame": 6, "scale": 0.7},
+      kPan,
+      R"({"render": {"scale_schedule": [{"frame": 0, "scale": 1.0}, {"frame": 6, "scale": 0.7},
                                                {"frame": 16, "scale": 0.85}]}})",
       frames);
   double eFixed = 0.0, eDynamic = 0.0;

@@ -56,7 +56,8 @@ TEST(EffectRobustness, HdrValuesAtTheHalfMaximumStayFiniteAndBounded) {
   for (float v : test::auxImage(probe[5], "current").data) atMax += !(v < kHalfMax);
   report("input channels at or above the half maximum", atMax);
   ASSERT_GT(atMax, 1000);
-  for (const auto& combo : kCombos) expectBounded(renderOnce(base, R"({"taa": )" + combo + "}", {1, 3, 5}), combo);
+  for (const auto& combo : kCombos)
+    expectBounded(renderOnce(base, R"({"taa": )" + combo + "}", {1, 3, 5}), combo);
 }
 
 // A huge, unlit-by-specular cube face fills the view: every 3x3 box is flat (zero variance).
@@ -72,10 +73,11 @@ const char* kFlat = R"({
 TEST(EffectRobustness, FlatScenesStayFiniteAndConverge) {
   RenderOptions o;
   o.captureCurrent = true;
-  for (const char* combo : {R"({"rectify": "clip"})", R"({"rectify": "clip", "variance_clip": true})",
-                            R"({"rectify": "clip", "color_space": "rgb", "variance_clip": true, "variance_gamma": 0})",
-                            R"({"luma_weight": true})", R"({"reduce_blend_near_clamp": true})",
-                            R"({"tonemap_weighting": "inverse_luma", "luma_weight": true})"}) {
+  for (const char* combo :
+       {R"({"rectify": "clip"})", R"({"rectify": "clip", "variance_clip": true})",
+        R"({"rectify": "clip", "color_space": "rgb", "variance_clip": true, "variance_gamma": 0})",
+        R"({"luma_weight": true})", R"({"reduce_blend_near_clamp": true})",
+        R"({"tonemap_weighting": "inverse_luma", "luma_weight": true})"}) {
     const auto& run = renderOnce(kFlat, R"({"taa": )" + std::string(combo) + "}", {11}, o);
     const Image& cur = test::auxImage(run[11], "current");
     EXPECT_TRUE(test::allFiniteAtMost(run[11].color, kHalfMax)) << combo;
@@ -88,7 +90,8 @@ TEST(EffectRobustness, FlatScenesStayFiniteAndConverge) {
   double spread = 0.0;
   for (int y = 0; y < cur.height; ++y)
     for (int x = 0; x < cur.width; ++x)
-      for (int c = 0; c < 3; ++c) spread = std::max(spread, double(std::fabs(cur.at(x, y, c) - cur.at(0, 0, c))));
+      for (int c = 0; c < 3; ++c)
+        spread = std::max(spread, double(std::fabs(cur.at(x, y, c) - cur.at(0, 0, c))));
   report("largest difference between input pixels (flat scene)", spread);
   EXPECT_EQ(spread, 0.0);
 }
@@ -107,10 +110,12 @@ TEST(EffectRobustness, MotionOfHundredsOfPixelsPerFrameStaysFinite) {
   o.captureVelocity = true;
   const auto& probe = renderOnce(fast, "{}", {5}, o);
   double largest = 0.0;
-  for (float v : test::auxImage(probe[5], "velocity").data) largest = std::max(largest, double(std::fabs(v)));
+  for (float v : test::auxImage(probe[5], "velocity").data)
+    largest = std::max(largest, double(std::fabs(v)));
   report("largest velocity component (px per frame)", largest);
   EXPECT_GT(largest, 500.0);
-  for (const auto& combo : kCombos) expectBounded(renderOnce(fast, R"({"taa": )" + combo + "}", {1, 3, 5}), combo);
+  for (const auto& combo : kCombos)
+    expectBounded(renderOnce(fast, R"({"taa": )" + combo + "}", {1, 3, 5}), combo);
 }
 
 }  // namespace

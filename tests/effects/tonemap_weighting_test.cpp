@@ -33,7 +33,8 @@ std::vector<int> window() {
 }
 
 const test::EffectRun& run(const char* weighting) {
-  return renderOnce(kHighlight, std::string(R"({"taa": {"tonemap_weighting": ")") + weighting + "\"}}", window());
+  return renderOnce(
+      kHighlight, std::string(R"({"taa": {"tonemap_weighting": ")") + weighting + "\"}}", window());
 }
 
 // Pixels within one of where the reference is brighter than 2 (the highlight).
@@ -41,7 +42,8 @@ test::Mask highlight() {
   RenderOptions o;
   o.reference = true;
   const Image& ref = renderOnce(kHighlight, "{}", {31}, o)[31].reference;
-  return test::dilate(test::maskWhere(ref.width, ref.height, [&](int x, int y) { return luminance(ref, x, y) > 2.0f; }),
+  return test::dilate(test::maskWhere(ref.width, ref.height,
+                                      [&](int x, int y) { return luminance(ref, x, y) > 2.0f; }),
                       ref.width, ref.height, 1);
 }
 
@@ -63,22 +65,30 @@ void check(const char* weighting, double maxRatio) {
   const auto& none = run("none");
   const auto& weighted = run(weighting);
   EXPECT_GT(test::differing(weighted[31].color, none[31].color, 1e-3), 300) << "output unchanged";
-  const double fNone = test::meanFlicker(none, 16, 31, bright), fWeighted = test::meanFlicker(weighted, 16, 31, bright);
+  const double fNone = test::meanFlicker(none, 16, 31, bright),
+               fWeighted = test::meanFlicker(weighted, 16, 31, bright);
   report("highlight pixels", test::count(bright));
   report("linear highlight flicker, none", fNone);
   report(std::string("linear highlight flicker, ") + weighting, fWeighted);
   // What a display shows after a tonemap does not calm down: the weighted average tracks the
   // tonemapped samples, whose changes are as large (reported for the record).
   report("tonemapped highlight flicker, none", displayFlicker(none, bright));
-  report(std::string("tonemapped highlight flicker, ") + weighting, displayFlicker(weighted, bright));
+  report(std::string("tonemapped highlight flicker, ") + weighting,
+         displayFlicker(weighted, bright));
   EXPECT_LT(fWeighted, maxRatio * fNone);
 }
 
-TEST(EffectToneWeighting, KarisReducesHighlightFlicker) { check("karis", 0.6); }
+TEST(EffectToneWeighting, KarisReducesHighlightFlicker) {
+  check("karis", 0.6);
+}
 
-TEST(EffectToneWeighting, InverseLumaReducesHighlightFlicker) { check("inverse_luma", 0.6); }
+TEST(EffectToneWeighting, InverseLumaReducesHighlightFlicker) {
+  check("inverse_luma", 0.6);
+}
 
-TEST(EffectToneWeighting, LogReducesHighlightFlicker) { check("log", 0.85); }
+TEST(EffectToneWeighting, LogReducesHighlightFlicker) {
+  check("log", 0.85);
+}
 
 }  // namespace
 }  // namespace taa

@@ -19,8 +19,8 @@ spec::CaseSpec effectCase(const std::string& base, const std::string& patch) {
   return caseFromJson(j.dump(), "effect");
 }
 
-const EffectRun& renderOnce(const std::string& base, const std::string& patch, const std::vector<int>& withImages,
-                            const RenderOptions& options) {
+const EffectRun& renderOnce(const std::string& base, const std::string& patch,
+                            const std::vector<int>& withImages, const RenderOptions& options) {
   static std::map<std::string, std::unique_ptr<EffectRun>> cache;
   std::string key = base + '\n' + patch + '\n';
   for (int f : withImages) key += std::to_string(f) + ',';
@@ -36,11 +36,14 @@ const EffectRun& renderOnce(const std::string& base, const std::string& patch, c
   return *slot;
 }
 
-void report(const std::string& what, double value) { std::printf("  [measured] %-58s %.6g\n", what.c_str(), value); }
+void report(const std::string& what, double value) {
+  std::printf("  [measured] %-58s %.6g\n", what.c_str(), value);
+}
 
 const Image& auxImage(const FrameRecord& r, const std::string& name) {
   if (name == "reference") {
-    if (!r.hasReference) throw std::runtime_error("frame " + std::to_string(r.frame) + " has no reference");
+    if (!r.hasReference)
+      throw std::runtime_error("frame " + std::to_string(r.frame) + " has no reference");
     return r.reference;
   }
   for (const auto& a : r.aux)
@@ -48,10 +51,13 @@ const Image& auxImage(const FrameRecord& r, const std::string& name) {
   throw std::runtime_error("frame " + std::to_string(r.frame) + " has no buffer " + name);
 }
 
-Mask fullMask(int width, int height) { return Mask(size_t(width) * size_t(height), true); }
+Mask fullMask(int width, int height) {
+  return Mask(size_t(width) * size_t(height), true);
+}
 
 Mask rectMask(int width, int height, int x0, int y0, int x1, int y1) {
-  return maskWhere(width, height, [&](int x, int y) { return x >= x0 && x < x1 && y >= y0 && y < y1; });
+  return maskWhere(width, height,
+                   [&](int x, int y) { return x >= x0 && x < x1 && y >= y0 && y < y1; });
 }
 
 Mask maskWhere(int width, int height, const std::function<bool(int, int)>& pred) {
@@ -82,7 +88,9 @@ Mask dilate(const Mask& m, int width, int height, int radius) {
   });
 }
 
-int count(const Mask& m) { return int(std::count(m.begin(), m.end(), true)); }
+int count(const Mask& m) {
+  return int(std::count(m.begin(), m.end(), true));
+}
 
 Mask moverMask(const FrameRecord& r) {
   const Image& ids = auxImage(r, "material_id");
@@ -94,7 +102,8 @@ namespace {
 void checkShapes(const Image& a, const Image& b, const Mask& mask) {
   if (a.width != b.width || a.height != b.height || a.channels < 3 || b.channels < 3)
     throw std::invalid_argument("effect measure: images differ in size or have no RGB");
-  if (!mask.empty() && mask.size() != a.pixelCount()) throw std::invalid_argument("effect measure: mask size");
+  if (!mask.empty() && mask.size() != a.pixelCount())
+    throw std::invalid_argument("effect measure: mask size");
 }
 
 // Calls f(x, y) for every pixel the mask covers.
@@ -126,7 +135,8 @@ double meanAbs(const Image& a, const Image& b, const Mask& mask) {
   double sum = 0.0;
   size_t n = 0;
   forMasked(a, mask, [&](int x, int y) {
-    for (int c = 0; c < 3; ++c, ++n) sum += std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c)));
+    for (int c = 0; c < 3; ++c, ++n)
+      sum += std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c)));
   });
   return n ? sum / double(n) : 0.0;
 }
@@ -135,7 +145,8 @@ double maxAbs(const Image& a, const Image& b, const Mask& mask) {
   checkShapes(a, b, mask);
   double worst = 0.0;
   forMasked(a, mask, [&](int x, int y) {
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c))));
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c))));
   });
   return worst;
 }
@@ -145,14 +156,16 @@ int differing(const Image& a, const Image& b, double tolerance, const Mask& mask
   int n = 0;
   forMasked(a, mask, [&](int x, int y) {
     double d = 0.0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c))));
+    for (int c = 0; c < 3; ++c)
+      d = std::max(d, std::fabs(double(a.at(x, y, c)) - double(b.at(x, y, c))));
     n += d > tolerance;
   });
   return n;
 }
 
 bool bitIdentical(const Image& a, const Image& b) {
-  return a.sameShape(b) && std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+  return a.sameShape(b) &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 double localContrast(const Image& img, const Mask& mask) {
@@ -160,8 +173,8 @@ double localContrast(const Image& img, const Mask& mask) {
   int n = 0;
   forMasked(img, mask, [&](int x, int y) {
     if (x == 0 || y == 0 || x == img.width - 1 || y == img.height - 1) return;
-    const double around = 0.25 * (luminance(img, x - 1, y) + luminance(img, x + 1, y) + luminance(img, x, y - 1) +
-                                  luminance(img, x, y + 1));
+    const double around = 0.25 * (luminance(img, x - 1, y) + luminance(img, x + 1, y) +
+                                  luminance(img, x, y - 1) + luminance(img, x, y + 1));
     sum += std::fabs(luminance(img, x, y) - around);
     ++n;
   });
@@ -194,12 +207,14 @@ double meanFlicker(const EffectRun& run, int first, int last, const Mask& mask) 
 bool rgbIdentical(const Image& a, const Image& b) {
   if (!a.sameShape(b) || a.channels < 3) return false;
   for (size_t p = 0; p < a.pixelCount(); ++p)
-    if (std::memcmp(&a.data[p * a.channels], &b.data[p * b.channels], 3 * sizeof(float)) != 0) return false;
+    if (std::memcmp(&a.data[p * a.channels], &b.data[p * b.channels], 3 * sizeof(float)) != 0)
+      return false;
   return true;
 }
 
 bool allFiniteAtMost(const Image& img, float limit) {
-  return std::all_of(img.data.begin(), img.data.end(), [&](float v) { return std::isfinite(v) && v <= limit; });
+  return std::all_of(img.data.begin(), img.data.end(),
+                     [&](float v) { return std::isfinite(v) && v <= limit; });
 }
 
 Image bilinearUpscale(const Image& low, int width, int height) {
@@ -209,7 +224,8 @@ Image bilinearUpscale(const Image& low, int width, int height) {
   };
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const float sx = (x + 0.5f) * low.width / width - 0.5f, sy = (y + 0.5f) * low.height / height - 0.5f;
+      const float sx = (x + 0.5f) * low.width / width - 0.5f,
+                  sy = (y + 0.5f) * low.height / height - 0.5f;
       const int x0 = int(std::floor(sx)), y0 = int(std::floor(sy));
       const float fx = sx - x0, fy = sy - y0;
       for (int c = 0; c < low.channels; ++c)

@@ -26,8 +26,8 @@ struct EffectRun {
 
 // effectCase(base, patch) rendered with images for `withImages`, once per test process:
 // tests that compare the same configuration share one render.
-const EffectRun& renderOnce(const std::string& base, const std::string& patch, const std::vector<int>& withImages,
-                            const RenderOptions& options = {});
+const EffectRun& renderOnce(const std::string& base, const std::string& patch,
+                            const std::vector<int>& withImages, const RenderOptions& options = {});
 
 // Prints a measured number, so a test run documents what its assertions compared.
 void report(const std::string& what, double value);

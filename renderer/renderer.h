@@ -18,8 +18,8 @@ class Context;
 }
 
 struct RenderOptions {
-  // Render the supersampled reference beside every frame (costs reference.samples
-  // extra scene renders per frame); its image is read back with the frame's images.
+  // Render the supersampled reference beside every frame whose images are read back
+  // (costs reference.samples extra scene renders per such frame).
   bool reference = false;
   // Read back, beside the output, buffers the harness's invariants examine: the
   // resolve's input colour ("current"), the ids and the velocity targets.

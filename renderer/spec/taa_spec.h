@@ -141,7 +141,7 @@ void fields(V& v, TaaSpec& s) {
   v.field("velocity_alpha_px", s.velocity_alpha_px, Range<float>{1e-3f, 1e6f},
           Meta{"speed (output pixels per frame) at which velocity_alpha reaches alpha 1", "shaders/taa/blend_weight.glsl"});
   v.field("reduce_blend_near_clamp", s.reduce_blend_near_clamp,
-          Meta{"Karis anti-flicker: raise alpha as the history's luma nears the edge of the box",
+          Meta{"Karis anti-flicker: lower alpha (to half on the edge) as the history's luma nears the edge of the box",
                "shaders/taa/blend_weight.glsl"});
   v.field("velocity_in_alpha", s.velocity_in_alpha,
           Meta{"motion blur packs the per-pixel speed into colour alpha, so the resolve reads colour only "

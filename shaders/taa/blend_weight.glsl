@@ -12,13 +12,16 @@ float lottesAlpha(float lumaCurrent, float lumaHistory) {
   return mix(taaUniforms.blend.w, taaUniforms.blend.z, similarity * similarity);
 }
 
-// Karis: the closer the history's luma came to the box edge, the likelier it is to
-// flicker in and out of clamping; lean on the current frame there. t = 1 at the box
-// centre, 0 on the edge; a flat box counts as on the edge.
+// Karis (SIGGRAPH 2014, "reduce blend factor when history is near clamping"): the closer
+// the history's luma came to the box edge, the likelier it is to flicker in and out of
+// clamping, so the current frame's weight drops there (to half on the edge) and the
+// history smooths it. t = 1 at the box centre, 0 on the edge; a flat box counts as on
+// the edge. (Raising alpha instead, as the seed's wording suggests, tripled the
+// frame-to-frame change of jittered HDR highlights: tests/effects/dynamic_alpha_test.cpp.)
 float reduceBlendNearClamp(float alpha, float lumaHistory, float lo, float hi) {
   float halfExtent = 0.5 * (hi - lo);
   float t = halfExtent > 1e-7 ? clamp(min(lumaHistory - lo, hi - lumaHistory) / halfExtent, 0.0, 1.0) : 0.0;
-  return alpha + (1.0 - alpha) * 0.5 * (1.0 - t);
+  return alpha * (0.5 + 0.5 * t);
 }
 
 float velocityAlpha(float alpha, float speedPx) {

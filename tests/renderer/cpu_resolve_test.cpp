@@ -217,19 +217,19 @@ TEST(CpuResolve, LottesAlphaStaysWithinAlphaMinAndAlphaMax) {
   EXPECT_GT(previous, aMin + 0.5f * (aMax - aMin));
 }
 
-TEST(CpuResolve, ReduceBlendNearClampRaisesAlphaTowardTheBoxEdge) {
+TEST(CpuResolve, ReduceBlendNearClampLowersAlphaTowardTheBoxEdge) {
   const float alpha = 0.1f, lo = 1.0f, hi = 3.0f;
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 2.0f, lo, hi), alpha);  // centre: unchanged
-  // Halfway from the centre to the edge, half of the extra alpha.
-  EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 1.5f, lo, hi), alpha + 0.25f * (1.0f - alpha));
-  const float edge = alpha + 0.5f * (1.0f - alpha);
+  // Halfway from the centre to the edge, a quarter less.
+  EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 1.5f, lo, hi), 0.75f * alpha);
+  const float edge = 0.5f * alpha;
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, lo, lo, hi), edge);
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 5.0f, lo, hi), edge);      // beyond: as the edge
   EXPECT_FLOAT_EQ(cpu::reduceBlendNearClamp(alpha, 1.0f, 1.0f, 1.0f), edge);  // flat box
-  float previous = 1.0f;
+  float previous = 0.0f;
   for (float h = lo; h <= 2.0f; h += 0.125f) {
     const float a = cpu::reduceBlendNearClamp(alpha, h, lo, hi);
-    ASSERT_LE(a, previous);
+    ASSERT_GE(a, previous);
     previous = a;
   }
 }

@@ -281,7 +281,7 @@ float reduceBlendNearClamp(float alpha, float lumaHistory, float lo, float hi) {
       halfExtent > 1e-7f
           ? std::clamp(std::min(lumaHistory - lo, hi - lumaHistory) / halfExtent, 0.0f, 1.0f)
           : 0.0f;
-  return alpha + (1.0f - alpha) * 0.5f * (1.0f - t);
+  return alpha * (0.5f + 0.5f * t);
 }
 
 float velocityAlpha(float alpha, float speedPx, float fullSpeedPx) {

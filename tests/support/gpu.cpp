@@ -8,7 +8,6 @@
 #include "case/case_loader.h"
 #include "core/image_io.h"
 #include "readback.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "vk/transfer.h"
 
@@ -64,9 +63,10 @@ spec::CaseSpec caseFromJson(const std::string& json, const std::string& name) {
   return cases::parseCase(json, path).spec;
 }
 
-std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages) {
+std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages,
+                                    const RenderOptions& options) {
   const auto scene = scene::buildScene(spec);
-  Renderer renderer(gpu(), spec, scene);
+  Renderer renderer(gpu(), spec, scene, options);
   const auto& wanted = framesWithImages.empty() ? spec.output.frames : framesWithImages;
   std::vector<FrameRecord> out;
   for (int f = 0; f < spec.script.frames; ++f)

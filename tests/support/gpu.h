@@ -9,6 +9,7 @@
 #include "vk/context.h"
 #include "vk/resources.h"
 #include "frame_record.h"
+#include "renderer.h"
 
 namespace taa::test {
 
@@ -25,7 +26,9 @@ Image downloadImage(vk::Image& image);
 spec::CaseSpec caseFromJson(const std::string& json, const std::string& name = "test");
 
 // Renders a case and returns every frame's record; images for `framesWithImages`
-// (empty: the case's output.frames).
-std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages = {});
+// (empty: the case's output.frames). `options` adds the reference and captured buffers
+// (current colour, ids, velocity) to those frames.
+std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages = {},
+                                    const RenderOptions& options = {});
 
 }  // namespace taa::test

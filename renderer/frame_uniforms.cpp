@@ -17,7 +17,8 @@ gpu::FrameUniforms makeFrameUniforms(const script::FrameState& s, const spec::Li
   u.viewProjNoJitter = s.camera.viewProjection;
   u.prevViewProjNoJitter = s.prevCamera.viewProjection;
   u.invViewProjNoJitter = glm::inverse(s.camera.viewProjection);
-  u.skyInvViewProj = glm::inverse(rotationOnly(s.camera));
+  u.skyViewProj = rotationOnly(s.camera);
+  u.skyInvViewProj = glm::inverse(u.skyViewProj);
   u.skyPrevViewProj = rotationOnly(s.prevCamera);
   u.cameraPos = glm::vec4(s.camera.position, 1.0f);
   u.lightDir = glm::vec4(-glm::normalize(lighting.direction), lighting.intensity);

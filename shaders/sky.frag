@@ -35,11 +35,14 @@ void main() {
   vec3 c = skyColor(dir);
   outColor = kDeferred ? vec4(0.0) : vec4(c, 1.0);
 #if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
+  // Both ends projected the same way, so a camera that did not turn gives exactly 0.
+  vec4 curClip = frame.skyViewProj * vec4(dir, 0.0);
   vec4 prevClip = frame.skyPrevViewProj * vec4(dir, 0.0);
+  vec2 curPixel = (curClip.xy / curClip.w * 0.5 + 0.5) * frame.renderSize.xy;
   vec2 prevPixel = (prevClip.xy / prevClip.w * 0.5 + 0.5) * frame.renderSize.xy;
   // A direction behind last frame's camera has no previous pixel: report no motion
   // rather than a mirrored one; TAA rejects such history through its other checks.
-  outVelocity = prevClip.w > 0.0 ? pixel - prevPixel : vec2(0.0);
+  outVelocity = prevClip.w > 0.0 ? curPixel - prevPixel : vec2(0.0);
 #endif
 #if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0
   outAlbedo = vec4(c, 0.0);  // alpha 0 marks sky for the deferred pass: emit, do not shade

@@ -44,6 +44,7 @@ TAA_BLOCK(FrameUniforms) {
   mat4 prevViewProjNoJitter;
   mat4 invViewProjNoJitter;   // reconstructs world positions from depth
   mat4 skyInvViewProj;        // rotation-only inverse: view direction of a sky pixel
+  mat4 skyViewProj;           // rotation-only view-projection: where that direction is now
   mat4 skyPrevViewProj;       // rotation-only previous view-projection: sky velocity
   vec4 cameraPos;             // xyz
   vec4 lightDir;              // xyz: unit vector towards the light; w: intensity
@@ -155,7 +156,7 @@ TAA_BLOCK(InjectPush) {
 static_assert(sizeof(InjectPush) == 80);
 static_assert(sizeof(PostPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
-static_assert(sizeof(FrameUniforms) == 6 * 64 + 6 * 16);
+static_assert(sizeof(FrameUniforms) == 7 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
 static_assert(sizeof(DrawPush) == 32);
 }  // namespace taa::gpu

@@ -255,7 +255,9 @@ vec3 clampToBox(vec3 h, const Box& b) {
 
 vec3 clipToBox(vec3 h, const Box& b) {
   const vec3 center = 0.5f * (b.lo + b.hi);
-  const vec3 extent = 0.5f * (b.hi - b.lo);
+  // As the shader: every channel widened by one half-float step of the largest bound.
+  const vec3 bound = glm::max(glm::abs(b.lo), glm::abs(b.hi));
+  const vec3 extent = 0.5f * (b.hi - b.lo) + std::max(bound.x, std::max(bound.y, bound.z)) * (1.0f / 1024.0f);
   const vec3 offset = h - center;
   const vec3 units = glm::abs(offset) / glm::max(extent, vec3(1e-7f));
   const float m = std::max(units.x, std::max(units.y, units.z));

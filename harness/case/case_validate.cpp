@@ -8,6 +8,7 @@
 #include "case/validate_invariants.h"
 #include "case/case_error.h"
 #include "case/validate_taa.h"
+#include "case/validate_tracks.h"
 
 namespace taa::cases {
 
@@ -28,23 +29,8 @@ class Problems {
   std::vector<std::string> list_;
 };
 
-// Relative asset paths must stay inside the case's folder tree, so a case never
-// reads arbitrary files and stays portable across checkouts.
 void checkAssetPath(Problems& p, const std::string& key, const std::string& value) {
-  if (value.find("://") != std::string::npos) {
-    p.add(key, "'" + value + "' is a URI; only local files next to the case are allowed");
-    return;
-  }
-  const std::filesystem::path path(value);
-  if (path.is_absolute()) {
-    p.add(key, "'" + value + "' is absolute; give a path relative to the case file");
-    return;
-  }
-  for (const auto& part : path.lexically_normal())
-    if (part == "..") {
-      p.add(key, "'" + value + "' leaves the case's folder; move the asset under it");
-      return;
-    }
+  if (const std::string why = assetPathProblem(value); !why.empty()) p.add(key, why);
 }
 
 template <class T>
@@ -146,6 +132,19 @@ void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& p
 
 }  // namespace
 
+// Relative asset paths must stay inside the case's folder tree, so a case never
+// reads arbitrary files and stays portable across checkouts.
+std::string assetPathProblem(const std::string& value) {
+  if (value.find("://") != std::string::npos)
+    return "'" + value + "' is a URI; only local files next to the case are allowed";
+  const std::filesystem::path path(value);
+  if (path.is_absolute())
+    return "'" + value + "' is absolute; give a path relative to the case file";
+  for (const auto& part : path.lexically_normal())
+    if (part == "..") return "'" + value + "' leaves the case's folder; move the asset under it";
+  return "";
+}
+
 void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   Problems p(spec.file.string());
   const int frames = spec.script.frames;
@@ -189,6 +188,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
     if (spec.render.scale_schedule[i].frame >= frames)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
   for (const auto& [key, msg] : invariantProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : trackProblems(spec, present)) p.add(key, msg);
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.
@@ -199,6 +199,7 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   spec.output.frames.erase(std::unique(spec.output.frames.begin(), spec.output.frames.end()),
                            spec.output.frames.end());
   std::sort(spec.script.reset_history_at.begin(), spec.script.reset_history_at.end());
+  loadCaseTracks(spec, present);
 }
 
 }  // namespace taa::cases

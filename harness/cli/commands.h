@@ -16,5 +16,6 @@ int cmdRender(const Args& args);
 int cmdRun(const Args& args);
 int cmdBless(const Args& args);
 int cmdNewCase(const Args& args);
+int cmdBake(const Args& args);
 
 }  // namespace taa::cli

@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "scene/scene_error.h"
+#include "script/track.h"
 #include "vk/check.h"
 
 namespace taa::cli {
@@ -27,6 +28,7 @@ const std::map<std::string, Command>& commands() {
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
       {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},
       {"bless", {cmdBless, "write a case's goldens (atomic) with the reason, after its invariants pass"}},
+      {"bake", {cmdBake, "write a case's camera and mover poses per frame as a track (replays bit for bit)"}},
 
   };
   return table;
@@ -64,6 +66,9 @@ int dispatch(int argc, char** argv) {
     std::cerr << "taa-harness " << name << ": " << e.what() << "\n";
     return kBadInput;
   } catch (const scene::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const script::TrackError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
   } catch (const vk::EnvironmentError& e) {

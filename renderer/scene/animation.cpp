@@ -60,20 +60,13 @@ glm::vec4 sample(const AnimChannel& ch, float t, bool rotation) {
 
 }  // namespace
 
-std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
-  const Model& m = scene.models[size_t(model)];
+std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
   std::vector<Node> nodes = m.nodes;
   if (!m.animations.empty()) {
-    const Animation& anim = m.animations.front();
-    double local = 0.0;
-    if (anim.duration > 0.0f) {
-      local = std::fmod(time, double(anim.duration));
-      if (local < 0.0) local += double(anim.duration);
-    }
-    for (const AnimChannel& ch : anim.channels) {
+    for (const AnimChannel& ch : m.animations.front().channels) {
       if (ch.node < 0 || size_t(ch.node) >= nodes.size() || ch.times.empty()) continue;
       Node& n = nodes[size_t(ch.node)];
-      const glm::vec4 v = sample(ch, float(local), ch.path == AnimPath::Rotation);
+      const glm::vec4 v = sample(ch, float(time), ch.path == AnimPath::Rotation);
       switch (ch.path) {
         case AnimPath::Translation:
           n.translation = glm::vec3(v);
@@ -88,15 +81,28 @@ std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
     }
   }
   std::vector<glm::mat4> world(nodes.size());
-  std::vector<MeshDraw> draws;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const Node& n = nodes[i];
     const glm::mat4 local = glm::translate(glm::mat4(1.0f), n.translation) *
                             glm::mat4_cast(n.rotation) * glm::scale(glm::mat4(1.0f), n.scale);
     assert(n.parent < int(i));
     world[i] = n.parent >= 0 ? world[size_t(n.parent)] * local : local;
-    if (n.mesh >= 0) draws.push_back({int(i), n.mesh, world[i]});
   }
+  return world;
+}
+
+std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
+  const Model& m = scene.models[size_t(model)];
+  double local = 0.0;
+  if (!m.animations.empty() && m.animations.front().duration > 0.0f) {
+    const double duration = double(m.animations.front().duration);
+    local = std::fmod(time, duration);
+    if (local < 0.0) local += duration;
+  }
+  const std::vector<glm::mat4> world = nodeWorldTransforms(m, local);
+  std::vector<MeshDraw> draws;
+  for (size_t i = 0; i < m.nodes.size(); ++i)
+    if (m.nodes[i].mesh >= 0) draws.push_back({int(i), m.nodes[i].mesh, world[i]});
   return draws;
 }
 

@@ -242,6 +242,11 @@ void Converter::addNode(int index, int parent, Model& model, std::vector<int>& v
       fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
     n.mesh = mesh(gn.mesh);
   }
+  if (gn.camera >= 0) {
+    if (size_t(gn.camera) >= g_.cameras.size())
+      fail("nodes[" + std::to_string(index) + "] refers to a missing camera");
+    n.camera = gn.camera;
+  }
   const int self = int(model.nodes.size());
   nodes_[index] = self;
   model.nodes.push_back(std::move(n));
@@ -317,6 +322,16 @@ Model Converter::run() {
         if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
     for (size_t i = 0; i < g_.nodes.size(); ++i)
       if (!child[i]) roots.push_back(int(i));
+  }
+  for (const tinygltf::Camera& c : g_.cameras) {
+    Camera cam;
+    cam.perspective = c.type == "perspective";
+    if (cam.perspective) {
+      cam.yfov = float(c.perspective.yfov);
+      cam.znear = float(c.perspective.znear);
+      cam.zfar = float(c.perspective.zfar);
+    }
+    model.cameras.push_back(cam);
   }
   std::vector<int> visiting;
   for (int r : roots) addNode(r, -1, model, visiting);

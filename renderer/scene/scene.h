@@ -61,6 +61,7 @@ struct Node {
   std::string name;
   int parent = -1;  // index into the same Model's nodes; parents come before children
   int mesh = -1;    // index into Scene::meshes, -1 = none
+  int camera = -1;  // index into the same Model's cameras, -1 = none
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 scale{1.0f};
@@ -83,11 +84,21 @@ struct Animation {
   float duration = 0.0f;  // last key time over all channels
 };
 
+// A glTF camera. It looks down its node's local -Z with +Y up; only perspective
+// cameras are usable (recorded camera tracks import them).
+struct Camera {
+  bool perspective = true;
+  float yfov = 0.8f;   // radians
+  float znear = 0.1f;
+  float zfar = 0.0f;   // 0: infinite (glTF leaves zfar out)
+};
+
 // A node hierarchy: the static world, or one mover's object.
 struct Model {
   std::string name;
   std::vector<Node> nodes;
   std::vector<Animation> animations;
+  std::vector<Camera> cameras;
 };
 
 struct Scene {
@@ -109,6 +120,10 @@ struct MeshDraw {
 // Evaluates a model's node hierarchy at `time` seconds of its first animation
 // (looping), returning every mesh-bearing node in node order. Pure function.
 std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time);
+
+// World transform of every node at `time` seconds into the model's first animation,
+// not looped: before the first key and after the last the end values hold.
+std::vector<glm::mat4> nodeWorldTransforms(const Model& model, double time);
 
 // Object-space bounds of a model at rest (time 0), for framing a camera.
 void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi);

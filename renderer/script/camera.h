@@ -24,6 +24,15 @@ struct CameraPose {
   glm::mat4 view() const;  // world -> view, the inverse of [orientation | position]
 };
 
+// A pose with its lens and cut flag: what the script or a recorded track gives per
+// frame, and what a baked track stores.
+struct CameraFrame {
+  CameraPose pose;
+  float fovYDeg = 60.0f;
+  float nearPlane = 0.1f, farPlane = 1000.0f;
+  bool cut = false;  // a new shot starts at this frame
+};
+
 // Orientation facing `forward` with world +Y as the up hint, as glm::lookAt does.
 // Looking straight up or down has no such up; the hint then becomes -Z when looking
 // down and +Z when looking up, i.e. the screen's top keeps pointing where a camera

@@ -12,22 +12,51 @@
 #include "script/movers.h"
 #include "script/projection.h"
 #include "script/timing.h"
+#include "script/tracks.h"
 
 namespace taa::script {
 
 namespace {
 
-CameraState toCameraState(const spec::CaseSpec& spec, const CameraPose& pose) {
+CameraState toCameraState(const spec::CaseSpec& spec, const CameraFrame& frame) {
   CameraState cam;
-  cam.position = glm::vec3(pose.position);
-  cam.view = pose.view();
-  cam.fovY = glm::radians(spec.camera.fov_y_deg);
+  cam.position = glm::vec3(frame.pose.position);
+  cam.view = frame.pose.view();
+  cam.fovY = glm::radians(frame.fovYDeg);
   cam.aspect = static_cast<float>(spec.render.width) / static_cast<float>(spec.render.height);
-  cam.nearPlane = spec.camera.near_plane;
-  cam.farPlane = spec.camera.far_plane;
+  cam.nearPlane = frame.nearPlane;
+  cam.farPlane = frame.farPlane;
   cam.projection = reversedZPerspective(cam.fovY, cam.aspect, cam.nearPlane, cam.farPlane);
   cam.viewProjection = cam.projection * cam.view;
   return cam;
+}
+
+// The loaded tracks when the case replays any, checked against the frame asked for.
+const Tracks* tracksFor(const spec::CaseSpec& spec, int frame) {
+  if (!usesTracks(spec)) return nullptr;
+  const Tracks* t = spec.tracks.get();
+  if (!t || t->fps != spec.script.fps || t->frames != spec.script.frames)
+    throw std::logic_error("frameState: " + spec.file.string() +
+                           " replays tracks that were not loaded for its script.fps and "
+                           "script.frames; load the case with cases::loadCase / parseCase, or "
+                           "set spec.tracks from script::loadTracks(spec) after editing it");
+  if (frame >= t->frames)
+    throw std::out_of_range("frameState: frame " + std::to_string(frame) +
+                            " is past the recorded tracks' " + std::to_string(t->frames) +
+                            " frames");
+  return t;
+}
+
+CameraFrame cameraFrameAt(const spec::CaseSpec& spec, const Tracks* tracks, const Path& path,
+                          int frame) {
+  if (tracks && !tracks->camera.empty()) return tracks->camera[size_t(frame)];
+  CameraFrame f;
+  f.pose = cameraPose(spec.camera, path, frame, frameTime(spec.script, frame));
+  f.fovYDeg = spec.camera.fov_y_deg;
+  f.nearPlane = spec.camera.near_plane;
+  f.farPlane = spec.camera.far_plane;
+  f.cut = cutStartsAt(spec.camera, frame);
+  return f;
 }
 
 }  // namespace
@@ -49,12 +78,18 @@ glm::ivec2 renderSizeFor(const spec::RenderSpec& render, float scale) {
   return {axis(render.width), axis(render.height)};
 }
 
+CameraFrame cameraFrame(const spec::CaseSpec& spec, int frame) {
+  if (frame < 0) throw std::out_of_range("cameraFrame: negative frame " + std::to_string(frame));
+  return cameraFrameAt(spec, tracksFor(spec, frame), Path(spec.camera.path), frame);
+}
+
 CameraState cameraState(const spec::CaseSpec& spec, int frame) {
-  return toCameraState(spec, cameraPose(spec.camera, spec.script, frame));
+  return toCameraState(spec, cameraFrame(spec, frame));
 }
 
 FrameState frameState(const spec::CaseSpec& spec, int frame) {
   if (frame < 0) throw std::out_of_range("frameState: negative frame " + std::to_string(frame));
+  const Tracks* tracks = tracksFor(spec, frame);
   FrameState fs;
   fs.frame = frame;
   fs.time = frameTime(spec.script, frame);
@@ -62,13 +97,13 @@ FrameState frameState(const spec::CaseSpec& spec, int frame) {
   fs.renderSize = renderSizeFor(spec.render, fs.renderScale);
 
   const Path path(spec.camera.path);
-  fs.cameraCut = cutStartsAt(spec.camera, frame);
-  fs.camera = toCameraState(spec, cameraPose(spec.camera, path, frame, fs.time));
+  const CameraFrame current = cameraFrameAt(spec, tracks, path, frame);
+  fs.cameraCut = current.cut;
+  fs.camera = toCameraState(spec, current);
   // A cut is a new shot: there is no meaningful previous view to reproject from.
   const bool samePrev = frame == 0 || fs.cameraCut;
-  fs.prevCamera = samePrev ? fs.camera
-                           : toCameraState(spec, cameraPose(spec.camera, path, frame - 1,
-                                                            frameTime(spec.script, frame - 1)));
+  fs.prevCamera =
+      samePrev ? fs.camera : toCameraState(spec, cameraFrameAt(spec, tracks, path, frame - 1));
 
   fs.jitter = jitterOffset(spec.jitter, frame);
   fs.jitteredProjection = applyJitter(fs.camera.projection, fs.jitter, fs.renderSize);
@@ -76,11 +111,13 @@ FrameState frameState(const spec::CaseSpec& spec, int frame) {
   // Movers keep moving through a camera cut, so their previous transform is always
   // frame - 1 (only frame 0 has none).
   const int prevFrame = std::max(0, frame - 1);
-  for (const auto& mover : spec.movers) {
-    const MoverState now = moverState(mover, spec.script, frame);
-    const MoverState before = moverState(mover, spec.script, prevFrame);
-    fs.movers.push_back(now.model);
-    fs.prevMovers.push_back(before.model);
+  for (size_t i = 0; i < spec.movers.size(); ++i) {
+    const MoverState now = moverState(spec.movers[i], spec.script, frame);
+    const MoverState before = moverState(spec.movers[i], spec.script, prevFrame);
+    const bool recorded = tracks && !tracks->movers[i].empty();
+    fs.movers.push_back(recorded ? tracks->movers[i][size_t(frame)] : now.model);
+    fs.prevMovers.push_back(recorded ? tracks->movers[i][size_t(prevFrame)] : before.model);
+    // A recorded mover's glTF animation still runs on the case's clock.
     fs.moverAnimTime.push_back(now.animationTime);
     fs.prevMoverAnimTime.push_back(before.animationTime);
   }

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "script/camera.h"
 #include "spec/case_spec.h"
 
 namespace taa::script {
@@ -47,10 +48,16 @@ float renderScaleAt(const spec::RenderSpec& render, int frame);
 // validator computes it), times `scale`, rounded again, at least 1.
 glm::ivec2 renderSizeFor(const spec::RenderSpec& render, float scale);
 
+// The camera's pose, lens and cut flag at `frame`: from the loaded camera track when
+// camera.track is set (spec.tracks), else from the script.
+CameraFrame cameraFrame(const spec::CaseSpec& spec, int frame);
+
 CameraState cameraState(const spec::CaseSpec& spec, int frame);
 
 // Throws std::out_of_range for frame < 0; frames past script.frames are allowed
-// (the script simply continues).
+// (the script simply continues) unless the case replays recorded tracks, which end
+// there. A case with tracks needs spec.tracks loaded for its fps and frames (the
+// case loader does that), else std::logic_error.
 FrameState frameState(const spec::CaseSpec& spec, int frame);
 
 }  // namespace taa::script

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,10 @@
 #include "spec/scene_spec.h"
 #include "spec/script_spec.h"
 #include "spec/taa_spec.h"
+
+namespace taa::script {
+struct Tracks;
+}
 
 namespace taa::spec {
 
@@ -35,6 +40,10 @@ struct CaseSpec {
   ReferenceSpec reference;
   InjectSpec inject;
   ChecksSpec checks;
+  // The recorded tracks (camera.track, movers[].track) read and resampled to the
+  // case's frames once, when the case is loaded (script::loadTracks); frame
+  // evaluation only indexes them. Null when the case sets no track.
+  std::shared_ptr<const script::Tracks> tracks;
 };
 
 template <class V>

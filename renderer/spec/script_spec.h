@@ -123,6 +123,9 @@ struct CameraSpec {
   BobSpec bob;
   StrafeSpec strafe;
   std::vector<CutSpec> cuts;
+  std::string track;  // recorded poses; replaces position/target/path/rotate/bob/strafe/cuts
+  std::string track_camera;
+  float track_time_offset_s = 0.0f;
 };
 
 template <class V>
@@ -138,6 +141,19 @@ void fields(V& v, CameraSpec& s) {
   v.object("bob", s.bob, Meta{"procedural bobbing", impl});
   v.object("strafe", s.strafe, Meta{"procedural strafing", impl});
   v.list("cuts", s.cuts, Meta{"camera cuts (teleports); each flags its frame for history reset", impl});
+  const char* track = "renderer/script/tracks.cpp";
+  v.field("track", s.track,
+          Meta{"recorded camera track (.json, .csv, or an animated camera in a .gltf/.glb), "
+               "relative to the case file; replaces position, target, path, rotate, bob, strafe "
+               "and cuts, and fov/near/far when the track carries them (docs/tracks.md)",
+               track});
+  v.field("track_camera", s.track_camera,
+          Meta{"name of the camera node of a glTF camera track; may be left out when the file "
+               "has exactly one camera node",
+               "renderer/script/track_gltf.cpp"});
+  v.field("track_time_offset_s", s.track_time_offset_s, Range<float>{-1e6f, 1e6f},
+          Meta{"track time replayed at frame 0: frame n samples the track at offset + n / fps",
+               track});
 }
 
 enum class MoverShape { Cube, Sphere, Gltf };
@@ -163,6 +179,8 @@ struct MoverSpec {
   float rotation_speed_deg = 0.0f;
   bool continuous_rotation = true;
   float animation_speed = 1.0f;
+  std::string track;  // recorded transforms; replaces start/end/speed/repeat/rotation/size
+  float track_time_offset_s = 0.0f;
 };
 
 template <class V>
@@ -186,6 +204,15 @@ void fields(V& v, MoverSpec& s) {
                impl});
   v.field("animation_speed", s.animation_speed, Range<float>{0.0f, 1e3f},
           Meta{"playback speed of the glTF model's node animation", "renderer/scene/animation.cpp"});
+  const char* track = "renderer/script/tracks.cpp";
+  v.field("track", s.track,
+          Meta{"recorded transforms (.json: its movers[i] for this mover i; .csv: the whole "
+               "file), relative to the case file; replaces start, end, speed, speed_unit, "
+               "repeat, rotation and size (docs/tracks.md)",
+               track});
+  v.field("track_time_offset_s", s.track_time_offset_s, Range<float>{-1e6f, 1e6f},
+          Meta{"track time replayed at frame 0: frame n samples the track at offset + n / fps",
+               track});
 }
 
 enum class JitterPattern { None, Halton, Uniform4, Symmetric2, Legacy2, Manual };

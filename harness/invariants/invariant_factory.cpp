@@ -30,6 +30,9 @@ Needs needsOf(InvariantKind kind) {
       break;
     case InvariantKind::BitStable:
       break;
+    case InvariantKind::AdaptiveUnmarked:
+      n.adaptive = true;
+      break;
   }
   return n;
 }
@@ -48,6 +51,8 @@ std::string inapplicable(InvariantKind kind, const spec::CaseSpec& spec) {
       return energyInapplicable(spec);
     case InvariantKind::BitStable:
       return bitStableInapplicable(spec);
+    case InvariantKind::AdaptiveUnmarked:
+      return adaptiveUnmarkedInapplicable(spec);
     case InvariantKind::Finite:       // meaningful for any output
     case InvariantKind::Determinism:  // likewise
       return "";
@@ -73,6 +78,8 @@ std::unique_ptr<Invariant> makeInvariant(InvariantKind kind, const spec::CaseSpe
       return makeDeterminism(spec);
     case InvariantKind::BitStable:
       return makeBitStable(spec);
+    case InvariantKind::AdaptiveUnmarked:
+      return makeAdaptiveUnmarked(spec);
   }
   return nullptr;
 }

@@ -1,5 +1,7 @@
 #include "support/gpu.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -65,8 +67,21 @@ spec::CaseSpec caseFromJson(const std::string& json, const std::string& name) {
 }
 
 std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages) {
+  return renderCaseWith(spec, RenderOptions{}, framesWithImages);
+}
+
+const Image& auxImage(const FrameRecord& record, const std::string& name) {
+  for (const auto& a : record.aux)
+    if (a.name == name) return a.image;
+  ADD_FAILURE() << "frame " << record.frame << " has no aux image '" << name << "'";
+  static const Image kEmpty;
+  return kEmpty;
+}
+
+std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,
+                                        const std::vector<int>& framesWithImages) {
   const auto scene = scene::buildScene(spec);
-  Renderer renderer(gpu(), spec, scene);
+  Renderer renderer(gpu(), spec, scene, options);
   const auto& wanted = framesWithImages.empty() ? spec.output.frames : framesWithImages;
   std::vector<FrameRecord> out;
   for (int f = 0; f < spec.script.frames; ++f)

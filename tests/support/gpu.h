@@ -9,6 +9,7 @@
 #include "vk/context.h"
 #include "vk/resources.h"
 #include "frame_record.h"
+#include "renderer.h"
 
 namespace taa::test {
 
@@ -27,5 +28,12 @@ spec::CaseSpec caseFromJson(const std::string& json, const std::string& name = "
 // Renders a case and returns every frame's record; images for `framesWithImages`
 // (empty: the case's output.frames).
 std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages = {});
+
+// The same with render options (reference, captures).
+std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,
+                                        const std::vector<int>& framesWithImages = {});
+
+// An aux image of a record by name; fails the test (returns an empty image) when absent.
+const Image& auxImage(const FrameRecord& record, const std::string& name);
 
 }  // namespace taa::test

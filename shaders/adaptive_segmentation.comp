@@ -102,7 +102,8 @@ void main() {
   imageStore(maskImage, p, uvec4(mark));
 
   // Integer sums: the totals do not depend on the order the invocations run in.
-  if (mark == ADAPTIVE_MASK_TRACE || mark == ADAPTIVE_MASK_TRACE_HISTORY) atomicAdd(counts.traced, 1u);
+  bool traced = mark == ADAPTIVE_MASK_TRACE || mark == ADAPTIVE_MASK_TRACE_HISTORY;
+  if (traced) atomicAdd(counts.traced, 1u);
   if (mark == ADAPTIVE_MASK_FXAA) atomicAdd(counts.fxaa, 1u);
   if (kDebug) imageStore(debugImage, p, vec4(debugColor(mark, p), 1.0));
 }

@@ -18,10 +18,10 @@ layout(constant_id = TRACE_SPEC_RAY_LOD) const bool kRayLod = true;
 
 layout(std140, binding = TRACE_BINDING_FRAME) uniform FrameBlock { FrameUniforms frame; };
 layout(std140, binding = TRACE_BINDING_PARAMS) uniform TraceBlock { TraceUniforms trace; };
-layout(std430, binding = TRACE_BINDING_NODES) readonly buffer NodeBlock { BvhNode nodes[]; };
-layout(std430, binding = TRACE_BINDING_TRIANGLES) readonly buffer TriangleBlock { TraceTriangle triangles[]; };
-layout(std430, binding = TRACE_BINDING_SHADING) readonly buffer ShadingBlock { TraceShading shading[]; };
-layout(std430, binding = TRACE_BINDING_MATERIALS) readonly buffer MaterialBlock { TraceMaterial materials[]; };
+layout(std430, binding = TRACE_BINDING_NODES) readonly buffer Nodes { BvhNode nodes[]; };
+layout(std430, binding = TRACE_BINDING_TRIANGLES) readonly buffer T { TraceTriangle triangles[]; };
+layout(std430, binding = TRACE_BINDING_SHADING) readonly buffer Shading { TraceShading shading[]; };
+layout(std430, binding = TRACE_BINDING_MATERIALS) readonly buffer M { TraceMaterial materials[]; };
 layout(binding = TRACE_BINDING_MASK) uniform usampler2D maskTex;
 layout(binding = TRACE_BINDING_OUT) uniform writeonly image2D outImage;
 layout(binding = TRACE_BINDING_TEXTURES) uniform sampler2D textures[TRACE_MAX_TEXTURES];
@@ -51,9 +51,9 @@ CameraRay cameraRay(vec2 pixel) {
 // lavapipe cannot index sampler arrays with a varying index (no
 // shaderSampledImageArrayDynamicIndexing), so each slot is a case with a constant one.
 // textureGrad has no bias argument; scaling the gradients by 2^bias adds bias to the LOD.
-#define TRACE_TEXTURE_CASE(i)                                                                          \
-  case i:                                                                                              \
-    return kRayLod ? textureGrad(textures[i], uv, dx * trace.params.x, dy * trace.params.x)           \
+#define TRACE_TEXTURE_CASE(i)                                                         \
+  case i:                                                                             \
+    return kRayLod ? textureGrad(textures[i], uv, dx * trace.params.x, dy * trace.params.x) \
                    : textureLod(textures[i], uv, 0.0);
 
 vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {

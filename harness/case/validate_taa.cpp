@@ -34,16 +34,18 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
   for (const auto& key : r.keysUnder("adaptive.")) r.needs(key, adaptive, "taa.mode is adaptive");
   if (!adaptive) return;
   if (resamples)
-    r.add("taa.mode", "adaptive traces and segments at output size against the G-buffer; remove render.upsample "
-                      "and render.scale_schedule");
+    r.add("taa.mode",
+          "adaptive traces and segments at output size against the G-buffer; remove "
+          "render.upsample and render.scale_schedule");
   const auto& a = s.adaptive;
-  if (a.trace_all) {
-    for (const char* key : {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth",
-                            "adaptive.weight_material", "adaptive.weight_luminance", "adaptive.history_count",
-                            "adaptive.trace_disoccluded"})
-      if (r.set(key)) r.add(key, "adaptive.trace_all traces every pixel; the segmentation settings do nothing");
-    r.needs("adaptive.fxaa_out_of_history", !a.trace_all, "adaptive.trace_all is false (every pixel is traced)");
-  }
+  if (!a.trace_all) return;
+  for (const char* key :
+       {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth", "adaptive.weight_material",
+        "adaptive.weight_luminance", "adaptive.history_count", "adaptive.trace_disoccluded",
+        "adaptive.fxaa_out_of_history"})
+    if (r.set(key))
+      r.add(key, "adaptive.trace_all traces every pixel, so the segmentation settings do nothing; "
+                 "remove the key or trace_all");
 }
 
 }  // namespace

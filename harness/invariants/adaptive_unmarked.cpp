@@ -17,7 +17,8 @@ class AdaptiveUnmarked : public Invariant {
  public:
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    for (auto [img, what] : {std::pair{f.resolved, "taa_resolve"}, std::pair{f.segmentation, "segmentation"}}) {
+    for (auto [img, what] :
+         {std::pair{f.resolved, "taa_resolve"}, std::pair{f.segmentation, "segmentation"}}) {
       if (auto why = requireImage(f, img, what, 1); !why.empty()) {
         error_ = why;
         return;
@@ -41,8 +42,9 @@ class AdaptiveUnmarked : public Invariant {
           const float a = f.output->at(x, y, c), b = f.resolved->at(x, y, c);
           same = same && std::memcmp(&a, &b, sizeof(float)) == 0;
         }
-        if (!same && differing_++ == 0) where_ = "frame " + std::to_string(f.frame) + " pixel (" +
-                                                 std::to_string(x) + ", " + std::to_string(y) + ")";
+        if (!same && differing_++ == 0)
+          where_ = "frame " + std::to_string(f.frame) + " pixel (" + std::to_string(x) + ", " +
+                   std::to_string(y) + ")";
       }
   }
 
@@ -62,11 +64,12 @@ class AdaptiveUnmarked : public Invariant {
       return o;
     }
     o.passed = differing_ == 0;
-    o.detail = o.passed ? "unmarked pixels equal the resolve's output in " + std::to_string(frames_) +
-                              " frame(s) (traced " + num(double(traced_) / n) + ", FXAA " + num(double(fxaa_) / n) +
-                              " of pixels)"
-                        : std::to_string(differing_) + " unmarked pixel(s) differ from the resolve's output; first at " +
-                              where_;
+    o.detail = o.passed
+                   ? "unmarked pixels equal the resolve's output in " + std::to_string(frames_) +
+                         " frame(s) (traced " + num(double(traced_) / n) + ", FXAA " +
+                         num(double(fxaa_) / n) + " of pixels)"
+                   : std::to_string(differing_) +
+                         " unmarked pixel(s) differ from the resolve's output; first at " + where_;
     return o;
   }
 
@@ -85,11 +88,15 @@ std::string adaptiveUnmarkedInapplicable(const CaseSpec& spec) {
            "; set taa.mode to adaptive or remove it from checks.invariants";
   if (auto why = debugViewReason(name, spec); !why.empty()) return why;
   if (spec.post.sharpen != Sharpen::None || spec.post.fxaa)
-    return name + " compares the output with the resolve's, but post.sharpen / post.fxaa change every pixel "
-                  "after it; remove them or the invariant";
+    return name +
+           " compares the output with the resolve's, but post.sharpen / post.fxaa change every "
+           "pixel "
+           "after it; remove them or the invariant";
   return "";
 }
 
-std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CaseSpec&) { return std::make_unique<AdaptiveUnmarked>(); }
+std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CaseSpec&) {
+  return std::make_unique<AdaptiveUnmarked>();
+}
 
 }  // namespace taa::invariants

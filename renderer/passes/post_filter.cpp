@@ -32,8 +32,8 @@ void requireCovers(const vk::Image& image, glm::ivec2 size, const char* pass) {
                            "'");
 }
 
-PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params, bool maskBinding,
-                       const vk::SpecConstants& spec)
+PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params,
+                       bool maskBinding, const vk::SpecConstants& spec)
     : ctx_(ctx),
       name_(shader),
       params_(params),
@@ -52,7 +52,8 @@ PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 pa
     noMask_.use(cmd, vk::Use::TransferDst);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, noMask_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+    vkCmdClearColorImage(cmd, noMask_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
+                         &range);
     noMask_.use(cmd, vk::Use::SampledCompute);
     ctx.submitAndWait(cmd);
   }
@@ -67,7 +68,8 @@ void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output
   input.use(cmd, vk::Use::SampledCompute);
   output.use(cmd, vk::Use::StorageWrite);
   vk::Bindings b;
-  b.sampled(POST_BINDING_INPUT, input.view(), point_.handle()).storage(POST_BINDING_OUTPUT, output.view());
+  b.sampled(POST_BINDING_INPUT, input.view(), point_.handle())
+      .storage(POST_BINDING_OUTPUT, output.view());
   if (noMask_) {
     vk::Image& m = mask ? *mask : noMask_;
     m.use(cmd, vk::Use::SampledCompute);

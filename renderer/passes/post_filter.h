@@ -24,8 +24,8 @@ class PostFilter {
  public:
   // `maskBinding`: the shader declares POST_BINDING_MASK (FXAA); a 1x1 zero mask is
   // bound when record() gets none, so the descriptor is always valid.
-  PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params, bool maskBinding = false,
-             const vk::SpecConstants& spec = {});
+  PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params,
+             bool maskBinding = false, const vk::SpecConstants& spec = {});
 
   // Filters the top-left `size` pixels of `input` into `output` (the rest of
   // `output` is left as it was).

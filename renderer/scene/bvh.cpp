@@ -102,7 +102,9 @@ struct Builder {
 
   uint32_t partition(uint32_t begin, uint32_t end, const Box& cb, const Split& s) {
     const float scale = float(kBins) / (cb.hi[s.axis] - cb.lo[s.axis]);
-    auto goesLeft = [&](uint32_t t) { return binOf(centroids[t][s.axis], cb.lo[s.axis], scale) <= s.bin; };
+    auto goesLeft = [&](uint32_t t) {
+      return binOf(centroids[t][s.axis], cb.lo[s.axis], scale) <= s.bin;
+    };
     auto mid = std::stable_partition(bvh.order.begin() + begin, bvh.order.begin() + end, goesLeft);
     return uint32_t(mid - bvh.order.begin());
   }
@@ -121,9 +123,12 @@ struct Builder {
       mid = begin + count / 2;
     } else if (count > kLeafSize) {
       const Split s = bestSplit(begin, end, cb);
-      const bool splitPays = s.axis >= 0 && (s.cost < bounds.area() * float(count) || count > kMaxLeafSize);
-      if (splitPays) mid = partition(begin, end, cb, s);
-      else if (s.axis < 0 && count > kMaxLeafSize) mid = begin + count / 2;  // coincident centroids
+      const bool splitPays =
+          s.axis >= 0 && (s.cost < bounds.area() * float(count) || count > kMaxLeafSize);
+      if (splitPays)
+        mid = partition(begin, end, cb, s);
+      else if (s.axis < 0 && count > kMaxLeafSize)
+        mid = begin + count / 2;  // coincident centroids
     }
     if (mid == begin || mid == end) {
       bvh.nodes[node].first = begin;
@@ -198,7 +203,8 @@ bool intersectTriangle(const Ray& ray, const Triangle& tri, float& t, float& u, 
   return t >= 0.0f;
 }
 
-Hit traceBvh(const Bvh& bvh, const std::vector<Triangle>& triangles, const Ray& ray, const HitKey& after) {
+Hit traceBvh(const Bvh& bvh, const std::vector<Triangle>& triangles, const Ray& ray,
+             const HitKey& after) {
   Hit best;
   if (bvh.nodes.empty()) return best;
   const glm::vec3 inv(safeInverse(ray.dir.x), safeInverse(ray.dir.y), safeInverse(ray.dir.z));

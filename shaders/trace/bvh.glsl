@@ -47,7 +47,8 @@ bool hitsBox(vec3 o, vec3 inv, BvhNode n, float tMin, float tMax) {
 
 vec3 safeInverse(vec3 d) {
   const float kTiny = 1e-20;
-  return 1.0 / mix(d, mix(vec3(kTiny), vec3(-kTiny), lessThan(d, vec3(0.0))), lessThan(abs(d), vec3(kTiny)));
+  vec3 tiny = mix(vec3(kTiny), vec3(-kTiny), lessThan(d, vec3(0.0)));
+  return 1.0 / mix(d, tiny, lessThan(abs(d), vec3(kTiny)));
 }
 
 void traverse(uint root, vec3 o, vec3 d, float tMax, float afterT, uint afterTri, inout Hit best) {

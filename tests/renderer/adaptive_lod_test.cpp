@@ -53,8 +53,9 @@ TEST(AdaptiveRayLod, MatchesTheAnalyticLodOfATiltedPlane) {
       scene::Hit hit;
       ASSERT_TRUE(scene::intersectTriangle(ray, plane.tri, hit.t, hit.u, hit.v));
       hit.triangle = 0;
-      const auto diff = uvDifferentials(plane.tri, plane.uv, hit, cameraRay(inv, centre + glm::vec2(1, 0), size),
-                                        cameraRay(inv, centre + glm::vec2(0, 1), size));
+      const auto diff =
+          uvDifferentials(plane.tri, plane.uv, hit, cameraRay(inv, centre + glm::vec2(1, 0), size),
+                          cameraRay(inv, centre + glm::vec2(0, 1), size));
       const float analytic = std::log2(texture.x * k * d * pixelAngle / std::cos(theta));
       const float lod = textureLod(diff.dUvDx, diff.dUvDy, texture);
       // A one-pixel difference is not a derivative: the plane's perspective makes it
@@ -62,7 +63,8 @@ TEST(AdaptiveRayLod, MatchesTheAnalyticLodOfATiltedPlane) {
       const float tolerance = 0.005f + 1.5f * pixelAngle * std::tan(theta) / std::log(2.0f);
       EXPECT_NEAR(lod, analytic, tolerance) << "d " << d << " theta " << deg;
       // Across the tilt the footprint does not stretch.
-      EXPECT_NEAR(std::log2(glm::length(diff.dUvDx * texture)), std::log2(texture.x * k * d * pixelAngle), 0.005f)
+      EXPECT_NEAR(std::log2(glm::length(diff.dUvDx * texture)),
+                  std::log2(texture.x * k * d * pixelAngle), 0.005f)
           << "d " << d << " theta " << deg;
     }
 }

@@ -23,11 +23,13 @@ double statOf(const FrameRecord& r, const std::string& name) {
   return -1.0;
 }
 
-float tonemapped(float c) { return c / (1.0f + c); }
+float tonemapped(float c) {
+  return c / (1.0f + c);
+}
 
 struct Agreement {
-  double mean = 0.0;      // mean of the largest per-channel tonemapped difference
-  double overShare = 0.0; // share of pixels differing by more than 2/255 tonemapped
+  double mean = 0.0;       // mean of the largest per-channel tonemapped difference
+  double overShare = 0.0;  // share of pixels differing by more than 2/255 tonemapped
 };
 
 Agreement agreement(const Image& a, const Image& b) {
@@ -36,7 +38,8 @@ Agreement agreement(const Image& a, const Image& b) {
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
       float worst = 0.0f;
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(tonemapped(a.at(x, y, c)) - tonemapped(b.at(x, y, c))));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(tonemapped(a.at(x, y, c)) - tonemapped(b.at(x, y, c))));
       out.mean += worst;
       over += worst > 2.0f / 255.0f ? 1 : 0;
     }
@@ -50,7 +53,8 @@ Agreement agreement(const Image& a, const Image& b) {
 Agreement tracedAgainstRaster(const std::string& builtin, bool rayLod) {
   const auto spec = test::caseFromJson(std::string(R"({"scene": {"builtin": ")") + builtin + R"("},
       "jitter": {"pattern": "none"}, "taa": {"mode": "adaptive"},
-      "adaptive": {"trace_all": true, "samples": 1, "ray_lod": )" + (rayLod ? "true" : "false") + R"(},
+      "adaptive": {"trace_all": true, "samples": 1, "ray_lod": )" +
+                                       (rayLod ? "true" : "false") + R"(},
       "script": {"frames": 1}})");
   RenderOptions o;
   o.captureCurrent = true;
@@ -70,15 +74,16 @@ TEST(AdaptiveTrace, TracedPixelsEqualTheRasterAtPixelCentres) {
     const Agreement a = tracedAgainstRaster(builtin, true);
     EXPECT_LT(a.overShare, 0.05) << builtin;
     EXPECT_LT(a.mean, 0.002) << builtin;
-    std::printf("[ traced vs raster ] %-12s mean %.5f, over 2/255: %.4f of pixels\n", builtin, a.mean, a.overShare);
+    std::printf("[ traced vs raster ] %-12s mean %.5f, over 2/255: %.4f of pixels\n", builtin,
+                a.mean, a.overShare);
   }
 }
 
 TEST(AdaptiveTrace, RayDifferentialLodMatchesTheRasterWhereMipZeroDoesNot) {
   const Agreement lod = tracedAgainstRaster("checkerboard", true);
   const Agreement mip0 = tracedAgainstRaster("checkerboard", false);
-  std::printf("[ ray lod ] mean %.5f (over %.4f) vs mip 0: %.5f (over %.4f)\n", lod.mean, lod.overShare, mip0.mean,
-              mip0.overShare);
+  std::printf("[ ray lod ] mean %.5f (over %.4f) vs mip 0: %.5f (over %.4f)\n", lod.mean,
+              lod.overShare, mip0.mean, mip0.overShare);
   EXPECT_LT(lod.mean * 4.0, mip0.mean);
   EXPECT_LT(lod.overShare * 4.0, mip0.overShare);
 }
@@ -99,8 +104,8 @@ TEST(AdaptiveUnmarked, UnmarkedPixelsAreTheResolveOutputBitForBit) {
     size_t unmarked = 0, differing = 0, changedMarked = 0;
     for (int y = 0; y < f.color.height; ++y)
       for (int x = 0; x < f.color.width; ++x) {
-        const bool same = std::memcmp(&f.color.data[f.color.index(x, y)], &resolved.data[resolved.index(x, y)],
-                                      3 * sizeof(float)) == 0;
+        const bool same = std::memcmp(&f.color.data[f.color.index(x, y)],
+                                      &resolved.data[resolved.index(x, y)], 3 * sizeof(float)) == 0;
         if (uint32_t(mask.at(x, y)) == ADAPTIVE_MASK_NONE) {
           ++unmarked;
           differing += same ? 0 : 1;
@@ -110,8 +115,10 @@ TEST(AdaptiveUnmarked, UnmarkedPixelsAreTheResolveOutputBitForBit) {
       }
     EXPECT_EQ(differing, 0u) << "frame " << f.frame;
     // Frame 0 has no history: every pixel is traced or FXAA'd.
-    if (f.frame == 0) EXPECT_EQ(unmarked, 0u);
-    else EXPECT_GT(unmarked, f.color.pixelCount() / 2) << "frame " << f.frame;
+    if (f.frame == 0)
+      EXPECT_EQ(unmarked, 0u);
+    else
+      EXPECT_GT(unmarked, f.color.pixelCount() / 2) << "frame " << f.frame;
     EXPECT_GT(changedMarked, 0u) << "frame " << f.frame << ": tracing changed nothing";
   }
 }
@@ -130,7 +137,9 @@ TEST(AdaptiveUnmarked, TheResolveIsThePlainFullResolve) {
   const auto p = test::renderCase(plain, {0});
   const Image& resolved = test::auxImage(a[0], "taa_resolve");
   ASSERT_TRUE(resolved.sameShape(p[0].color));
-  EXPECT_EQ(std::memcmp(resolved.data.data(), p[0].color.data.data(), resolved.data.size() * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(resolved.data.data(), p[0].color.data.data(),
+                        resolved.data.size() * sizeof(float)),
+            0);
 }
 
 double tracedShare(const std::string& extra) {
@@ -144,7 +153,8 @@ double tracedShare(const std::string& extra) {
 TEST(AdaptiveSegmentation, MarkedShareFollowsTheThreshold) {
   double previous = 2.0;
   for (const char* threshold : {"0.02", "0.1", "0.25", "0.6", "1.5"}) {
-    const double share = tracedShare(std::string(R"("history_count": 0, "threshold": )") + threshold);
+    const double share =
+        tracedShare(std::string(R"("history_count": 0, "threshold": )") + threshold);
     std::printf("[ traced share ] threshold %s: %.4f\n", threshold, share);
     EXPECT_GT(share, 0.0) << threshold;
     EXPECT_LT(share, 1.0) << threshold;
@@ -157,9 +167,10 @@ TEST(AdaptiveSegmentation, MarkedShareFollowsTheThreshold) {
 }
 
 std::vector<std::string> renderedHashes(const std::string& caseName, const std::string& env) {
-  const std::string out = std::string(TAA_TEST_OUT) + "/adaptive-determinism-" + env.substr(env.find('=') + 1);
-  const auto r = test::runHarness(std::string("render ") + TAA_SOURCE_DIR + "/cases/" + caseName + ".json --out " + out,
-                                  env);
+  const std::string out =
+      std::string(TAA_TEST_OUT) + "/adaptive-determinism-" + env.substr(env.find('=') + 1);
+  const auto r = test::runHarness(
+      std::string("render ") + TAA_SOURCE_DIR + "/cases/" + caseName + ".json --out " + out, env);
   EXPECT_EQ(r.exitCode, 0) << r.output;
   std::vector<std::string> found;
   const std::regex line("frame \\d+ sha256 ([0-9a-f]{64})");
@@ -179,8 +190,9 @@ TEST(AdaptiveDeterminism, OneAndTwoLavapipeThreadsGiveIdenticalFrames) {
 
 TEST(AdaptiveCases, RenderCleanUnderValidation) {
   for (const char* name : {"adaptive_wires", "adaptive_mask_debug"}) {
-    const auto r = test::runHarness(std::string("render ") + TAA_SOURCE_DIR + "/cases/" + name + ".json --out " +
-                                    TAA_TEST_OUT + "/adaptive-validate --validate");
+    const auto r =
+        test::runHarness(std::string("render ") + TAA_SOURCE_DIR + "/cases/" + name +
+                         ".json --out " + TAA_TEST_OUT + "/adaptive-validate --validate");
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.output;
     EXPECT_EQ(r.output.find("VUID"), std::string::npos) << name << "\n" << r.output;
   }
@@ -206,14 +218,23 @@ TEST(AdaptiveSpec, KeysNeedAdaptiveModeAndAnUnresampledOutput) {
   EXPECT_TRUE(mentions(problemsOf(R"({"adaptive": {"samples": 8}})"), "adaptive.samples"));
   EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "full"}, "adaptive": {"ray_lod": false}})"),
                        "taa.mode is adaptive"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "render": {"upsample": 2}})"), "taa.mode"));
+  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "render": {"upsample": 2}})"),
+                       "taa.mode"));
   EXPECT_TRUE(mentions(problemsOf(R"({"debug": {"output": "segmentation"}})"), "debug.output"));
-  EXPECT_TRUE(problemsOf(R"({"taa": {"mode": "adaptive"}, "debug": {"output": "segmentation"}})").empty());
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "adaptive": {"trace_all": true, "threshold": 1}})"),
-                       "adaptive.threshold"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 17}})"), "samples"));
-  EXPECT_TRUE(problemsOf(R"({"taa": {"mode": "adaptive"}, "checks": {"invariants": ["adaptive_unmarked"]}})").empty());
-  EXPECT_TRUE(mentions(problemsOf(R"({"checks": {"invariants": ["adaptive_unmarked"]}})"), "adaptive"));
+  EXPECT_TRUE(
+      problemsOf(R"({"taa": {"mode": "adaptive"}, "debug": {"output": "segmentation"}})").empty());
+  EXPECT_TRUE(mentions(
+      problemsOf(
+          R"({"taa": {"mode": "adaptive"}, "adaptive": {"trace_all": true, "threshold": 1}})"),
+      "adaptive.threshold"));
+  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 17}})"),
+                       "samples"));
+  EXPECT_TRUE(
+      problemsOf(
+          R"({"taa": {"mode": "adaptive"}, "checks": {"invariants": ["adaptive_unmarked"]}})")
+          .empty());
+  EXPECT_TRUE(
+      mentions(problemsOf(R"({"checks": {"invariants": ["adaptive_unmarked"]}})"), "adaptive"));
 }
 
 }  // namespace

@@ -51,7 +51,8 @@ struct Coverage {
   double error = 0.0;  // sum |luma - reference luma| / the reference's coverage
 };
 
-Coverage measure(const std::vector<Image>& images, const std::vector<Image>& ref, const std::vector<Image>& bare) {
+Coverage measure(const std::vector<Image>& images, const std::vector<Image>& ref,
+                 const std::vector<Image>& bare) {
   double covered = 0.0, refCovered = 0.0, error = 0.0;
   for (size_t i = 0; i < images.size(); ++i) {
     const Image& r = ref[i];
@@ -63,7 +64,8 @@ Coverage measure(const std::vector<Image>& images, const std::vector<Image>& ref
           for (int dy = -2; dy <= 2; ++dy)
             for (int dx = -2; dx <= 2; ++dx) {
               const int u = x + dx, v = y + dy;
-              if (u >= 0 && v >= 0 && u < r.width && v < r.height) wire[size_t(v) * size_t(r.width) + size_t(u)] = true;
+              if (u >= 0 && v >= 0 && u < r.width && v < r.height)
+                wire[size_t(v) * size_t(r.width) + size_t(u)] = true;
             }
     for (int y = 0; y < r.height; ++y)
       for (int x = 0; x < r.width; ++x) {
@@ -90,8 +92,9 @@ TEST(AdaptiveWires, WiresKeptWithAdaptiveAndVanishingWithout) {
   const auto background = render(fullSpec, bare, true);
   const Coverage adaptive = measure(render(adaptiveSpec, scene, false), reference, background);
   const Coverage full = measure(render(fullSpec, scene, false), reference, background);
-  std::printf("[ wire coverage vs reference ] adaptive %.3f (error %.3f), full TAA %.3f (error %.3f)\n",
-              adaptive.ratio, adaptive.error, full.ratio, full.error);
+  std::printf(
+      "[ wire coverage vs reference ] adaptive %.3f (error %.3f), full TAA %.3f (error %.3f)\n",
+      adaptive.ratio, adaptive.error, full.ratio, full.error);
   // Without tracing most of the wires' coverage is gone; with it they keep most of it.
   EXPECT_LT(full.ratio, 0.6);
   EXPECT_GT(adaptive.ratio, 0.75);

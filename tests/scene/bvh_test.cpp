@@ -2,6 +2,8 @@
 // every triangle (t, triangle and barycentrics, bit for bit) on thousands of hashed
 // rays over random soups, degenerate stacks and the built-in scenes; continued rays
 // meet every surface in (t, triangle) order; builds are deterministic.
+#include "scene/bvh.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 #include "draw_list.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/build_scene.h"
-#include "scene/bvh.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"
 #include "support/noise.h"
@@ -22,7 +23,8 @@ namespace {
 using test::hashUnit;
 
 glm::vec3 hashVec(uint32_t seed, int i, int slot, glm::vec3 lo, glm::vec3 hi) {
-  return lo + (hi - lo) * glm::vec3(hashUnit(seed, i, slot, 0), hashUnit(seed, i, slot, 1), hashUnit(seed, i, slot, 2));
+  return lo + (hi - lo) * glm::vec3(hashUnit(seed, i, slot, 0), hashUnit(seed, i, slot, 1),
+                                    hashUnit(seed, i, slot, 2));
 }
 
 std::vector<Triangle> randomSoup(uint32_t seed, int count, float size) {
@@ -161,8 +163,9 @@ std::vector<Triangle> sceneTriangles(const std::string& json) {
 
 TEST(Bvh, ClosestHitEqualsBruteForceOnBuiltinScenes) {
   for (const char* builtin : {"wires", "fence", "foliage", "checkerboard", "rough_floor"}) {
-    const std::string json = std::string(R"({"scene": {"builtin": ")") + builtin +
-                             R"("}, "movers": [{"shape": "sphere", "start": [0, 0.5, 1], "end": [1, 0.5, 1]}]})";
+    const std::string json =
+        std::string(R"({"scene": {"builtin": ")") + builtin +
+        R"("}, "movers": [{"shape": "sphere", "start": [0, 0.5, 1], "end": [1, 0.5, 1]}]})";
     const auto tris = sceneTriangles(json);
     ASSERT_GT(tris.size(), 100u) << builtin;
     // Camera-like rays: from around the default eye into the scene.
@@ -170,7 +173,8 @@ TEST(Bvh, ClosestHitEqualsBruteForceOnBuiltinScenes) {
     for (int i = 0; i < 1500; ++i) {
       Ray r;
       r.origin = glm::vec3(0.0f, 1.6f, 6.0f) + hashVec(5, i, 0, glm::vec3(-1.0f), glm::vec3(1.0f));
-      r.dir = hashVec(6, i, 1, glm::vec3(-8.0f, -2.0f, -20.0f), glm::vec3(8.0f, 6.0f, 0.0f)) - r.origin;
+      r.dir =
+          hashVec(6, i, 1, glm::vec3(-8.0f, -2.0f, -20.0f), glm::vec3(8.0f, 6.0f, 0.0f)) - r.origin;
       rays.push_back(r);
     }
     EXPECT_GT(compareAll(tris, rays), 300) << builtin;

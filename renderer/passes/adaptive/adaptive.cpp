@@ -11,13 +11,15 @@ namespace taa {
 
 namespace {
 
-vk::Image outputImage(vk::Context& ctx, const char* name, const spec::CaseSpec& spec, VkImageUsageFlags usage) {
+vk::Image outputImage(vk::Context& ctx, const char* name, const spec::CaseSpec& spec,
+                      VkImageUsageFlags usage) {
   vk::ImageDesc d;
   d.name = name;
   d.width = uint32_t(spec.render.width);
   d.height = uint32_t(spec.render.height);
-  d.format = spec.taa.history_format == spec::HistoryFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT
-                                                                     : VK_FORMAT_R16G16B16A16_SFLOAT;
+  d.format = spec.taa.history_format == spec::HistoryFormat::Rgba32f
+                 ? VK_FORMAT_R32G32B32A32_SFLOAT
+                 : VK_FORMAT_R16G16B16A16_SFLOAT;
   d.usage = usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   return vk::Image(ctx, d);
 }
@@ -55,11 +57,13 @@ AdaptivePass::AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const G
     fxaa_ = std::make_unique<FxaaPass>(ctx, FxaaSettings{}, true);
     filtered_ = outputImage(ctx, "adaptive_fxaa", spec, VK_IMAGE_USAGE_STORAGE_BIT);
   }
-  if (capture) beforeTrace_ = outputImage(ctx, "taa_resolve_copy", spec, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  if (capture)
+    beforeTrace_ = outputImage(ctx, "taa_resolve_copy", spec, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
 }
 
-vk::Image& AdaptivePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer, const AdaptiveFrame& frame,
-                                const SegmentationInputs& in, vk::Image& resolved) {
+vk::Image& AdaptivePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
+                                const AdaptiveFrame& frame, const SegmentationInputs& in,
+                                vk::Image& resolved) {
   const script::FrameState& state = *frame.state;
   lastSize_ = state.renderSize;
   if (beforeTrace_) copyImage(cmd, resolved, beforeTrace_);
@@ -69,7 +73,8 @@ vk::Image& AdaptivePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer, const 
   segmentation_.record(cmd, state, withResolved);
   timer.end(cmd);
   timer.begin(cmd, "adaptive_trace");
-  trace_.record(cmd, state, *frame.draws, frame.frameUniforms, frame.lodBias, segmentation_.mask(), resolved);
+  trace_.record(cmd, state, *frame.draws, frame.frameUniforms, frame.lodBias, segmentation_.mask(),
+                resolved);
   timer.end(cmd);
   hostReadBarrier(cmd);
   if (!fxaa_) return resolved;
@@ -90,8 +95,8 @@ std::vector<NamedImage> AdaptivePass::readCaptures(glm::ivec2 size) {
   std::vector<NamedImage> out;
   if (!beforeTrace_) return out;
   const int tw = int(beforeTrace_.desc().width);
-  out.push_back({"taa_resolve", decodeTarget(vk::readImage(ctx_, beforeTrace_), beforeTrace_.desc().format, tw,
-                                             size.x, size.y)});
+  out.push_back({"taa_resolve", decodeTarget(vk::readImage(ctx_, beforeTrace_),
+                                             beforeTrace_.desc().format, tw, size.x, size.y)});
   vk::Image& mask = segmentation_.mask();
   const auto bytes = vk::readImage(ctx_, mask);
   Image m(size.x, size.y, 1);
@@ -109,10 +114,12 @@ std::vector<std::string> AdaptivePass::describe() const {
   const auto& a = spec_.adaptive;
   char buf[256];
   std::snprintf(buf, sizeof(buf),
-                "pass adaptive_segmentation: threshold %g, weights normal %g depth %g material %g luminance %g, "
+                "pass adaptive_segmentation: threshold %g, weights normal %g depth %g material %g "
+                "luminance %g, "
                 "history count %d%s%s",
-                double(a.threshold), double(a.weight_normal), double(a.weight_depth), double(a.weight_material),
-                double(a.weight_luminance), a.history_count, a.trace_disoccluded ? ", disocclusions traced" : "",
+                double(a.threshold), double(a.weight_normal), double(a.weight_depth),
+                double(a.weight_material), double(a.weight_luminance), a.history_count,
+                a.trace_disoccluded ? ", disocclusions traced" : "",
                 a.trace_all ? ", every pixel traced" : "");
   std::vector<std::string> out = {buf, trace_.describe()};
   if (fxaa_) out.push_back(fxaa_->describe());

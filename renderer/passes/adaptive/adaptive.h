@@ -29,8 +29,8 @@ class AdaptivePass {
  public:
   // `capture`: keep a copy of the resolve's output before tracing and read it back
   // with the mask (for the adaptive_unmarked invariant and tests).
-  AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene, const DrawList& firstFrame,
-               bool capture);
+  AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+               const DrawList& firstFrame, bool capture);
 
   // `resolved` is the resolve's output; returns the frame's output.
   vk::Image& record(VkCommandBuffer cmd, vk::GpuTimer& timer, const AdaptiveFrame& frame,

@@ -15,7 +15,9 @@ glm::vec3 unproject(const glm::mat4& invViewProj, glm::vec2 pixel, glm::vec2 siz
   return glm::vec3(w) / w.w;
 }
 
-glm::vec2 interpolate(const glm::vec2 uv[3], glm::vec2 b) { return uv[0] * (1.0f - b.x - b.y) + uv[1] * b.x + uv[2] * b.y; }
+glm::vec2 interpolate(const glm::vec2 uv[3], glm::vec2 b) {
+  return uv[0] * (1.0f - b.x - b.y) + uv[1] * b.x + uv[2] * b.y;
+}
 
 }  // namespace
 
@@ -38,8 +40,9 @@ glm::vec2 planeBarycentrics(const scene::Triangle& tri, const scene::Ray& ray) {
   return glm::vec2(d11 * d20 - d01 * d21, d00 * d21 - d01 * d20) / denom;
 }
 
-UvDifferentials uvDifferentials(const scene::Triangle& tri, const glm::vec2 uv[3], const scene::Hit& hit,
-                                const scene::Ray& right, const scene::Ray& down) {
+UvDifferentials uvDifferentials(const scene::Triangle& tri, const glm::vec2 uv[3],
+                                const scene::Hit& hit, const scene::Ray& right,
+                                const scene::Ray& down) {
   UvDifferentials d;
   d.uv = interpolate(uv, {hit.u, hit.v});
   d.dUvDx = interpolate(uv, planeBarycentrics(tri, right)) - d.uv;

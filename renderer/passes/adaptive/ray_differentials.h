@@ -18,12 +18,13 @@ scene::Ray cameraRay(const glm::mat4& invViewProj, glm::vec2 pixel, glm::vec2 si
 glm::vec2 planeBarycentrics(const scene::Triangle& tri, const scene::Ray& ray);
 
 struct UvDifferentials {
-  glm::vec2 uv;          // at the hit
+  glm::vec2 uv;            // at the hit
   glm::vec2 dUvDx, dUvDy;  // to where the rays one pixel right and one pixel down meet the plane
 };
 
-UvDifferentials uvDifferentials(const scene::Triangle& tri, const glm::vec2 uv[3], const scene::Hit& hit,
-                                const scene::Ray& right, const scene::Ray& down);
+UvDifferentials uvDifferentials(const scene::Triangle& tri, const glm::vec2 uv[3],
+                                const scene::Hit& hit, const scene::Ray& right,
+                                const scene::Ray& down);
 
 // Vulkan's isotropic LOD for those gradients on a texture of `size` texels:
 // log2 of the longer gradient in texels (before bias and clamping).

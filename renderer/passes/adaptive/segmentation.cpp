@@ -14,7 +14,8 @@ vk::Image storageImage(vk::Context& ctx, const char* name, glm::ivec2 size, VkFo
   d.width = uint32_t(size.x);
   d.height = uint32_t(size.y);
   d.format = format;
-  d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  d.usage =
+      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   return vk::Image(ctx, d);
 }
 
@@ -41,11 +42,13 @@ std::vector<VkDescriptorType> bindingTypes() {
 
 }  // namespace
 
-gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec, const script::FrameState& state) {
+gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec,
+                                                   const script::FrameState& state) {
   const auto& a = spec.adaptive;
   gpu::SegmentationUniforms u{};
   u.weights = glm::vec4(a.weight_normal, a.weight_depth, a.weight_material, a.weight_luminance);
-  u.params = glm::vec4(a.threshold, float(a.history_count), state.camera.nearPlane, state.camera.farPlane);
+  u.params =
+      glm::vec4(a.threshold, float(a.history_count), state.camera.nearPlane, state.camera.farPlane);
   const glm::vec2 size(state.renderSize);
   u.size = glm::vec4(size, 1.0f / size);
   return u;
@@ -56,8 +59,8 @@ SegmentationPass::SegmentationPass(vk::Context& ctx, const spec::CaseSpec& spec)
       spec_(spec),
       withHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", bindingTypes(), 0,
                                              specConstants(spec, true))),
-      withoutHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", bindingTypes(), 0,
-                                                specConstants(spec, false))),
+      withoutHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", bindingTypes(),
+                                                0, specConstants(spec, false))),
       uniforms_(ctx, sizeof(gpu::SegmentationUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       counts_(ctx, sizeof(gpu::AdaptiveCounts), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
@@ -76,7 +79,8 @@ gpu::AdaptiveCounts SegmentationPass::counts() const {
   return c;
 }
 
-void SegmentationPass::record(VkCommandBuffer cmd, const script::FrameState& state, const SegmentationInputs& in) {
+void SegmentationPass::record(VkCommandBuffer cmd, const script::FrameState& state,
+                              const SegmentationInputs& in) {
   const gpu::SegmentationUniforms u = makeSegmentationUniforms(spec_, state);
   std::memcpy(uniforms_.mapped(), &u, sizeof(u));
   std::memset(counts_.mapped(), 0, sizeof(gpu::AdaptiveCounts));

@@ -14,15 +14,16 @@ namespace taa {
 
 // What the segmentation reads; all at output size (adaptive mode does not resample).
 struct SegmentationInputs {
-  vk::Image* color = nullptr;     // the resolve's input colour
+  vk::Image* color = nullptr;  // the resolve's input colour
   vk::Image* depth = nullptr;
   vk::Image* normal = nullptr;
   vk::Image* ids = nullptr;
-  vk::Image* rejection = nullptr; // TAA_REJECT_* from the resolve
-  vk::Image* resolved = nullptr;  // the resolve's output (debug view background)
+  vk::Image* rejection = nullptr;  // TAA_REJECT_* from the resolve
+  vk::Image* resolved = nullptr;   // the resolve's output (debug view background)
 };
 
-gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec, const script::FrameState& state);
+gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec,
+                                                   const script::FrameState& state);
 
 class SegmentationPass {
  public:

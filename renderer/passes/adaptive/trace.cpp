@@ -38,7 +38,8 @@ void write(vk::Buffer& buffer, size_t first, const std::vector<T>& items) {
 // A host-visible storage buffer of at least one element (empty scenes bind it too).
 template <class T>
 vk::Buffer storage(vk::Context& ctx, size_t count) {
-  return vk::Buffer(ctx, std::max<size_t>(count, 1) * sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+  return vk::Buffer(ctx, std::max<size_t>(count, 1) * sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    true);
 }
 
 size_t countMoverTriangles(const scene::Scene& scene, const DrawList& draws) {
@@ -60,22 +61,28 @@ std::vector<glm::vec2> traceOffsets(int samples) {
   return out;
 }
 
-gpu::TraceUniforms makeTraceUniforms(const spec::CaseSpec& spec, const script::FrameState& state, float lodBias,
-                                     uint32_t staticRoot, uint32_t moverRoot) {
+gpu::TraceUniforms makeTraceUniforms(const spec::CaseSpec& spec, const script::FrameState& state,
+                                     float lodBias, uint32_t staticRoot, uint32_t moverRoot) {
   gpu::TraceUniforms u{};
   const glm::vec2 size(state.renderSize);
   u.size = glm::vec4(size, 1.0f / size);
   u.params = glm::vec4(std::exp2(lodBias), 0.0f, 0.0f, 0.0f);
   u.roots = glm::uvec4(staticRoot, moverRoot, 0u, 0u);
   const auto offsets = traceOffsets(spec.adaptive.samples);
-  for (size_t i = 0; i < offsets.size() && i < TRACE_MAX_SAMPLES; ++i) u.offsets[i] = glm::vec4(offsets[i], 0, 0);
+  for (size_t i = 0; i < offsets.size() && i < TRACE_MAX_SAMPLES; ++i)
+    u.offsets[i] = glm::vec4(offsets[i], 0, 0);
   return u;
 }
 
-TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene, const DrawList& firstFrame)
-    : ctx_(ctx), spec_(spec), scene_(scene), point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+                     const DrawList& firstFrame)
+    : ctx_(ctx),
+      spec_(spec),
+      scene_(scene),
+      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   if (ctx.info().maxPushDescriptors < TRACE_BINDING_COUNT - 1 + TRACE_MAX_TEXTURES)
-    throw vk::EnvironmentError(ctx.info().name + " pushes too few descriptors for the adaptive tracer");
+    throw vk::EnvironmentError(ctx.info().name +
+                               " pushes too few descriptors for the adaptive tracer");
   // One texture slot per distinct (texture, sampler) the materials use.
   const scene::Scene& cpu = scene.cpu();
   std::map<std::pair<VkImageView, VkSampler>, uint32_t> slots;
@@ -85,7 +92,8 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
     auto it = slots.find(key);
     if (it == slots.end()) {
       if (views_.size() == TRACE_MAX_TEXTURES)
-        throw std::runtime_error("adaptive tracing binds at most " + std::to_string(TRACE_MAX_TEXTURES) +
+        throw std::runtime_error("adaptive tracing binds at most " +
+                                 std::to_string(TRACE_MAX_TEXTURES) +
                                  " textures; this scene's materials use more");
       it = slots.emplace(key, uint32_t(views_.size())).first;
       views_.push_back(key.first);
@@ -122,13 +130,15 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
 
   vk::SpecConstants c;
   c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples).set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod);
-  pipeline_ = vk::createComputePipeline(ctx, "adaptive_trace.comp", bindingTypes(), 0, c, bindingCounts());
+  pipeline_ =
+      vk::createComputePipeline(ctx, "adaptive_trace.comp", bindingTypes(), 0, c, bindingCounts());
 }
 
 std::string TracePass::describe() const {
-  return "pass adaptive_trace: " + std::to_string(spec_.adaptive.samples) + " rays per marked pixel, " +
-         std::to_string(staticTriangles_) + " static triangles (" + std::to_string(staticNodes_) +
-         " BVH nodes), " + std::to_string(moverTriangles_) + " mover triangles rebuilt per frame, texture LOD " +
+  return "pass adaptive_trace: " + std::to_string(spec_.adaptive.samples) +
+         " rays per marked pixel, " + std::to_string(staticTriangles_) + " static triangles (" +
+         std::to_string(staticNodes_) + " BVH nodes), " + std::to_string(moverTriangles_) +
+         " mover triangles rebuilt per frame, texture LOD " +
          (spec_.adaptive.ray_lod ? "from ray differentials" : "0");
 }
 
@@ -136,7 +146,8 @@ void TracePass::record(VkCommandBuffer cmd, const script::FrameState& state, con
                        VkBuffer frameUniforms, float lodBias, vk::Image& mask, vk::Image& target) {
   uint32_t moverRoot = TRACE_NO_ROOT;
   if (moverTriangles_ > 0) {
-    const TraceGeometry movers = buildTraceGeometry(scene_.cpu(), draws, true, staticNodes_, staticTriangles_);
+    const TraceGeometry movers =
+        buildTraceGeometry(scene_.cpu(), draws, true, staticNodes_, staticTriangles_);
     if (movers.triangles.size() != moverTriangles_)
       throw std::logic_error("adaptive trace: the movers' triangle count changed between frames");
     write(nodes_, staticNodes_, movers.nodes);

@@ -24,18 +24,19 @@ namespace taa {
 // a grid would. A single ray goes through the pixel centre.
 std::vector<glm::vec2> traceOffsets(int samples);
 
-gpu::TraceUniforms makeTraceUniforms(const spec::CaseSpec& spec, const script::FrameState& state, float lodBias,
-                                     uint32_t staticRoot, uint32_t moverRoot);
+gpu::TraceUniforms makeTraceUniforms(const spec::CaseSpec& spec, const script::FrameState& state,
+                                     float lodBias, uint32_t staticRoot, uint32_t moverRoot);
 
 class TracePass {
  public:
   // `firstFrame` supplies the static world's instances (they never move).
-  TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene, const DrawList& firstFrame);
+  TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+            const DrawList& firstFrame);
 
   // Re-poses the movers' triangles and rebuilds their BVH, then traces every pixel
   // `mask` marks into `target` (the resolve's output).
-  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws, VkBuffer frameUniforms,
-              float lodBias, vk::Image& mask, vk::Image& target);
+  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
+              VkBuffer frameUniforms, float lodBias, vk::Image& mask, vk::Image& target);
   std::string describe() const;
 
  private:

@@ -6,14 +6,15 @@
 namespace taa {
 
 void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool movers,
-                      std::vector<scene::Triangle>& triangles, std::vector<gpu::TraceShading>* shading,
-                      std::vector<uint32_t>* materials) {
+                      std::vector<scene::Triangle>& triangles,
+                      std::vector<gpu::TraceShading>* shading, std::vector<uint32_t>* materials) {
   std::vector<Draw> all = draws.opaque;
   all.insert(all.end(), draws.blended.begin(), draws.blended.end());
   // Blended draws are sorted by distance each frame; triangle order must not follow.
   std::sort(all.begin(), all.end(), [](const Draw& a, const Draw& b) {
-    return a.instance != b.instance ? a.instance < b.instance
-                                    : (a.mesh != b.mesh ? a.mesh < b.mesh : a.primitive < b.primitive);
+    return a.instance != b.instance
+               ? a.instance < b.instance
+               : (a.mesh != b.mesh ? a.mesh < b.mesh : a.primitive < b.primitive);
   });
   for (const Draw& d : all) {
     const gpu::InstanceData& inst = draws.instances[d.instance];
@@ -23,7 +24,8 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
     for (uint32_t k = 0; k + 2 < prim.indexCount; k += 3) {
       const scene::Vertex* v[3];
       for (int j = 0; j < 3; ++j)
-        v[j] = &scene.vertices[size_t(prim.vertexOffset) + scene.indices[prim.firstIndex + k + uint32_t(j)]];
+        v[j] = &scene.vertices[size_t(prim.vertexOffset) +
+                               scene.indices[prim.firstIndex + k + uint32_t(j)]];
       auto world = [&](int j) { return glm::vec3(inst.model * glm::vec4(v[j]->position, 1.0f)); };
       triangles.push_back({world(0), world(1), world(2)});
       if (shading) {

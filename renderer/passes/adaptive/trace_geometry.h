@@ -24,8 +24,8 @@ struct TraceGeometry {
 // in a fixed order (instance, mesh, primitive, index) whatever order the draws came in.
 // `shading` and `materials` (optional) receive what each triangle is shaded with.
 void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool movers,
-                      std::vector<scene::Triangle>& triangles, std::vector<gpu::TraceShading>* shading,
-                      std::vector<uint32_t>* materials);
+                      std::vector<scene::Triangle>& triangles,
+                      std::vector<gpu::TraceShading>* shading, std::vector<uint32_t>* materials);
 
 // Builds the BVH of those triangles; node and triangle indices start at the bases, so
 // parts can be concatenated into one buffer each.

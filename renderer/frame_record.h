@@ -25,6 +25,9 @@ struct FrameRecord {
   bool hasReference = false;  // set when the run computes the supersampled ground truth
   Image reference;            // output size, float32 average of reference.samples renders
   std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
+  // Per-frame figures a pass reports, read back every frame (adaptive mode:
+  // "traced_share" and "fxaa_share", fractions of the output's pixels).
+  std::vector<std::pair<std::string, double>> stats;
   glm::ivec2 renderSize{0};
   bool cameraCut = false;
   bool historyReset = false;

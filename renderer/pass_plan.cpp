@@ -22,10 +22,12 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   const bool consistency = (full && t.consistency) || accumulate;
   p.motionBlur = s.post.motion_blur;
   p.velocity = reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
-  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||
+  // Adaptive ray tracing segments by material id and normal derivatives.
+  p.adaptive = t.mode == TaaMode::Adaptive;
+  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency || p.adaptive ||
           wantsAux(s, AuxBuffer::MaterialId);
   p.deferred = s.render.path == RenderPath::Deferred;
-  p.normal = consistency || p.deferred || wantsAux(s, AuxBuffer::Normal);
+  p.normal = consistency || p.deferred || p.adaptive || wantsAux(s, AuxBuffer::Normal);
   p.prevDepth = full && (t.depth_culling || consistency);
   p.prevNormal = consistency;
   p.prevIds = consistency || antiGhost;
@@ -42,6 +44,7 @@ std::vector<std::string> PassPlan::describe() const {
   out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
   if (taa) out.push_back("pass taa_resolve");
+  if (adaptive) out.push_back("pass adaptive (segmentation, trace, masked fxaa)");
   // The post chain lists its own passes with their settings.
   return out;
 }

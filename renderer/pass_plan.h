@@ -21,6 +21,8 @@ struct PassPlan {
   bool prevNormal = false;
   bool prevIds = false;
   bool prevVelocity = false;
+  // Segmentation, tracing and masked FXAA after the resolve (taa.mode adaptive).
+  bool adaptive = false;
   // Passes around the resolve.
   bool motionBlur = false;
   bool sharpen = false;

@@ -8,6 +8,7 @@
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "pass_plan.h"
+#include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
 #include "passes/reference.h"
@@ -60,7 +61,7 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!plan.taa) return nullptr;
-  if (spec.taa.mode == spec::TaaMode::Tscmaa || spec.taa.mode == spec::TaaMode::Adaptive)
+  if (spec.taa.mode == spec::TaaMode::Tscmaa)
     throw vk::EnvironmentError(std::string("taa.mode ") + spec::enumToString(spec.taa.mode) +
                                " is not built into this renderer yet");
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
@@ -80,6 +81,7 @@ struct Renderer::State {
   GBufferPass gbuffer;
   PrevGBuffer prev;
   std::unique_ptr<TaaResolvePass> resolve;
+  std::unique_ptr<AdaptivePass> adaptive;
   PostChain post;
   std::unique_ptr<ReferencePass> reference;
   std::unique_ptr<InjectPass> inject;
@@ -92,6 +94,10 @@ struct Renderer::State {
   State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions o)
       : ctx(c), spec(s), scene(sc), options(o), gpuScene(c, sc), plan(planWithCaptures(s, o)), config(gbufferConfig(s, plan)),
         targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
+        adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(c, s, gpuScene,
+                                                                buildDrawList(sc, script::frameState(s, 0)),
+                                                                o.captureAdaptive)
+                               : nullptr),
         post(c, s, plan, maxRenderSize(s)),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
@@ -103,6 +109,8 @@ struct Renderer::State {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
+    if (adaptive)
+      for (const auto& p : adaptive->describe()) log.push_back(p);
     for (const auto& p : post.describe()) log.push_back(p);
     if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
@@ -164,6 +172,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.end(cmd);
     output = &s.resolve->output();
     outputSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
+    if (s.adaptive) {
+      const SegmentationInputs seg{&resolveInput, &s.targets.depth, &s.targets.normal, &s.targets.ids,
+                                   s.resolve->rejection(), nullptr};
+      const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
+      output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
+    }
     s.prev.capture(cmd, s.targets);
   }
   output = &s.post.afterResolve(cmd, s.timer, state, *output, outputSize);
@@ -176,6 +190,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
+  if (s.adaptive && s.adaptive->debugView()) output = s.adaptive->debugView();
   s.ctx.submitAndWait(cmd);
 
   FrameRecord record;
@@ -184,6 +199,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.cameraCut = state.cameraCut;
   record.historyReset = state.resetHistory;
   record.gpuMs = s.timer.read();
+  if (s.adaptive) record.stats = s.adaptive->stats();
   if (readImages) {
     const int w = state.renderSize.x, h = state.renderSize.y, tw = int(s.config.width);
     auto read = [&](vk::Image& img) {
@@ -207,6 +223,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     if (wants(s.spec, spec::AuxBuffer::MaterialId) || o.captureIds)
       record.aux.push_back({"material_id", read(s.targets.ids)});
     if (o.captureCurrent) record.aux.push_back({"current", read(resolveInput)});
+    if (s.adaptive)
+      for (auto& c : s.adaptive->readCaptures(state.renderSize)) record.aux.push_back(std::move(c));
   }
   return record;
 }

@@ -26,6 +26,9 @@ struct RenderOptions {
   bool captureCurrent = false;
   bool captureIds = false;
   bool captureVelocity = false;
+  // Adaptive mode: read back the resolve's output before tracing ("taa_resolve") and
+  // the segmentation mask ("segmentation").
+  bool captureAdaptive = false;
 };
 
 class Renderer {

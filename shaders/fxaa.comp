@@ -15,15 +15,21 @@
 //  6. the output is the bilinear colour at the pixel moved by that offset across the
 //     edge, blended in the tonemapped space and mapped back.
 // Every tap is scrubbed (NaN -> 0, Inf -> half max) before it is used.
+// Masked (adaptive mode): only pixels the segmentation marks ADAPTIVE_MASK_FXAA are
+// filtered; every other pixel is copied bit for bit. The output has no format
+// qualifier so that it can be the history's format (RGBA16F or RGBA32F).
 #extension GL_GOOGLE_include_directive : require
 #include "common/shared.h"
 #include "post/post_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+layout(constant_id = FXAA_SPEC_MASKED) const bool kMasked = false;
+
 layout(push_constant) uniform Push { PostPush pc; };
 layout(binding = POST_BINDING_INPUT) uniform sampler2D inputTex;
-layout(binding = POST_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
+layout(binding = POST_BINDING_OUTPUT) uniform writeonly image2D outImage;
+layout(binding = POST_BINDING_MASK) uniform usampler2D maskTex;
 
 const int kSearchSteps = 12;
 const float kStep[kSearchSteps] =
@@ -60,6 +66,10 @@ void main() {
   if (any(greaterThanEqual(p, size))) return;
   gHi = size - 1;
   vec4 original = texelFetch(inputTex, p, 0);
+  if (kMasked && texelFetch(maskTex, p, 0).r != ADAPTIVE_MASK_FXAA) {
+    imageStore(outImage, p, original);
+    return;
+  }
 
   // y grows downwards: N is the row above.
   float lM = lumaAt(p);

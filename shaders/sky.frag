@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "common/frame.glsl"
+#include "common/sky.glsl"
 
 layout(constant_id = GBUF_SPEC_DEFERRED) const bool kDeferred = false;
 
@@ -18,13 +19,6 @@ layout(location = GBUF_OUT_IDS) out uint outIds;
 layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
 #endif
 
-vec3 skyColor(vec3 dir) {
-  float up = clamp(dir.y, -1.0, 1.0);
-  vec3 horizon = vec3(0.55, 0.62, 0.70);
-  vec3 zenith = vec3(0.18, 0.32, 0.62);
-  vec3 ground = vec3(0.22, 0.20, 0.18);
-  return up >= 0.0 ? mix(horizon, zenith, sqrt(up)) : mix(horizon, ground, sqrt(-up));
-}
 
 void main() {
   // The fragment at pixel centre c shows the un-jittered position c - jitter.

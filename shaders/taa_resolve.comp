@@ -27,6 +27,7 @@ layout(constant_id = TAA_SPEC_REDUCE_BLEND) const bool kReduceBlend = false;
 layout(constant_id = TAA_SPEC_VELOCITY_IN_ALPHA) const bool kVelocityInAlpha = false;
 layout(constant_id = TAA_SPEC_UPSAMPLE) const bool kUpsample = false;
 layout(constant_id = TAA_SPEC_DEBUG) const int kDebug = 0;
+layout(constant_id = TAA_SPEC_REJECT_MASK) const bool kRejectMask = false;
 
 layout(std140, binding = TAA_BINDING_UNIFORMS) uniform TaaBlock { TaaUniforms taaUniforms; };
 layout(binding = TAA_BINDING_COLOR) uniform sampler2D colorTex;
@@ -41,6 +42,7 @@ layout(binding = TAA_BINDING_PREV_IDS) uniform usampler2D prevIdsTex;
 layout(binding = TAA_BINDING_PREV_VELOCITY) uniform sampler2D prevVelocityTex;
 layout(binding = TAA_BINDING_HISTORY_OUT) uniform writeonly image2D historyOut;
 layout(binding = TAA_BINDING_DEBUG_OUT, rgba16f) uniform writeonly image2D debugOut;
+layout(binding = TAA_BINDING_REJECT_OUT, r32ui) uniform writeonly uimage2D rejectOut;
 
 #include "taa/color_space.glsl"
 #include "taa/history_filter.glsl"
@@ -118,6 +120,7 @@ void main() {
 
   if (!kHasHistory) {
     writeOutput(q, current, 1.0, 0.0, vec2(0.0));
+    if (kRejectMask) imageStore(rejectOut, q, uvec4(TAA_REJECT_NO_HISTORY));
     return;
   }
 
@@ -128,6 +131,9 @@ void main() {
   }
 
   Reprojection r = reproject(uv, cur.pixel, hi);
+  // Adaptive mode sends pixels off the previous frame to FXAA whether or not the
+  // resolve rejects them, so that test is made here, before the clamp.
+  bool wasOffscreen = offscreen(r.prevUv);
   bool rejected = false;
   if (kRejectOffscreen && offscreen(r.prevUv)) rejected = true;
   r.prevUv = clamp(r.prevUv, vec2(0.0), vec2(1.0));
@@ -163,4 +169,6 @@ void main() {
 
   vec3 result = toneWeightedBlend(fromWorking(wRectified), current, alpha);
   writeOutput(q, result, rejected ? 1.0 : 0.0, clampDistance, r.motionPx);
+  if (kRejectMask)
+    imageStore(rejectOut, q, uvec4(wasOffscreen ? TAA_REJECT_OFFSCREEN : rejected ? TAA_REJECT_DISOCCLUDED : TAA_REJECT_NONE));
 }

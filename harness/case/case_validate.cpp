@@ -167,8 +167,11 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
                                "or set lod_bias_taa_only to false");
   if (present.count("debug.scale") && spec.debug.output == DebugOutput::None)
     p.add("debug.scale", "has no effect unless debug.output is set; set it or remove the key");
-  if (spec.debug.output != DebugOutput::None && spec.taa.mode != TaaMode::Full)
-    p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full");
+  if (spec.debug.output == DebugOutput::Segmentation && spec.taa.mode != TaaMode::Adaptive)
+    p.add("debug.output", "the segmentation mask comes from adaptive ray tracing; set taa.mode to adaptive");
+  else if (spec.debug.output != DebugOutput::None && spec.taa.mode != TaaMode::Full &&
+           spec.taa.mode != TaaMode::Adaptive)
+    p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full or adaptive");
   validatePost(p, spec, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);

@@ -10,6 +10,12 @@ class Rules {
  public:
   Rules(const std::set<std::string>& present) : present_(present) {}
   bool set(const std::string& key) const { return present_.count(key) > 0; }
+  std::vector<std::string> keysUnder(const std::string& prefix) const {
+    std::vector<std::string> keys;
+    for (const auto& k : present_)
+      if (k.rfind(prefix, 0) == 0) keys.push_back(k);
+    return keys;
+  }
   void add(const std::string& key, const std::string& msg) { out.emplace_back(key, msg); }
   // `key` only means something when `condition` holds.
   void needs(const std::string& key, bool condition, const std::string& what) {
@@ -20,6 +26,27 @@ class Rules {
  private:
   const std::set<std::string>& present_;
 };
+
+// adaptive.* drives the passes after an adaptive resolve; they trace and filter at
+// output size, pixel for pixel against the G-buffer, so the render size must match.
+void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
+  const bool adaptive = s.taa.mode == TaaMode::Adaptive;
+  for (const auto& key : r.keysUnder("adaptive.")) r.needs(key, adaptive, "taa.mode is adaptive");
+  if (!adaptive) return;
+  if (resamples)
+    r.add("taa.mode",
+          "adaptive traces and segments at output size against the G-buffer; remove "
+          "render.upsample and render.scale_schedule");
+  const auto& a = s.adaptive;
+  if (!a.trace_all) return;
+  for (const char* key :
+       {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth", "adaptive.weight_material",
+        "adaptive.weight_luminance", "adaptive.history_count", "adaptive.trace_disoccluded",
+        "adaptive.fxaa_out_of_history"})
+    if (r.set(key))
+      r.add(key, "adaptive.trace_all traces every pixel, so the segmentation settings do nothing; "
+                 "remove the key or trace_all");
+}
 
 }  // namespace
 
@@ -34,6 +61,7 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, 
     r.add("taa.mode", std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
                                   "output size; '") + enumToString(t.mode) + "' cannot: use basic or full");
 
+  adaptiveRules(r, s, resamples);
   r.needs("taa.alpha", blends, "taa.mode is basic or full");
   r.needs("taa.tonemap_weighting", blends, "taa.mode is basic or full");
   // Accumulation reprojects (velocity or depth), tests consistency per tap and blends;

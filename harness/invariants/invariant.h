@@ -22,6 +22,8 @@ struct FrameView {
   const Image* current = nullptr;   // the resolve's input colour this frame (render size)
   const Image* ids = nullptr;       // object id, material id, mover flag (render size)
   const Image* velocity = nullptr;  // pixels (render size)
+  const Image* resolved = nullptr;      // adaptive mode: the resolve's output before tracing
+  const Image* segmentation = nullptr;  // adaptive mode: ADAPTIVE_MASK_* per pixel
   std::string sha256;               // of the output
 };
 
@@ -32,6 +34,7 @@ struct Needs {
   bool ids = false;
   bool velocity = false;
   bool secondRun = false;  // determinism: the runner renders the case again
+  bool adaptive = false;   // the resolve's output before tracing and the segmentation mask
 };
 
 struct Outcome {

@@ -33,6 +33,9 @@ Needs needsOf(InvariantKind kind) {
     case InvariantKind::MatchesInput:
       n.current = true;
       break;
+    case InvariantKind::AdaptiveUnmarked:
+      n.adaptive = true;
+      break;
   }
   return n;
 }
@@ -53,6 +56,8 @@ std::string inapplicable(InvariantKind kind, const spec::CaseSpec& spec) {
       return bitStableInapplicable(spec);
     case InvariantKind::MatchesInput:
       return matchesInputInapplicable(spec);
+    case InvariantKind::AdaptiveUnmarked:
+      return adaptiveUnmarkedInapplicable(spec);
     case InvariantKind::Finite:       // meaningful for any output
     case InvariantKind::Determinism:  // likewise
       return "";
@@ -80,6 +85,8 @@ std::unique_ptr<Invariant> makeInvariant(InvariantKind kind, const spec::CaseSpe
       return makeBitStable(spec);
     case InvariantKind::MatchesInput:
       return makeMatchesInput(spec);
+    case InvariantKind::AdaptiveUnmarked:
+      return makeAdaptiveUnmarked(spec);
   }
   return nullptr;
 }

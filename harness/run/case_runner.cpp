@@ -49,6 +49,8 @@ invariants::FrameView viewOf(const FrameRecord& r) {
   v.current = findAux(r, "current");
   v.ids = findAux(r, "material_id");
   v.velocity = findAux(r, "velocity");
+  v.resolved = findAux(r, "taa_resolve");
+  v.segmentation = findAux(r, "segmentation");
   v.sha256 = r.colorSha256;
   return v;
 }
@@ -68,6 +70,7 @@ Plan planChecks(const spec::CaseSpec& spec) {
     p.needs.ids |= n.ids;
     p.needs.velocity |= n.velocity;
     p.needs.secondRun |= n.secondRun;
+    p.needs.adaptive |= n.adaptive;
     p.invariants.push_back(invariants::makeInvariant(kind, spec));
   }
   p.everyFrame = !p.invariants.empty();
@@ -83,6 +86,7 @@ void replay(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& sc
   ro.captureCurrent = plan.needs.current;
   ro.captureIds = plan.needs.ids;
   ro.captureVelocity = plan.needs.velocity;
+  ro.captureAdaptive = plan.needs.adaptive;
   Renderer renderer(ctx, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
@@ -235,6 +239,7 @@ CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunO
   replay(ctx, spec, scene, plan, options, [&](FrameRecord& r) {
     timing.add(r.gpuMs);
     result.frameMs.push_back(frameMilliseconds(r.gpuMs));
+    for (const auto& [name, value] : r.stats) result.frameStats[name].push_back(value);
     if (r.hasImages && r.hasReference) result.referenceRmse.push_back(rmseAgainst(r.reference, r.color));
     if (r.hasImages) hashes[r.frame] = r.colorSha256;
     const auto view = viewOf(r);

@@ -85,6 +85,7 @@ nlohmann::json toJson(const RunResults& r) {
                          {"golden_fingerprint", c.goldenFingerprint},
                          {"reference_rmse", c.referenceRmse},
                          {"frame_ms", c.frameMs},
+                         {"frame_stats", c.frameStats},
                          {"log", c.log},
                          {"seconds", c.seconds}};
     for (const auto& f : c.frames) {
@@ -135,6 +136,7 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.goldenFingerprint = jc.value("golden_fingerprint", "");
     c.referenceRmse = jc.value("reference_rmse", std::vector<double>{});
     c.frameMs = jc.value("frame_ms", std::vector<double>{});
+    c.frameStats = jc.value("frame_stats", std::map<std::string, std::vector<double>>{});
     c.log = jc.value("log", std::vector<std::string>{});
     c.seconds = jc.value("seconds", 0.0);
     for (const auto& jf : jc.value("frames", nlohmann::json::array())) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,6 +71,8 @@ struct CaseResult {
   std::vector<InvariantResult> invariants;
   std::vector<double> referenceRmse;  // per frame against the reference; empty without one
   std::vector<double> frameMs;        // per frame, all passes together
+  // Per-frame figures the renderer reports by name (adaptive: traced_share, fxaa_share).
+  std::map<std::string, std::vector<double>> frameStats;
   std::vector<PassTiming> timings;
   std::vector<std::string> log;       // passes and buffers the renderer allocated
   double seconds = 0.0;               // wall time of the case (not a result, for scheduling)

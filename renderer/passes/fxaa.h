@@ -16,14 +16,18 @@ struct FxaaSettings {
 
 class FxaaPass {
  public:
-  explicit FxaaPass(vk::Context& ctx, const FxaaSettings& settings = {});
-  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
-    filter_.record(cmd, input, output, size);
+  // `masked`: filter only the pixels a segmentation mask marks ADAPTIVE_MASK_FXAA
+  // (adaptive mode's out-of-history pixels) and copy the rest unchanged.
+  explicit FxaaPass(vk::Context& ctx, const FxaaSettings& settings = {}, bool masked = false);
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size,
+              vk::Image* mask = nullptr) {
+    filter_.record(cmd, input, output, size, mask);
   }
   std::string describe() const;
 
  private:
   FxaaSettings settings_;
+  bool masked_;
   PostFilter filter_;
 };
 

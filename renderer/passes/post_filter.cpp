@@ -32,28 +32,53 @@ void requireCovers(const vk::Image& image, glm::ivec2 size, const char* pass) {
                            "'");
 }
 
-PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params)
+PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params,
+                       bool maskBinding, const vk::SpecConstants& spec)
     : ctx_(ctx),
       name_(shader),
       params_(params),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
-  std::vector<VkDescriptorType> bindings(POST_BINDING_COUNT);
+  std::vector<VkDescriptorType> bindings(maskBinding ? POST_BINDING_MASK + 1 : POST_BINDING_COUNT);
   bindings[POST_BINDING_INPUT] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   bindings[POST_BINDING_OUTPUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  pipeline_ = vk::createComputePipeline(ctx, shader, bindings, sizeof(gpu::PostPush));
+  if (maskBinding) {
+    bindings[POST_BINDING_MASK] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    vk::ImageDesc d;
+    d.name = "no_mask";
+    d.format = VK_FORMAT_R32_UINT;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    noMask_ = vk::Image(ctx, d);
+    VkCommandBuffer cmd = ctx.beginCommands();
+    noMask_.use(cmd, vk::Use::TransferDst);
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, noMask_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
+                         &range);
+    noMask_.use(cmd, vk::Use::SampledCompute);
+    ctx.submitAndWait(cmd);
+  }
+  pipeline_ = vk::createComputePipeline(ctx, shader, bindings, sizeof(gpu::PostPush), spec);
 }
 
-void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
+void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size,
+                        vk::Image* mask) {
   requireCovers(input, size, name_.c_str());
   requireCovers(output, size, name_.c_str());
   if (&input == &output) throw std::logic_error(name_ + ": input and output must differ");
   input.use(cmd, vk::Use::SampledCompute);
   output.use(cmd, vk::Use::StorageWrite);
+  vk::Bindings b;
+  b.sampled(POST_BINDING_INPUT, input.view(), point_.handle())
+      .storage(POST_BINDING_OUTPUT, output.view());
+  if (noMask_) {
+    vk::Image& m = mask ? *mask : noMask_;
+    m.use(cmd, vk::Use::SampledCompute);
+    b.sampled(POST_BINDING_MASK, m.view(), point_.handle());
+  } else if (mask) {
+    throw std::logic_error(name_ + ": a mask was given, but the filter has no mask binding");
+  }
   pipeline_.bind(cmd);
-  vk::Bindings()
-      .sampled(POST_BINDING_INPUT, input.view(), point_.handle())
-      .storage(POST_BINDING_OUTPUT, output.view())
-      .push(ctx_, cmd, pipeline_);
+  b.push(ctx_, cmd, pipeline_);
   const gpu::PostPush push = makePostPush(size, params_);
   vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));

@@ -22,11 +22,15 @@ void requireCovers(const vk::Image& image, glm::ivec2 size, const char* pass);
 
 class PostFilter {
  public:
-  PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params);
+  // `maskBinding`: the shader declares POST_BINDING_MASK (FXAA); a 1x1 zero mask is
+  // bound when record() gets none, so the descriptor is always valid.
+  PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 params,
+             bool maskBinding = false, const vk::SpecConstants& spec = {});
 
   // Filters the top-left `size` pixels of `input` into `output` (the rest of
   // `output` is left as it was).
-  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size);
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size,
+              vk::Image* mask = nullptr);
 
  private:
   vk::Context& ctx_;
@@ -34,6 +38,7 @@ class PostFilter {
   glm::vec4 params_;
   vk::Pipeline pipeline_;
   vk::Sampler point_;
+  vk::Image noMask_;
 };
 
 }  // namespace taa

@@ -78,7 +78,8 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
       .set(TAA_SPEC_REDUCE_BLEND, full && t.reduce_blend_near_clamp)
       .set(TAA_SPEC_VELOCITY_IN_ALPHA, full && t.velocity_in_alpha)
       .set(TAA_SPEC_UPSAMPLE, upsample)
-      .set(TAA_SPEC_DEBUG, int(spec.debug.output));
+      .set(TAA_SPEC_DEBUG, int(spec.debug.output))
+      .set(TAA_SPEC_REJECT_MASK, spec.taa.mode == TaaMode::Adaptive);
   return c;
 }
 
@@ -102,6 +103,7 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
     : ctx_(ctx), spec_(spec), dummyFloat_(dummy(ctx, VK_FORMAT_R16G16B16A16_SFLOAT)),
       dummyUint_(dummy(ctx, VK_FORMAT_R32_UINT)),
       dummyStorage_(dummy(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, vk::Use::StorageWrite)),
+      dummyReject_(dummy(ctx, VK_FORMAT_R32_UINT, vk::Use::StorageWrite)),
       uniforms_(ctx, sizeof(gpu::TaaUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
@@ -109,13 +111,17 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
   bindings[TAA_BINDING_UNIFORMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   bindings[TAA_BINDING_HISTORY_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   bindings[TAA_BINDING_DEBUG_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  bindings[TAA_BINDING_REJECT_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   withHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", bindings, 0, taaSpecConstants(spec, true));
   withoutHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", bindings, 0, taaSpecConstants(spec, false));
   const VkFormat format = spec.taa.history_format == HistoryFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                            : VK_FORMAT_R16G16B16A16_SFLOAT;
   history_[0] = storageImage(ctx, "history_a", outputSize(spec), format);
   history_[1] = storageImage(ctx, "history_b", outputSize(spec), format);
-  if (plan.debugView) debug_ = storageImage(ctx, "debug_view", outputSize(spec), VK_FORMAT_R16G16B16A16_SFLOAT);
+  // The segmentation view is drawn by the adaptive pass, not here.
+  if (plan.debugView && spec.debug.output != DebugOutput::Segmentation)
+    debug_ = storageImage(ctx, "debug_view", outputSize(spec), VK_FORMAT_R16G16B16A16_SFLOAT);
+  if (plan.adaptive) rejection_ = storageImage(ctx, "rejection", outputSize(spec), VK_FORMAT_R32_UINT);
 }
 
 std::string TaaResolvePass::describe() const {
@@ -155,6 +161,9 @@ void TaaResolvePass::record(VkCommandBuffer cmd, const script::FrameState& state
   vk::Image& debugTarget = debug_ ? debug_ : dummyStorage_;
   debugTarget.use(cmd, vk::Use::StorageWrite);
   b.storage(TAA_BINDING_DEBUG_OUT, debugTarget.view());
+  vk::Image& rejectTarget = rejection_ ? rejection_ : dummyReject_;
+  rejectTarget.use(cmd, vk::Use::StorageWrite);
+  b.storage(TAA_BINDING_REJECT_OUT, rejectTarget.view());
 
   const vk::Pipeline& pipeline = hasHistory ? withHistory_ : withoutHistory_;
   pipeline.bind(cmd);

@@ -41,6 +41,8 @@ class TaaResolvePass {
   void record(VkCommandBuffer cmd, const script::FrameState& state, const TaaInputs& in);
   vk::Image& output() { return history_[current_]; }
   vk::Image* debugView() { return debug_ ? &debug_ : nullptr; }
+  // Why each pixel's history went unused (TAA_REJECT_*); adaptive mode only.
+  vk::Image* rejection() { return rejection_ ? &rejection_ : nullptr; }
   std::string describe() const;
 
  private:
@@ -54,6 +56,8 @@ class TaaResolvePass {
   vk::Image dummyFloat_;
   vk::Image dummyUint_;
   vk::Image dummyStorage_;  // debug target when the case has no debug view
+  vk::Image dummyReject_;   // rejection target outside adaptive mode
+  vk::Image rejection_;
   vk::Buffer uniforms_;
   vk::Sampler linear_;
   vk::Sampler point_;

@@ -34,6 +34,7 @@ struct CaseSpec {
   std::vector<MoverSpec> movers;
   JitterSpec jitter;
   TaaSpec taa;
+  AdaptiveSpec adaptive;
   PostSpec post;
   DebugSpec debug;
   OutputSpec output;
@@ -58,6 +59,7 @@ void fields(V& v, CaseSpec& s) {
   v.list("movers", s.movers, Meta{"moving objects", ""});
   v.object("jitter", s.jitter, Meta{"projection jitter sequence", ""});
   v.object("taa", s.taa, Meta{"temporal resolve", ""});
+  v.object("adaptive", s.adaptive, Meta{"adaptive ray tracing (taa.mode adaptive)", ""});
   v.object("post", s.post, Meta{"passes around the resolve", ""});
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});

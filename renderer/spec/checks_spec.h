@@ -47,13 +47,15 @@ enum class InvariantKind {
   Energy,
   Determinism,
   BitStable,
-  MatchesInput
+  MatchesInput,
+  AdaptiveUnmarked
 };
 TAA_ENUM_NAMES(InvariantKind, {InvariantKind::HistoryBounded, "history_bounded"},
                {InvariantKind::NoGhosting, "no_ghosting"}, {InvariantKind::Converges, "converges"},
                {InvariantKind::TemporalStability, "temporal_stability"}, {InvariantKind::Finite, "finite"},
                {InvariantKind::Energy, "energy"}, {InvariantKind::Determinism, "determinism"},
-               {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::MatchesInput, "matches_input"})
+               {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::MatchesInput, "matches_input"},
+               {InvariantKind::AdaptiveUnmarked, "adaptive_unmarked"})
 
 struct NoGhostingSpec {
   int frames = 8;

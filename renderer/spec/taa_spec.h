@@ -150,6 +150,54 @@ void fields(V& v, TaaSpec& s) {
   v.field("history_format", s.history_format, Meta{"precision of the history buffer", "renderer/passes/taa_resolve.cpp"});
 }
 
+// Adaptive ray tracing (Marrs et al.), active when taa.mode is adaptive: after the
+// full resolve a segmentation marks aliased pixels, which get `samples` traced rays.
+struct AdaptiveSpec {
+  int samples = 4;
+  float threshold = 0.25f;
+  float weight_normal = 1.0f;
+  float weight_depth = 1.0f;
+  float weight_material = 1.0f;
+  float weight_luminance = 1.0f;
+  int history_count = 8;
+  bool fxaa_out_of_history = true;
+  bool trace_disoccluded = false;
+  bool ray_lod = true;
+  bool trace_all = false;
+};
+
+template <class V>
+void fields(V& v, AdaptiveSpec& s) {
+  const char* seg = "shaders/adaptive_segmentation.comp";
+  const char* trace = "shaders/adaptive_trace.comp";
+  v.field("samples", s.samples, Range<int>{1, 16},
+          Meta{"rays traced per marked pixel, at fixed sub-pixel positions of the Hammersley set (stratified "
+               "in x and y; 1 = the pixel centre)",
+               trace});
+  v.field("threshold", s.threshold, Range<float>{0.0f, 1e6f},
+          Meta{"a pixel is traced when the weighted sum of its derivative terms exceeds this", seg});
+  v.field("weight_normal", s.weight_normal, Range<float>{0.0f, 1e6f},
+          Meta{"weight of the normal term: (1 - cos) / 2 of the largest normal change to a 4-neighbour", seg});
+  v.field("weight_depth", s.weight_depth, Range<float>{0.0f, 1e6f},
+          Meta{"weight of the depth term: largest relative linear-depth change to a 4-neighbour (at most 1)", seg});
+  v.field("weight_material", s.weight_material, Range<float>{0.0f, 1e6f},
+          Meta{"weight of the material term: 1 where a 4-neighbour has another id (object, material or sky)", seg});
+  v.field("weight_luminance", s.weight_luminance, Range<float>{0.0f, 1e6f},
+          Meta{"weight of the luminance term: largest change of tonemapped luma to a 4-neighbour", seg});
+  v.field("history_count", s.history_count, Range<int>{0, 255},
+          Meta{"frames a pixel stays traced after its derivatives last marked it (0: no history count)", seg});
+  v.field("fxaa_out_of_history", s.fxaa_out_of_history,
+          Meta{"pixels without usable history (off screen, rejected, reset) that are not traced get FXAA",
+               "shaders/fxaa.comp"});
+  v.field("trace_disoccluded", s.trace_disoccluded,
+          Meta{"pixels whose history was rejected on screen (disocclusion) are traced instead of FXAA'd", seg});
+  v.field("ray_lod", s.ray_lod,
+          Meta{"texture LOD from ray differentials (rays one pixel right and one down), matching the raster's "
+               "mip selection; false samples mip 0",
+               trace});
+  v.field("trace_all", s.trace_all, Meta{"debug: trace every pixel", seg});
+}
+
 enum class Sharpen { None, Gradient, Cas };
 TAA_ENUM_NAMES(Sharpen, {Sharpen::None, "none"}, {Sharpen::Gradient, "gradient"}, {Sharpen::Cas, "cas"})
 
@@ -182,9 +230,10 @@ void fields(V& v, PostSpec& s) {
           Meta{"fraction of the frame's motion covered by the blur (shutter)", "shaders/motion_blur.comp"});
 }
 
-enum class DebugOutput { None, Velocity, Rejection, ClampDistance };
+enum class DebugOutput { None, Velocity, Rejection, ClampDistance, Segmentation };
 TAA_ENUM_NAMES(DebugOutput, {DebugOutput::None, "none"}, {DebugOutput::Velocity, "velocity"},
-               {DebugOutput::Rejection, "rejection"}, {DebugOutput::ClampDistance, "clamp_distance"})
+               {DebugOutput::Rejection, "rejection"}, {DebugOutput::ClampDistance, "clamp_distance"},
+               {DebugOutput::Segmentation, "segmentation"})
 
 struct DebugSpec {
   DebugOutput output = DebugOutput::None;
@@ -195,7 +244,8 @@ template <class V>
 void fields(V& v, DebugSpec& s) {
   v.field("output", s.output,
           Meta{"replace the output by a debug view: velocity (rg = v * scale / 2 + 0.5), rejection mask, "
-               "clamp distance (times scale)",
+               "clamp distance (times scale), segmentation (adaptive mode: yellow traced by derivatives, "
+               "orange traced by history count, blue FXAA, grey the rest)",
                "shaders/taa_resolve.comp"});
   v.field("scale", s.scale, Range<float>{1e-6f, 1e6f}, Meta{"multiplier of the debug values", "shaders/taa_resolve.comp"});
 }

@@ -30,6 +30,7 @@ struct DeviceInfo {
   uint32_t deviceId = 0;
   bool isCpu = false;
   float timestampPeriodNs = 1.0f;
+  uint32_t maxPushDescriptors = 0;  // the adaptive tracer pushes a texture array
 };
 
 class Context {

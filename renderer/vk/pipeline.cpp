@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <fstream>
 #include <utility>
 
@@ -89,9 +90,11 @@ VkShaderModule createModule(VkDevice device, const std::string& name) {
 }
 
 void createLayouts(VkDevice device, const std::vector<VkDescriptorType>& bindings, VkShaderStageFlags stages,
-                   uint32_t pushBytes, VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+                   uint32_t pushBytes, VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout,
+                   const std::vector<uint32_t>& counts = {}) {
   std::vector<VkDescriptorSetLayoutBinding> b(bindings.size());
-  for (uint32_t i = 0; i < bindings.size(); ++i) b[i] = {i, bindings[i], 1, stages, nullptr};
+  for (uint32_t i = 0; i < bindings.size(); ++i)
+    b[i] = {i, bindings[i], i < counts.size() ? counts[i] : 1u, stages, nullptr};
   VkDescriptorSetLayoutCreateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   set.bindingCount = uint32_t(b.size());
@@ -109,11 +112,12 @@ void createLayouts(VkDevice device, const std::vector<VkDescriptorType>& binding
 }  // namespace
 
 Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                               uint32_t pushConstantBytes, const SpecConstants& spec) {
+                               uint32_t pushConstantBytes, const SpecConstants& spec,
+                               const std::vector<uint32_t>& counts) {
   VkDevice device = ctx.device();
   VkDescriptorSetLayout setLayout;
   VkPipelineLayout layout;
-  createLayouts(device, bindings, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes, setLayout, layout);
+  createLayouts(device, bindings, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes, setLayout, layout, counts);
   VkShaderModule module = createModule(device, shader);
   const VkSpecializationInfo specInfo = spec.info();
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -237,6 +241,23 @@ Bindings& Bindings::sampled(uint32_t binding, VkImageView view, VkSampler sample
   w.descriptorCount = 1;
   w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   w.pImageInfo = &images_.back();
+  writes_.push_back(w);
+  return *this;
+}
+
+Bindings& Bindings::sampledArray(uint32_t binding, const std::vector<VkImageView>& views,
+                                 const std::vector<VkSampler>& samplers) {
+  if (views.empty() || views.size() != samplers.size())
+    throw std::logic_error("Bindings::sampledArray: need one sampler per view, and at least one");
+  // pImageInfo must point at consecutive elements: a deque keeps them only per chunk.
+  arrays_.emplace_back();
+  for (size_t i = 0; i < views.size(); ++i)
+    arrays_.back().push_back({samplers[i], views[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstBinding = binding;
+  w.descriptorCount = uint32_t(views.size());
+  w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  w.pImageInfo = arrays_.back().data();
   writes_.push_back(w);
   return *this;
 }

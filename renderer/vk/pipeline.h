@@ -59,8 +59,10 @@ class Pipeline {
 // in $TAA_SHADER_DIR or the build's shader folder.
 std::vector<uint32_t> loadSpirv(const std::string& name);
 
+// `counts`: descriptors per binding (arrays); empty means one each.
 Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                               uint32_t pushConstantBytes, const SpecConstants& spec = {});
+                               uint32_t pushConstantBytes, const SpecConstants& spec = {},
+                               const std::vector<uint32_t>& counts = {});
 
 struct GraphicsDesc {
   std::string vertexShader;
@@ -84,6 +86,9 @@ Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const Gra
 class Bindings {
  public:
   Bindings& sampled(uint32_t binding, VkImageView view, VkSampler sampler);
+  // Every element of an array binding, in order.
+  Bindings& sampledArray(uint32_t binding, const std::vector<VkImageView>& views,
+                         const std::vector<VkSampler>& samplers);
   Bindings& storage(uint32_t binding, VkImageView view);
   Bindings& uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
   Bindings& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
@@ -93,6 +98,7 @@ class Bindings {
   std::vector<VkWriteDescriptorSet> writes_;
   std::deque<VkDescriptorImageInfo> images_;  // deque: stable addresses for pImageInfo
   std::deque<VkDescriptorBufferInfo> buffers_;
+  std::deque<std::vector<VkDescriptorImageInfo>> arrays_;
 };
 
 class Sampler {

@@ -8,6 +8,7 @@
 #include <cstdint>
 namespace taa::gpu {
 using vec2 = glm::vec2;
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using mat4 = glm::mat4;
 using uvec4 = glm::uvec4;
@@ -87,7 +88,8 @@ TAA_BLOCK(DrawPush) {
 #define TAA_BINDING_PREV_VELOCITY 10
 #define TAA_BINDING_HISTORY_OUT 11  // new history = resolve output (storage)
 #define TAA_BINDING_DEBUG_OUT 12    // debug view (storage), when debug.output is set
-#define TAA_BINDING_COUNT 13
+#define TAA_BINDING_REJECT_OUT 13   // R32UI why history was not used (TAA_REJECT_*), adaptive mode
+#define TAA_BINDING_COUNT 14
 
 #define TAA_SPEC_MODE 0             // 0 pass-through, 1 basic, 2 full
 #define TAA_SPEC_HAS_HISTORY 1      // false on frame 0, cuts and scripted resets
@@ -110,6 +112,12 @@ TAA_BLOCK(DrawPush) {
 #define TAA_SPEC_VELOCITY_IN_ALPHA 18
 #define TAA_SPEC_UPSAMPLE 19
 #define TAA_SPEC_DEBUG 20           // DebugOutput
+#define TAA_SPEC_REJECT_MASK 21     // write TAA_BINDING_REJECT_OUT (adaptive mode only)
+
+#define TAA_REJECT_NONE 0u
+#define TAA_REJECT_OFFSCREEN 1u    // the reprojected position left the previous frame
+#define TAA_REJECT_DISOCCLUDED 2u  // depth, consistency or anti-ghosting rejected it on screen
+#define TAA_REJECT_NO_HISTORY 3u   // frame 0, camera cut or scripted reset
 
 TAA_BLOCK(TaaUniforms) {
   mat4 invViewProj;       // current, un-jittered: world position from depth
@@ -136,7 +144,10 @@ TAA_BLOCK(TaaUniforms) {
 
 #define POST_BINDING_INPUT 0   // sharpen, cas, fxaa: the image they filter
 #define POST_BINDING_OUTPUT 1
+#define POST_BINDING_MASK 2    // fxaa only: R32UI segmentation mask (read when FXAA_SPEC_MASKED)
 #define POST_BINDING_COUNT 2
+
+#define FXAA_SPEC_MASKED 0     // filter only pixels whose mask is ADAPTIVE_MASK_FXAA, copy the rest
 
 // Push constants of every post pass: the valid region and the pass's parameters.
 TAA_BLOCK(PostPush) {
@@ -152,7 +163,112 @@ TAA_BLOCK(InjectPush) {
   vec4 params;     // x: pixel count, y: 0 nan, 1 +inf, 2 -inf
 };
 
+// ---- Adaptive ray tracing (adaptive_segmentation.comp, adaptive_trace.comp) ----
+// The segmentation mask, one R32UI per output pixel.
+#define ADAPTIVE_MASK_NONE 0u           // the resolve's output stands
+#define ADAPTIVE_MASK_TRACE 1u          // derivatives over the threshold (or trace_all, disocclusion)
+#define ADAPTIVE_MASK_TRACE_HISTORY 2u  // traced because it was marked within history_count frames
+#define ADAPTIVE_MASK_FXAA 3u           // out of history and not traced
+
+#define SEG_BINDING_UNIFORMS 0
+#define SEG_BINDING_COLOR 1      // the resolve's input colour
+#define SEG_BINDING_DEPTH 2
+#define SEG_BINDING_NORMAL 3
+#define SEG_BINDING_IDS 4
+#define SEG_BINDING_REJECTION 5  // the resolve's TAA_REJECT_* image
+#define SEG_BINDING_COUNTER 6    // R32UI frames left of the history count (read and written in place)
+#define SEG_BINDING_MASK 7       // R32UI ADAPTIVE_MASK_*
+#define SEG_BINDING_COUNTS 8     // AdaptiveCounts
+#define SEG_BINDING_RESOLVED 9   // the resolve's output: the debug view's background
+#define SEG_BINDING_DEBUG 10     // debug view (storage, RGBA16F)
+#define SEG_BINDING_COUNT 11
+
+#define SEG_SPEC_HAS_HISTORY 0      // false: counters restart, every pixel is out of history
+#define SEG_SPEC_TRACE_ALL 1
+#define SEG_SPEC_FXAA 2             // adaptive.fxaa_out_of_history
+#define SEG_SPEC_TRACE_DISOCCLUDED 3
+#define SEG_SPEC_DEBUG 4            // write the debug view
+
+TAA_BLOCK(SegmentationUniforms) {
+  vec4 weights;  // normal, depth, material, luminance
+  vec4 params;   // threshold, history_count, near, far
+  vec4 size;     // w, h, 1/w, 1/h
+  vec4 pad;
+};
+
+TAA_BLOCK(AdaptiveCounts) {
+  uint traced;  // pixels traced this frame (an integer sum: the same for any invocation order)
+  uint fxaa;
+  uint pad0;
+  uint pad1;
+};
+
+#define TRACE_BINDING_FRAME 0      // FrameUniforms of the raster pass: camera and light
+#define TRACE_BINDING_PARAMS 1     // TraceUniforms
+#define TRACE_BINDING_NODES 2      // BvhNode[]: the static BVH, then the movers' BVH
+#define TRACE_BINDING_TRIANGLES 3  // TraceTriangle[] in BVH leaf order
+#define TRACE_BINDING_SHADING 4    // TraceShading[] parallel to the triangles
+#define TRACE_BINDING_MATERIALS 5  // TraceMaterial[]
+#define TRACE_BINDING_MASK 6
+#define TRACE_BINDING_OUT 7        // the resolve's output (= next frame's history), written in place
+#define TRACE_BINDING_TEXTURES 8   // sampler2D[TRACE_MAX_TEXTURES]
+#define TRACE_BINDING_COUNT 9
+
+#define TRACE_MAX_TEXTURES 16  // adaptive_trace.comp has one switch case per slot
+#define TRACE_MAX_SAMPLES 16
+#define TRACE_NO_ROOT 0xffffffffu
+
+#define TRACE_SPEC_SAMPLES 0
+#define TRACE_SPEC_RAY_LOD 1
+
+// Inner nodes: count 0, children at first and first + 1. Leaves: triangles
+// [first, first + count). (A uint after a vec3 shares its 16 bytes in std430 and C++.)
+TAA_BLOCK(BvhNode) {
+  vec3 lo;
+  uint first;
+  vec3 hi;
+  uint count;
+};
+
+TAA_BLOCK(TraceTriangle) {
+  vec3 v0;  // world space
+  uint material;
+  vec3 v1;
+  uint pad0;
+  vec3 v2;
+  uint pad1;
+};
+
+TAA_BLOCK(TraceShading) {
+  vec4 n0;    // world-space vertex normals as the vertex shader outputs them (not normalised)
+  vec4 n1;
+  vec4 n2;
+  vec4 uv01;  // uv0.xy, uv1.xy
+  vec4 uv2;   // xy
+};
+
+TAA_BLOCK(TraceMaterial) {
+  vec4 baseColor;     // linear RGBA factor
+  float alphaCutoff;  // < 0: no alpha test
+  uint texture;       // slot in the texture array
+  uint blend;         // 1: alpha-blended ("over", composited front to back along the ray)
+  uint pad;
+};
+
+TAA_BLOCK(TraceUniforms) {
+  vec4 size;    // w, h, 1/w, 1/h
+  vec4 params;  // x: gradient scale 2^lod_bias
+  uvec4 roots;  // x: static BVH root, y: movers' root (TRACE_NO_ROOT when none)
+  vec4 offsets[TRACE_MAX_SAMPLES];  // xy: sub-pixel sample positions, pixels from the centre
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(BvhNode) == 32);
+static_assert(sizeof(TraceTriangle) == 48);
+static_assert(sizeof(TraceShading) == 80);
+static_assert(sizeof(TraceMaterial) == 32);
+static_assert(sizeof(TraceUniforms) == 48 + 16 * TRACE_MAX_SAMPLES);
+static_assert(sizeof(SegmentationUniforms) == 64);
 static_assert(sizeof(InjectPush) == 80);
 static_assert(sizeof(PostPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);

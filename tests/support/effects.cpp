@@ -40,16 +40,6 @@ void report(const std::string& what, double value) {
   std::printf("  [measured] %-58s %.6g\n", what.c_str(), value);
 }
 
-const Image& auxImage(const FrameRecord& r, const std::string& name) {
-  if (name == "reference") {
-    if (!r.hasReference)
-      throw std::runtime_error("frame " + std::to_string(r.frame) + " has no reference");
-    return r.reference;
-  }
-  for (const auto& a : r.aux)
-    if (a.name == name) return a.image;
-  throw std::runtime_error("frame " + std::to_string(r.frame) + " has no buffer " + name);
-}
 
 Mask fullMask(int width, int height) {
   return Mask(size_t(width) * size_t(height), true);

@@ -10,6 +10,7 @@
 #include "frame_record.h"
 #include "renderer.h"
 #include "spec/case_spec.h"
+#include "support/gpu.h"
 
 namespace taa::test {
 
@@ -33,7 +34,6 @@ const EffectRun& renderOnce(const std::string& base, const std::string& patch,
 void report(const std::string& what, double value);
 
 // A buffer read back beside the output ("reference" names FrameRecord::reference).
-const Image& auxImage(const FrameRecord& r, const std::string& name);
 
 // Which pixels a measure covers. Empty: every pixel.
 using Mask = std::vector<bool>;

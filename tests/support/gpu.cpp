@@ -1,5 +1,7 @@
 #include "support/gpu.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -61,6 +63,22 @@ Image downloadImage(vk::Image& image) {
 spec::CaseSpec caseFromJson(const std::string& json, const std::string& name) {
   const auto path = std::filesystem::path(TAA_SOURCE_DIR) / "cases" / (name + ".json");
   return cases::parseCase(json, path).spec;
+}
+
+const Image& auxImage(const FrameRecord& r, const std::string& name) {
+  if (name == "reference") {
+    if (!r.hasReference)
+      throw std::runtime_error("frame " + std::to_string(r.frame) + " has no reference");
+    return r.reference;
+  }
+  for (const auto& a : r.aux)
+    if (a.name == name) return a.image;
+  throw std::runtime_error("frame " + std::to_string(r.frame) + " has no buffer " + name);
+}
+
+std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,
+                                        const std::vector<int>& framesWithImages) {
+  return renderCase(spec, framesWithImages, options);
 }
 
 std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages,

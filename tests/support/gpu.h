@@ -31,4 +31,11 @@ spec::CaseSpec caseFromJson(const std::string& json, const std::string& name = "
 std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vector<int>& framesWithImages = {},
                                     const RenderOptions& options = {});
 
+// The same with render options (reference, captures).
+std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,
+                                        const std::vector<int>& framesWithImages = {});
+
+// An aux image of a record by name ("reference" gives the reference); throws when absent.
+const Image& auxImage(const FrameRecord& record, const std::string& name);
+
 }  // namespace taa::test

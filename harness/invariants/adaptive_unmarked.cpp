@@ -1,0 +1,102 @@
+// adaptive_unmarked: adaptive ray tracing changes only the pixels its segmentation
+// marks. Every frame, each pixel the mask leaves unmarked (ADAPTIVE_MASK_NONE) must
+// equal the full resolve's output for that frame bit for bit: neither the trace nor
+// the masked FXAA may touch it. Traced and FXAA'd pixels are counted for the report.
+#include <cstring>
+
+#include "common/shared.h"
+#include "invariants/invariant_support.h"
+
+namespace taa::invariants {
+
+namespace {
+
+using namespace taa::spec;
+
+class AdaptiveUnmarked : public Invariant {
+ public:
+  void observe(const FrameView& f) override {
+    if (!error_.empty()) return;
+    for (auto [img, what] :
+         {std::pair{f.resolved, "taa_resolve"}, std::pair{f.segmentation, "segmentation"}}) {
+      if (auto why = requireImage(f, img, what, 1); !why.empty()) {
+        error_ = why;
+        return;
+      }
+    }
+    if (auto why = requireImage(f, f.output, "output", 3); !why.empty()) {
+      error_ = why;
+      return;
+    }
+    ++frames_;
+    for (int y = 0; y < f.output->height; ++y)
+      for (int x = 0; x < f.output->width; ++x) {
+        const auto mark = uint32_t(f.segmentation->at(x, y, 0));
+        ++pixels_;
+        if (mark != ADAPTIVE_MASK_NONE) {
+          ++(mark == ADAPTIVE_MASK_FXAA ? fxaa_ : traced_);
+          continue;
+        }
+        bool same = true;
+        for (int c = 0; c < 3; ++c) {
+          const float a = f.output->at(x, y, c), b = f.resolved->at(x, y, c);
+          same = same && std::memcmp(&a, &b, sizeof(float)) == 0;
+        }
+        if (!same && differing_++ == 0)
+          where_ = "frame " + std::to_string(f.frame) + " pixel (" + std::to_string(x) + ", " +
+                   std::to_string(y) + ")";
+      }
+  }
+
+  Outcome finish() override {
+    Outcome o{"adaptive_unmarked", false, "", {}};
+    const double n = pixels_ > 0 ? double(pixels_) : 1.0;
+    o.values = {{"frames", double(frames_)},
+                {"differing_unmarked_pixels", double(differing_)},
+                {"traced_share", double(traced_) / n},
+                {"fxaa_share", double(fxaa_) / n}};
+    if (!error_.empty()) {
+      o.detail = error_;
+      return o;
+    }
+    if (frames_ == 0) {
+      o.detail = "no frame observed";
+      return o;
+    }
+    o.passed = differing_ == 0;
+    o.detail = o.passed
+                   ? "unmarked pixels equal the resolve's output in " + std::to_string(frames_) +
+                         " frame(s) (traced " + num(double(traced_) / n) + ", FXAA " +
+                         num(double(fxaa_) / n) + " of pixels)"
+                   : std::to_string(differing_) +
+                         " unmarked pixel(s) differ from the resolve's output; first at " + where_;
+    return o;
+  }
+
+ private:
+  std::string error_, where_;
+  int frames_ = 0;
+  long long pixels_ = 0, traced_ = 0, fxaa_ = 0, differing_ = 0;
+};
+
+}  // namespace
+
+std::string adaptiveUnmarkedInapplicable(const CaseSpec& spec) {
+  const std::string name = "adaptive_unmarked";
+  if (spec.taa.mode != TaaMode::Adaptive)
+    return name + " checks adaptive ray tracing, but taa.mode is " + enumToString(spec.taa.mode) +
+           "; set taa.mode to adaptive or remove it from checks.invariants";
+  if (auto why = debugViewReason(name, spec); !why.empty()) return why;
+  if (spec.post.sharpen != Sharpen::None || spec.post.fxaa)
+    return name +
+           " compares the output with the resolve's, but post.sharpen / post.fxaa change every "
+           "pixel "
+           "after it; remove them or the invariant";
+  return "";
+}
+
+std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CaseSpec&) {
+  return std::make_unique<AdaptiveUnmarked>();
+}
+
+}  // namespace taa::invariants

@@ -1,0 +1,129 @@
+#include "passes/adaptive/adaptive.h"
+
+#include <cstdio>
+#include <cstring>
+
+#include "readback.h"
+#include "vk/context.h"
+#include "vk/transfer.h"
+
+namespace taa {
+
+namespace {
+
+vk::Image outputImage(vk::Context& ctx, const char* name, const spec::CaseSpec& spec,
+                      VkImageUsageFlags usage) {
+  vk::ImageDesc d;
+  d.name = name;
+  d.width = uint32_t(spec.render.width);
+  d.height = uint32_t(spec.render.height);
+  d.format = spec.taa.history_format == spec::HistoryFormat::Rgba32f
+                 ? VK_FORMAT_R32G32B32A32_SFLOAT
+                 : VK_FORMAT_R16G16B16A16_SFLOAT;
+  d.usage = usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  return vk::Image(ctx, d);
+}
+
+// The counts are written by a shader and read through mapped memory after the wait.
+void hostReadBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier2 m{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  m.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  m.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  m.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  m.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = 1;
+  dep.pMemoryBarriers = &m;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void copyImage(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
+  from.use(cmd, vk::Use::TransferSrc);
+  to.use(cmd, vk::Use::TransferDst);
+  VkImageCopy region{};
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.dstSubresource = region.srcSubresource;
+  region.extent = {to.desc().width, to.desc().height, 1};
+  vkCmdCopyImage(cmd, from.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(),
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+}
+
+}  // namespace
+
+AdaptivePass::AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+                           const DrawList& firstFrame, bool capture)
+    : ctx_(ctx), spec_(spec), segmentation_(ctx, spec), trace_(ctx, spec, scene, firstFrame) {
+  if (spec.adaptive.fxaa_out_of_history && !spec.adaptive.trace_all) {
+    fxaa_ = std::make_unique<FxaaPass>(ctx, FxaaSettings{}, true);
+    filtered_ = outputImage(ctx, "adaptive_fxaa", spec, VK_IMAGE_USAGE_STORAGE_BIT);
+  }
+  if (capture)
+    beforeTrace_ = outputImage(ctx, "taa_resolve_copy", spec, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+}
+
+vk::Image& AdaptivePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
+                                const AdaptiveFrame& frame, const SegmentationInputs& in,
+                                vk::Image& resolved) {
+  const script::FrameState& state = *frame.state;
+  lastSize_ = state.renderSize;
+  if (beforeTrace_) copyImage(cmd, resolved, beforeTrace_);
+  timer.begin(cmd, "adaptive_segmentation");
+  SegmentationInputs withResolved = in;
+  withResolved.resolved = &resolved;
+  segmentation_.record(cmd, state, withResolved);
+  timer.end(cmd);
+  timer.begin(cmd, "adaptive_trace");
+  trace_.record(cmd, state, *frame.draws, frame.frameUniforms, frame.lodBias, segmentation_.mask(),
+                resolved);
+  timer.end(cmd);
+  hostReadBarrier(cmd);
+  if (!fxaa_) return resolved;
+  timer.begin(cmd, "adaptive_fxaa");
+  fxaa_->record(cmd, resolved, filtered_, state.renderSize, &segmentation_.mask());
+  timer.end(cmd);
+  return filtered_;
+}
+
+std::vector<std::pair<std::string, double>> AdaptivePass::stats() const {
+  const gpu::AdaptiveCounts c = segmentation_.counts();
+  const double pixels = double(lastSize_.x) * double(lastSize_.y);
+  if (pixels <= 0.0) return {};
+  return {{"traced_share", double(c.traced) / pixels}, {"fxaa_share", double(c.fxaa) / pixels}};
+}
+
+std::vector<NamedImage> AdaptivePass::readCaptures(glm::ivec2 size) {
+  std::vector<NamedImage> out;
+  if (!beforeTrace_) return out;
+  const int tw = int(beforeTrace_.desc().width);
+  out.push_back({"taa_resolve", decodeTarget(vk::readImage(ctx_, beforeTrace_),
+                                             beforeTrace_.desc().format, tw, size.x, size.y)});
+  vk::Image& mask = segmentation_.mask();
+  const auto bytes = vk::readImage(ctx_, mask);
+  Image m(size.x, size.y, 1);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      uint32_t v;
+      std::memcpy(&v, &bytes[(size_t(y) * mask.desc().width + size_t(x)) * 4], 4);
+      m.at(x, y, 0) = float(v);
+    }
+  out.push_back({"segmentation", std::move(m)});
+  return out;
+}
+
+std::vector<std::string> AdaptivePass::describe() const {
+  const auto& a = spec_.adaptive;
+  char buf[256];
+  std::snprintf(buf, sizeof(buf),
+                "pass adaptive_segmentation: threshold %g, weights normal %g depth %g material %g "
+                "luminance %g, "
+                "history count %d%s%s",
+                double(a.threshold), double(a.weight_normal), double(a.weight_depth),
+                double(a.weight_material), double(a.weight_luminance), a.history_count,
+                a.trace_disoccluded ? ", disocclusions traced" : "",
+                a.trace_all ? ", every pixel traced" : "");
+  std::vector<std::string> out = {buf, trace_.describe()};
+  if (fxaa_) out.push_back(fxaa_->describe());
+  return out;
+}
+
+}  // namespace taa

@@ -1,0 +1,106 @@
+#version 450
+// Adaptive ray tracing's trace pass: every pixel the segmentation marked gets
+// kSamples primary rays at fixed stratified sub-pixel positions (un-jittered, like
+// the resolve's output), traced through the CPU-built BVHs and shaded exactly as the
+// raster pass shades (Blinn-Phong, base colour factor times the sRGB texture, alpha
+// test, "over" blending, the same sky). Their average replaces the resolve's output
+// at that pixel; since that image is the next frame's history, the traced result
+// also feeds the history. Unmarked pixels are not touched.
+#extension GL_GOOGLE_include_directive : require
+#include "common/shared.h"
+#include "common/lighting.glsl"
+#include "common/sky.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(constant_id = TRACE_SPEC_SAMPLES) const int kSamples = 4;
+layout(constant_id = TRACE_SPEC_RAY_LOD) const bool kRayLod = true;
+
+layout(std140, binding = TRACE_BINDING_FRAME) uniform FrameBlock { FrameUniforms frame; };
+layout(std140, binding = TRACE_BINDING_PARAMS) uniform TraceBlock { TraceUniforms trace; };
+layout(std430, binding = TRACE_BINDING_NODES) readonly buffer Nodes { BvhNode nodes[]; };
+layout(std430, binding = TRACE_BINDING_TRIANGLES) readonly buffer T { TraceTriangle triangles[]; };
+layout(std430, binding = TRACE_BINDING_SHADING) readonly buffer Shading { TraceShading shading[]; };
+layout(std430, binding = TRACE_BINDING_MATERIALS) readonly buffer M { TraceMaterial materials[]; };
+layout(binding = TRACE_BINDING_MASK) uniform usampler2D maskTex;
+layout(binding = TRACE_BINDING_OUT) uniform writeonly image2D outImage;
+layout(binding = TRACE_BINDING_TEXTURES) uniform sampler2D textures[TRACE_MAX_TEXTURES];
+
+#include "trace/bvh.glsl"
+#include "trace/surface.glsl"
+
+// Surfaces a ray passes through (alpha-tested texels, blended layers) before it
+// stops counting them; the rest of its weight goes to the sky.
+const int kMaxLayers = 16;
+
+vec3 unproject(vec2 pixel, float depth) {
+  vec2 ndc = pixel * trace.size.zw * 2.0 - 1.0;
+  vec4 w = frame.invViewProjNoJitter * vec4(ndc, depth, 1.0);
+  return w.xyz / w.w;
+}
+
+// Reversed Z: depth 1 is the near plane, 0 the far plane, so the ray covers exactly
+// what the raster's depth range keeps.
+CameraRay cameraRay(vec2 pixel) {
+  CameraRay r;
+  r.origin = unproject(pixel, 1.0);
+  r.dir = unproject(pixel, 0.0) - r.origin;
+  return r;
+}
+
+// lavapipe cannot index sampler arrays with a varying index (no
+// shaderSampledImageArrayDynamicIndexing), so each slot is a case with a constant one.
+// textureGrad has no bias argument; scaling the gradients by 2^bias adds bias to the LOD.
+#define TRACE_TEXTURE_CASE(i)                                                         \
+  case i:                                                                             \
+    return kRayLod ? textureGrad(textures[i], uv, dx * trace.params.x, dy * trace.params.x) \
+                   : textureLod(textures[i], uv, 0.0);
+
+vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {
+  switch (slot) {
+    TRACE_TEXTURE_CASE(0) TRACE_TEXTURE_CASE(1) TRACE_TEXTURE_CASE(2) TRACE_TEXTURE_CASE(3)
+    TRACE_TEXTURE_CASE(4) TRACE_TEXTURE_CASE(5) TRACE_TEXTURE_CASE(6) TRACE_TEXTURE_CASE(7)
+    TRACE_TEXTURE_CASE(8) TRACE_TEXTURE_CASE(9) TRACE_TEXTURE_CASE(10) TRACE_TEXTURE_CASE(11)
+    TRACE_TEXTURE_CASE(12) TRACE_TEXTURE_CASE(13) TRACE_TEXTURE_CASE(14) TRACE_TEXTURE_CASE(15)
+  }
+  return vec4(1.0);
+}
+
+vec4 baseColor(TraceMaterial m, Surface s) {
+  return m.baseColor * sampleTexture(m.texture, s.uv, s.dUvDx, s.dUvDy);
+}
+
+vec3 traceSample(vec2 pixel) {
+  CameraRay r = cameraRay(pixel);
+  CameraRay rx = cameraRay(pixel + vec2(1.0, 0.0));
+  CameraRay ry = cameraRay(pixel + vec2(0.0, 1.0));
+  vec3 sum = vec3(0.0);
+  float transmit = 1.0;
+  float afterT = -1.0;
+  uint afterTri = 0u;
+  for (int layer = 0; layer < kMaxLayers; ++layer) {
+    Hit h = closestHit(r.origin, r.dir, 1.0, afterT, afterTri);
+    if (h.tri == TRACE_NO_ROOT) break;
+    afterT = h.t;
+    afterTri = h.tri;
+    TraceMaterial m = materials[triangles[h.tri].material];
+    Surface s = surfaceAt(h, r, rx, ry);
+    vec4 base = baseColor(m, s);
+    if (m.alphaCutoff >= 0.0 && base.a < m.alphaCutoff) continue;  // the raster's discard
+    vec3 c = shadeBlinnPhong(base.rgb, s.normal, s.position, frame);
+    if (m.blend == 0u) return sum + transmit * c;
+    sum += transmit * base.a * c;
+    transmit *= 1.0 - base.a;
+  }
+  return sum + transmit * skyColor(normalize(r.dir));
+}
+
+void main() {
+  ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(q, ivec2(trace.size.xy)))) return;
+  uint mark = texelFetch(maskTex, q, 0).r;
+  if (mark != ADAPTIVE_MASK_TRACE && mark != ADAPTIVE_MASK_TRACE_HISTORY) return;
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < kSamples; ++i) sum += traceSample(vec2(q) + 0.5 + trace.offsets[i].xy);
+  imageStore(outImage, q, vec4(sum / float(kSamples), 1.0));
+}

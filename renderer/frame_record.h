@@ -25,6 +25,8 @@ struct FrameRecord {
   bool hasReference = false;  // set when the run computes the supersampled ground truth
   Image reference;            // output size, float32 average of reference.samples renders
   std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
+  // Per-frame figures a technique reports (TSCMAA: edge and TAA pixel counts).
+  std::vector<std::pair<std::string, double>> counters;
   glm::ivec2 renderSize{0};
   bool cameraCut = false;
   bool historyReset = false;

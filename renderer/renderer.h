@@ -26,6 +26,9 @@ struct RenderOptions {
   bool captureCurrent = false;
   bool captureIds = false;
   bool captureVelocity = false;
+  // TSCMAA only: read back the CMAA image ("cmaa") and the edge mask ("tscmaa_mask",
+  // TSCMAA_EDGE_* and TSCMAA_TAA bits as floats), both at output size.
+  bool captureTscmaa = false;
 };
 
 class Renderer {

@@ -51,6 +51,7 @@ int cmdRender(const Args& args) {
     nlohmann::json j = {{"frame", r.frame}, {"render_size", {r.renderSize.x, r.renderSize.y}},
                         {"camera_cut", r.cameraCut}, {"history_reset", r.historyReset}};
     for (const auto& [pass, ms] : r.gpuMs) j["gpu_ms"][pass] = ms;
+    for (const auto& [name, value] : r.counters) j["counters"][name] = value;
     if (r.hasImages) {
       const std::string base = frameName(r.frame);
       writeExr(dir / (base + ".exr"), r.color);

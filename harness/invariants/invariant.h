@@ -22,6 +22,8 @@ struct FrameView {
   const Image* current = nullptr;   // the resolve's input colour this frame (render size)
   const Image* ids = nullptr;       // object id, material id, mover flag (render size)
   const Image* velocity = nullptr;  // pixels (render size)
+  const Image* cmaa = nullptr;      // TSCMAA: the CMAA image (output size)
+  const Image* edgeMask = nullptr;  // TSCMAA: TSCMAA_EDGE_* / TSCMAA_TAA bits (output size)
   std::string sha256;               // of the output
 };
 
@@ -31,6 +33,7 @@ struct Needs {
   bool current = false;
   bool ids = false;
   bool velocity = false;
+  bool tscmaa = false;     // the CMAA image and the edge mask
   bool secondRun = false;  // determinism: the runner renders the case again
 };
 

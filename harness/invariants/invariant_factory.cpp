@@ -30,6 +30,9 @@ Needs needsOf(InvariantKind kind) {
       break;
     case InvariantKind::BitStable:
       break;
+    case InvariantKind::TscmaaNonEdge:
+      n.current = n.tscmaa = true;
+      break;
   }
   return n;
 }
@@ -48,6 +51,8 @@ std::string inapplicable(InvariantKind kind, const spec::CaseSpec& spec) {
       return energyInapplicable(spec);
     case InvariantKind::BitStable:
       return bitStableInapplicable(spec);
+    case InvariantKind::TscmaaNonEdge:
+      return tscmaaNonEdgeInapplicable(spec);
     case InvariantKind::Finite:       // meaningful for any output
     case InvariantKind::Determinism:  // likewise
       return "";
@@ -73,6 +78,8 @@ std::unique_ptr<Invariant> makeInvariant(InvariantKind kind, const spec::CaseSpe
       return makeDeterminism(spec);
     case InvariantKind::BitStable:
       return makeBitStable(spec);
+    case InvariantKind::TscmaaNonEdge:
+      return makeTscmaaNonEdge(spec);
   }
   return nullptr;
 }

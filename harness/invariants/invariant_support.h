@@ -27,6 +27,8 @@ std::string energyInapplicable(const spec::CaseSpec& spec);
 std::unique_ptr<Invariant> makeDeterminism(const spec::CaseSpec& spec);
 std::unique_ptr<Invariant> makeBitStable(const spec::CaseSpec& spec);
 std::string bitStableInapplicable(const spec::CaseSpec& spec);
+std::unique_ptr<Invariant> makeTscmaaNonEdge(const spec::CaseSpec& spec);
+std::string tscmaaNonEdgeInapplicable(const spec::CaseSpec& spec);
 
 // Rec. 709 luma of the per-channel Reinhard curve c / (1 + c), the mapping toDisplaySrgb
 // applies before the sRGB transfer (c <= 0 -> 0, +Inf -> 1). It lies in [0, 1), so a few

@@ -49,6 +49,8 @@ invariants::FrameView viewOf(const FrameRecord& r) {
   v.current = findAux(r, "current");
   v.ids = findAux(r, "material_id");
   v.velocity = findAux(r, "velocity");
+  v.cmaa = findAux(r, "cmaa");
+  v.edgeMask = findAux(r, "tscmaa_mask");
   v.sha256 = r.colorSha256;
   return v;
 }
@@ -67,6 +69,7 @@ Plan planChecks(const spec::CaseSpec& spec) {
     p.needs.current |= n.current;
     p.needs.ids |= n.ids;
     p.needs.velocity |= n.velocity;
+    p.needs.tscmaa |= n.tscmaa;
     p.needs.secondRun |= n.secondRun;
     p.invariants.push_back(invariants::makeInvariant(kind, spec));
   }
@@ -83,6 +86,7 @@ void replay(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& sc
   ro.captureCurrent = plan.needs.current;
   ro.captureIds = plan.needs.ids;
   ro.captureVelocity = plan.needs.velocity;
+  ro.captureTscmaa = plan.needs.tscmaa;
   Renderer renderer(ctx, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;

@@ -28,6 +28,7 @@ struct CaseSpec {
   std::vector<MoverSpec> movers;
   JitterSpec jitter;
   TaaSpec taa;
+  TscmaaSpec tscmaa;
   PostSpec post;
   DebugSpec debug;
   OutputSpec output;
@@ -47,6 +48,7 @@ void fields(V& v, CaseSpec& s) {
   v.list("movers", s.movers, Meta{"moving objects", ""});
   v.object("jitter", s.jitter, Meta{"projection jitter sequence", ""});
   v.object("taa", s.taa, Meta{"temporal resolve", ""});
+  v.object("tscmaa", s.tscmaa, Meta{"TSCMAA settings (taa.mode tscmaa)", ""});
   v.object("post", s.post, Meta{"passes around the resolve", ""});
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});

@@ -38,12 +38,22 @@ void fields(V& v, ToleranceSpec& s) {
   v.field("flip_p99", s.flip_p99, Range<float>{0.0f, 1.0f}, Meta{"largest 99th percentile of LDR-FLIP", impl});
 }
 
-enum class InvariantKind { HistoryBounded, NoGhosting, Converges, TemporalStability, Finite, Energy, Determinism, BitStable };
+enum class InvariantKind {
+  HistoryBounded,
+  NoGhosting,
+  Converges,
+  TemporalStability,
+  Finite,
+  Energy,
+  Determinism,
+  BitStable,
+  TscmaaNonEdge
+};
 TAA_ENUM_NAMES(InvariantKind, {InvariantKind::HistoryBounded, "history_bounded"},
                {InvariantKind::NoGhosting, "no_ghosting"}, {InvariantKind::Converges, "converges"},
                {InvariantKind::TemporalStability, "temporal_stability"}, {InvariantKind::Finite, "finite"},
                {InvariantKind::Energy, "energy"}, {InvariantKind::Determinism, "determinism"},
-               {InvariantKind::BitStable, "bit_stable"})
+               {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::TscmaaNonEdge, "tscmaa_non_edge"})
 
 struct NoGhostingSpec {
   int frames = 8;

@@ -65,7 +65,8 @@ std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSp
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 
-std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec, const RenderOptions& o) {
+std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
+                                       const RenderOptions& o) {
   if (spec.taa.mode != spec::TaaMode::Tscmaa) return nullptr;
   return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
 }
@@ -103,15 +104,28 @@ struct Renderer::State {
   int nextFrame = 0;
 
   State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions o)
-      : ctx(c), spec(s), scene(sc), options(o), gpuScene(c, sc), plan(planWithCaptures(s, o)), config(gbufferConfig(s, plan)),
-        targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
-        tscmaa(makeTscmaa(c, s, o)), post(c, s, plan, maxRenderSize(s)),
+      : ctx(c),
+        spec(s),
+        scene(sc),
+        options(o),
+        gpuScene(c, sc),
+        plan(planWithCaptures(s, o)),
+        config(gbufferConfig(s, plan)),
+        targets(c, config),
+        gbuffer(c, gpuScene, config),
+        prev(c, plan, targets),
+        resolve(makeResolve(c, s, plan)),
+        tscmaa(makeTscmaa(c, s, o)),
+        post(c, s, plan, maxRenderSize(s)),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         uniformStride(taa::uniformStride(c)),
-        frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-        instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
-                         sizeof(gpu::InstanceData),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+        frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
+                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+        instances(
+            c,
+            std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
+                sizeof(gpu::InstanceData),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& p : plan.describe()) log.push_back(p);
@@ -121,7 +135,8 @@ struct Renderer::State {
     for (const auto& p : post.describe()) log.push_back(p);
     if (reference)
       log.push_back("pass reference (" + std::to_string(reference->samples()) + " samples at " +
-                    std::to_string(s.render.width) + "x" + std::to_string(s.render.height) + " per eye)");
+                    std::to_string(s.render.width) + "x" + std::to_string(s.render.height) +
+                    " per eye)");
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
     if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
@@ -156,13 +171,15 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   vk::Image* resolveInput = nullptr;
   // Stereo renders the G-buffer once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
-    const script::FrameState eyeState = eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
+    const script::FrameState eyeState =
+        eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
     const gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
     const VkDeviceSize slot = s.uniformStride * VkDeviceSize(eye);
-    std::memcpy(static_cast<uint8_t*>(s.frameUniforms.mapped()) + slot, &uniforms, sizeof(uniforms));
+    std::memcpy(static_cast<uint8_t*>(s.frameUniforms.mapped()) + slot, &uniforms,
+                sizeof(uniforms));
     s.timer.begin(cmd, eye ? "gbuffer.eye" + std::to_string(eye) : "gbuffer");
-    s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), slot, s.instances.handle(), state.renderSize,
-                     lodBias);
+    s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), slot, s.instances.handle(),
+                     state.renderSize, lodBias);
     s.timer.end(cmd);
     resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
     if (s.tscmaa) s.tscmaa->record(cmd, &s.timer, eyeState, eye, *resolveInput, s.targets.depth);

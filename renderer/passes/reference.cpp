@@ -68,12 +68,12 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
   vkGetPhysicalDeviceProperties(ctx.physical(), &props);
   const VkDeviceSize align = props.limits.minUniformBufferOffsetAlignment;
   stride_ = (sizeof(gpu::FrameUniforms) + align - 1) / align * align;
-  uniforms_ = vk::Buffer(ctx, stride_ * offsets_.size() * size_t(eyeCount(spec)), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                         true);
+  uniforms_ = vk::Buffer(ctx, stride_ * offsets_.size() * size_t(eyeCount(spec)),
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 }
 
-void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
-                           VkBuffer instances, int eye) {
+void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
+                           const DrawList& draws, VkBuffer instances, int eye) {
   const glm::ivec2 size(spec_.render.width, spec_.render.height);
   // The same instant as the frame, without the frame's jitter and at output size.
   script::FrameState sub = state;
@@ -86,7 +86,8 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
     std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + (first + i) * stride_, &u, sizeof(u));
   }
   for (size_t i = 0; i < offsets_.size(); ++i) {
-    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances, size, 0.0f);
+    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances,
+                    size, 0.0f);
     targets_.color.use(cmd, vk::Use::SampledCompute);
     accum_.use(cmd, vk::Use::StorageWrite);
     accumulate_.bind(cmd);

@@ -26,8 +26,8 @@ class ReferencePass {
 
   // Records every sub-sample render and the average for this frame, seen from `eye`
   // (stereo TSCMAA: each eye fills its half of the side-by-side output).
-  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws, VkBuffer instances,
-              int eye = 0);
+  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
+              VkBuffer instances, int eye = 0);
   vk::Image& output() { return accum_; }
   int samples() const { return int(offsets_.size()); }
 

@@ -51,9 +51,11 @@ enum class InvariantKind {
 };
 TAA_ENUM_NAMES(InvariantKind, {InvariantKind::HistoryBounded, "history_bounded"},
                {InvariantKind::NoGhosting, "no_ghosting"}, {InvariantKind::Converges, "converges"},
-               {InvariantKind::TemporalStability, "temporal_stability"}, {InvariantKind::Finite, "finite"},
-               {InvariantKind::Energy, "energy"}, {InvariantKind::Determinism, "determinism"},
-               {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::TscmaaNonEdge, "tscmaa_non_edge"})
+               {InvariantKind::TemporalStability, "temporal_stability"},
+               {InvariantKind::Finite, "finite"}, {InvariantKind::Energy, "energy"},
+               {InvariantKind::Determinism, "determinism"},
+               {InvariantKind::BitStable, "bit_stable"},
+               {InvariantKind::TscmaaNonEdge, "tscmaa_non_edge"})
 
 struct NoGhostingSpec {
   int frames = 8;

@@ -173,12 +173,14 @@ void fields(V& v, TscmaaSpec& s) {
           Meta{"an edge loses this many times the amount by which the strongest edge touching it "
                "is stronger, before the threshold test (0 keeps every edge over the threshold)",
                edges});
-  v.field("blurriness", s.blurriness, Range<float>{0.0f, 4.0f},
-          Meta{"weight of the neighbours in the simple-shape blend of pixels with 2 to 4 edges (not "
-               "edge detection)",
-               "shaders/tscmaa/simple_shape.glsl"});
-  v.field("taa_share", s.taa_share, Range<float>{0.0f, 1.0f},
-          Meta{"share of edge pixels that also get TAA, chosen by a fixed hash of the pixel", edges});
+  v.field(
+      "blurriness", s.blurriness, Range<float>{0.0f, 4.0f},
+      Meta{"weight of the neighbours in the simple-shape blend of pixels with 2 to 4 edges (not "
+           "edge detection)",
+           "shaders/tscmaa/simple_shape.glsl"});
+  v.field(
+      "taa_share", s.taa_share, Range<float>{0.0f, 1.0f},
+      Meta{"share of edge pixels that also get TAA, chosen by a fixed hash of the pixel", edges});
   v.field("history_weight", s.history_weight, Range<float>{0.0f, 1.0f},
           Meta{"weight of the rectified history in the TAA blend of TAA edge pixels",
                "shaders/tscmaa_taa.comp"});

@@ -150,15 +150,15 @@ TAA_BLOCK(PostPush) {
 // mask and CMAA images hold both eyes side by side (eye-local pixel + eye offset); the
 // history is per eye.
 #define TSCMAA_BINDING_UNIFORMS 0
-#define TSCMAA_BINDING_COLOR 1        // the eye's colour, nearest sampler
-#define TSCMAA_BINDING_MASK 2         // r32ui storage: TSCMAA_EDGE_* bits per pixel
-#define TSCMAA_BINDING_EDGE_LIST 3    // storage buffer: every edge pixel
-#define TSCMAA_BINDING_TAA_LIST 4     // storage buffer: the TAA share of them
-#define TSCMAA_BINDING_CMAA 5         // CMAA result: storage (cmaa pass), sampled (taa pass)
-#define TSCMAA_BINDING_TAA_UNIFORMS 6 // TaaUniforms of the eye (taa pass)
-#define TSCMAA_BINDING_DEPTH 7        // the eye's depth (taa pass)
-#define TSCMAA_BINDING_HISTORY 8      // the eye's previous output, linear sampler (taa pass)
-#define TSCMAA_BINDING_HISTORY_OUT 9  // the eye's new output (taa pass)
+#define TSCMAA_BINDING_COLOR 1         // the eye's colour, nearest sampler
+#define TSCMAA_BINDING_MASK 2          // r32ui storage: TSCMAA_EDGE_* bits per pixel
+#define TSCMAA_BINDING_EDGE_LIST 3     // storage buffer: every edge pixel
+#define TSCMAA_BINDING_TAA_LIST 4      // storage buffer: the TAA share of them
+#define TSCMAA_BINDING_CMAA 5          // CMAA result: storage (cmaa pass), sampled (taa pass)
+#define TSCMAA_BINDING_TAA_UNIFORMS 6  // TaaUniforms of the eye (taa pass)
+#define TSCMAA_BINDING_DEPTH 7         // the eye's depth (taa pass)
+#define TSCMAA_BINDING_HISTORY 8       // the eye's previous output, linear sampler (taa pass)
+#define TSCMAA_BINDING_HISTORY_OUT 9   // the eye's new output (taa pass)
 #define TSCMAA_BINDING_COUNT 10
 
 // Mask bits: an edge on each side of the pixel, and membership of the TAA share.

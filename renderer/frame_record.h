@@ -26,7 +26,8 @@ struct FrameRecord {
   Image reference;            // output size, float32 average of reference.samples renders
   std::vector<std::pair<std::string, double>> gpuMs;  // per pass, from timestamp queries
   // Per-frame figures a pass reports, read back every frame (adaptive mode:
-  // "traced_share" and "fxaa_share", fractions of the output's pixels).
+  // "traced_share" and "fxaa_share", fractions of the output's pixels; TSCMAA:
+  // "tscmaa_edges" and "tscmaa_taa_pixels", pixel counts).
   std::vector<std::pair<std::string, double>> stats;
   glm::ivec2 renderSize{0};
   bool cameraCut = false;

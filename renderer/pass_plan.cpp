@@ -15,6 +15,7 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   PassPlan p;
   const auto& t = s.taa;
   p.taa = t.mode != TaaMode::Off;
+  p.tscmaa = t.mode == TaaMode::Tscmaa;
   const bool accumulate = t.mode == TaaMode::Accumulate;
   const bool full = t.mode == TaaMode::Full || t.mode == TaaMode::Adaptive || accumulate;
   const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
@@ -43,8 +44,14 @@ std::vector<std::string> PassPlan::describe() const {
   std::vector<std::string> out;
   out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
-  if (taa) out.push_back("pass taa_resolve");
-  if (adaptive) out.push_back("pass adaptive (segmentation, trace, masked fxaa)");
+  if (tscmaa) {
+    out.push_back("pass tscmaa_edges");
+    out.push_back("pass tscmaa_cmaa (indirect over the edge list)");
+    out.push_back("pass tscmaa_taa (indirect over the TAA list)");
+  } else if (taa) {
+    out.push_back("pass taa_resolve");
+    if (adaptive) out.push_back("pass adaptive (segmentation, trace, masked fxaa)");
+  }
   // The post chain lists its own passes with their settings.
   return out;
 }

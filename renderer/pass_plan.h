@@ -17,6 +17,7 @@ struct PassPlan {
   bool deferred = false;
   // Temporal resolve and the previous frame's G-buffer it reads.
   bool taa = false;
+  bool tscmaa = false;  // the TSCMAA passes replace the resolve
   bool prevDepth = false;
   bool prevNormal = false;
   bool prevIds = false;

@@ -7,6 +7,7 @@
 #include "passes/motion_blur.h"
 #include "passes/post_filter.h"
 #include "passes/sharpen.h"
+#include "stereo.h"
 
 namespace taa {
 
@@ -44,8 +45,7 @@ PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPla
   }
   // After the resolve the input is its output (output size); without a resolve it is
   // the render-size colour, allocated at the largest render size.
-  const glm::ivec2 afterSize =
-      plan.taa ? glm::ivec2(spec.render.width, spec.render.height) : maxRenderSize;
+  const glm::ivec2 afterSize = plan.taa ? outputSize(spec) : maxRenderSize;
   if (plan.sharpen) p_->sharpen = std::make_unique<SharpenPass>(ctx, post.sharpen_amount);
   if (plan.cas) p_->cas = std::make_unique<CasPass>(ctx, post.sharpen_amount);
   if (plan.sharpen || plan.cas)

@@ -5,6 +5,7 @@
 
 #include "core/image_io.h"
 #include "draw_list.h"
+#include "frame_readback.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "pass_plan.h"
@@ -13,10 +14,12 @@
 #include "passes/inject.h"
 #include "passes/reference.h"
 #include "passes/taa_resolve.h"
+#include "passes/tscmaa.h"
 #include "post_chain.h"
 #include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
+#include "stereo.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
@@ -25,10 +28,6 @@
 namespace taa {
 
 namespace {
-
-bool wants(const spec::CaseSpec& spec, spec::AuxBuffer b) {
-  return std::find(spec.output.aux.begin(), spec.output.aux.end(), b) != spec.output.aux.end();
-}
 
 // The largest render size over the run: targets are allocated once at this size and
 // dynamic-resolution frames draw into their top-left corner.
@@ -61,10 +60,24 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!plan.taa) return nullptr;
-  if (spec.taa.mode == spec::TaaMode::Tscmaa)
+  if (spec.taa.mode == spec::TaaMode::Tscmaa) return nullptr;  // TscmaaPass replaces the resolve
     throw vk::EnvironmentError(std::string("taa.mode ") + spec::enumToString(spec.taa.mode) +
                                " is not built into this renderer yet");
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
+}
+
+std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
+                                       const RenderOptions& o) {
+  if (spec.taa.mode != spec::TaaMode::Tscmaa) return nullptr;
+  return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
+}
+
+// One FrameUniforms slot per eye, at the device's uniform offset alignment.
+VkDeviceSize uniformStride(vk::Context& ctx) {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(ctx.physical(), &props);
+  const VkDeviceSize align = props.limits.minUniformBufferOffsetAlignment;
+  return (sizeof(gpu::FrameUniforms) + align - 1) / align * align;
 }
 
 }  // namespace
@@ -82,40 +95,59 @@ struct Renderer::State {
   PrevGBuffer prev;
   std::unique_ptr<TaaResolvePass> resolve;
   std::unique_ptr<AdaptivePass> adaptive;
+  std::unique_ptr<TscmaaPass> tscmaa;
   PostChain post;
   std::unique_ptr<ReferencePass> reference;
   std::unique_ptr<InjectPass> inject;
-  vk::Buffer frameUniforms;
+  VkDeviceSize uniformStride;
+  vk::Buffer frameUniforms;  // one slot per eye
   vk::Buffer instances;
   vk::GpuTimer timer;
   std::vector<std::string> log;
   int nextFrame = 0;
 
   State(vk::Context& c, const spec::CaseSpec& s, const scene::Scene& sc, RenderOptions o)
-      : ctx(c), spec(s), scene(sc), options(o), gpuScene(c, sc), plan(planWithCaptures(s, o)), config(gbufferConfig(s, plan)),
-        targets(c, config), gbuffer(c, gpuScene, config), prev(c, plan, targets), resolve(makeResolve(c, s, plan)),
+      : ctx(c),
+        spec(s),
+        scene(sc),
+        options(o),
+        gpuScene(c, sc),
+        plan(planWithCaptures(s, o)),
+        config(gbufferConfig(s, plan)),
+        targets(c, config),
+        gbuffer(c, gpuScene, config),
+        prev(c, plan, targets),
+        resolve(makeResolve(c, s, plan)),
         adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(c, s, gpuScene,
                                                                 buildDrawList(sc, script::frameState(s, 0)),
                                                                 o.captureAdaptive)
                                : nullptr),
+        tscmaa(makeTscmaa(c, s, o)),
         post(c, s, plan, maxRenderSize(s)),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
-        frameUniforms(c, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-        instances(c, std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
-                         sizeof(gpu::InstanceData),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+        uniformStride(taa::uniformStride(c)),
+        frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
+                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+        instances(
+            c,
+            std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
+                sizeof(gpu::InstanceData),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
     if (adaptive)
       for (const auto& p : adaptive->describe()) log.push_back(p);
+    if (tscmaa)
+      for (const auto& line : tscmaa->describe()) log.push_back(line);
     for (const auto& p : post.describe()) log.push_back(p);
     if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
       log.push_back("pass reference (" + std::to_string(reference->samples()) + " samples at " +
-                    std::to_string(s.render.width) + "x" + std::to_string(s.render.height) + ")");
+                    std::to_string(s.render.width) + "x" + std::to_string(s.render.height) +
+                    " per eye)");
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
     if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
@@ -140,25 +172,38 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   ++s.nextFrame;
   const script::FrameState state = script::frameState(s.spec, frame);
   const DrawList draws = buildDrawList(s.scene, state);
-  const gpu::FrameUniforms uniforms = makeFrameUniforms(state, s.spec.lighting);
-  std::memcpy(s.frameUniforms.mapped(), &uniforms, sizeof(uniforms));
   std::memcpy(s.instances.mapped(), draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+  const int eyes = eyeCount(s.spec);
 
   const bool lodBiasApplies = !s.spec.material.lod_bias_taa_only || s.plan.taa;
   const float lodBias = lodBiasApplies ? s.spec.material.lod_bias : 0.0f;
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
-  s.timer.begin(cmd, "gbuffer");
-  s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), 0, s.instances.handle(), state.renderSize,
-                   lodBias);
-  s.timer.end(cmd);
-  if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
-  vk::Image& resolveInput = s.post.beforeResolve(cmd, s.timer, state, s.targets);
-  vk::Image* output = &resolveInput;
-  glm::ivec2 outputSize = state.renderSize;
-  if (s.resolve) {
+  vk::Image* resolveInput = nullptr;
+  // Stereo renders the G-buffer once per eye; everything else has one eye.
+  for (int eye = 0; eye < eyes; ++eye) {
+    const script::FrameState eyeState =
+        eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
+    const gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
+    const VkDeviceSize slot = s.uniformStride * VkDeviceSize(eye);
+    std::memcpy(static_cast<uint8_t*>(s.frameUniforms.mapped()) + slot, &uniforms,
+                sizeof(uniforms));
+    s.timer.begin(cmd, eye ? "gbuffer.eye" + std::to_string(eye) : "gbuffer");
+    s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), slot, s.instances.handle(),
+                     state.renderSize, lodBias);
+    s.timer.end(cmd);
+    if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
+    resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
+    if (s.tscmaa) s.tscmaa->record(cmd, &s.timer, eyeState, eye, *resolveInput, s.targets.depth);
+  }
+  vk::Image* output = resolveInput;
+  glm::ivec2 outSize = state.renderSize;
+  if (s.tscmaa) {
+    output = &s.tscmaa->output();
+    outSize = outputSize(s.spec);
+  } else if (s.resolve) {
     TaaInputs in;
-    in.color = &resolveInput;
+    in.color = resolveInput;
     in.depth = &s.targets.depth;
     in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
     in.ids = s.targets.ids ? &s.targets.ids : nullptr;
@@ -171,21 +216,23 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.resolve->record(cmd, state, in);
     s.timer.end(cmd);
     output = &s.resolve->output();
-    outputSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
+    outSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
     if (s.adaptive) {
-      const SegmentationInputs seg{&resolveInput, &s.targets.depth, &s.targets.normal, &s.targets.ids,
+      const SegmentationInputs seg{resolveInput, &s.targets.depth, &s.targets.normal, &s.targets.ids,
                                    s.resolve->rejection(), nullptr};
       const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
       output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
     }
     s.prev.capture(cmd, s.targets);
   }
-  output = &s.post.afterResolve(cmd, s.timer, state, *output, outputSize);
+  output = &s.post.afterResolve(cmd, s.timer, state, *output, outSize);
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
   if (s.reference && readImages) {
     s.timer.begin(cmd, "reference");
-    s.reference->record(cmd, state, draws, s.instances.handle());
+    for (int eye = 0; eye < eyes; ++eye)
+      s.reference->record(cmd, eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), draws,
+                          s.instances.handle(), eye);
     s.timer.end(cmd);
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
@@ -199,32 +246,19 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.cameraCut = state.cameraCut;
   record.historyReset = state.resetHistory;
   record.gpuMs = s.timer.read();
+  if (s.tscmaa) record.stats = tscmaaCounters(s.tscmaa->counts());
   if (s.adaptive) record.stats = s.adaptive->stats();
   if (readImages) {
-    const int w = state.renderSize.x, h = state.renderSize.y, tw = int(s.config.width);
-    auto read = [&](vk::Image& img) {
-      return decodeTarget(vk::readImage(s.ctx, img), img.desc().format, tw, w, h);
-    };
-    record.hasImages = true;
-    record.color = decodeTarget(vk::readImage(s.ctx, *output), output->desc().format, int(output->desc().width),
-                                outputSize.x, outputSize.y);
-    record.colorSha256 = pixelSha256(record.color);
-    if (s.reference) {
-      vk::Image& ref = s.reference->output();
-      const int rw = int(ref.desc().width), rh = int(ref.desc().height);
-      record.reference = decodeTarget(vk::readImage(s.ctx, ref), ref.desc().format, rw, rw, rh);
-      record.hasReference = true;
-    }
-    const auto& o = s.options;
-    if (wants(s.spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(s.targets.depth)});
-    if (wants(s.spec, spec::AuxBuffer::Velocity) || o.captureVelocity)
-      record.aux.push_back({"velocity", read(s.targets.velocity)});
-    if (wants(s.spec, spec::AuxBuffer::Normal)) record.aux.push_back({"normal", read(s.targets.normal)});
-    if (wants(s.spec, spec::AuxBuffer::MaterialId) || o.captureIds)
-      record.aux.push_back({"material_id", read(s.targets.ids)});
-    if (o.captureCurrent) record.aux.push_back({"current", read(resolveInput)});
-    if (s.adaptive)
-      for (auto& c : s.adaptive->readCaptures(state.renderSize)) record.aux.push_back(std::move(c));
+    FrameSources src;
+    src.output = output;
+    src.outputSize = outSize;
+    src.renderSize = state.renderSize;
+    src.resolveInput = resolveInput;
+    src.targets = &s.targets;
+    src.tscmaa = s.tscmaa.get();
+    src.reference = s.reference.get();
+    src.adaptive = s.adaptive.get();
+    readFrameImages(s.ctx, s.spec, s.options, src, record);
   }
   return record;
 }

@@ -29,6 +29,9 @@ struct RenderOptions {
   // Adaptive mode: read back the resolve's output before tracing ("taa_resolve") and
   // the segmentation mask ("segmentation").
   bool captureAdaptive = false;
+  // TSCMAA only: read back the CMAA image ("cmaa") and the edge mask ("tscmaa_mask",
+  // TSCMAA_EDGE_* and TSCMAA_TAA bits as floats), both at output size.
+  bool captureTscmaa = false;
 };
 
 class Renderer {

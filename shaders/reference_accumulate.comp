@@ -8,12 +8,14 @@ layout(push_constant) uniform Push {
   ivec2 size;
   uint mode;       // bit 0: add to the accumulator (not the first sample); bit 1: divide (last)
   float invCount;
+  int offsetX;     // the eye's half of a side-by-side (stereo) accumulator
 };
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, size))) return;
   vec4 c = vec4(texelFetch(colorTex, p, 0).rgb, 1.0);
-  vec4 sum = (mode & 1u) != 0u ? imageLoad(accum, p) + c : c;
-  imageStore(accum, p, (mode & 2u) != 0u ? sum * invCount : sum);
+  ivec2 a = p + ivec2(offsetX, 0);
+  vec4 sum = (mode & 1u) != 0u ? imageLoad(accum, a) + c : c;
+  imageStore(accum, a, (mode & 2u) != 0u ? sum * invCount : sum);
 }

@@ -48,6 +48,24 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
                  "remove the key or trace_all");
 }
 
+// TSCMAA's keys mean nothing to the other modes; stereo output holds two eyes side by
+// side, which the per-eye G-buffer captures cannot describe.
+void tscmaaRules(Rules& r, const CaseSpec& s) {
+  const bool tscmaa = s.taa.mode == TaaMode::Tscmaa;
+  for (const char* key :
+       {"tscmaa.edge_threshold", "tscmaa.non_dominant_edge_removal", "tscmaa.blurriness",
+        "tscmaa.taa_share", "tscmaa.history_weight", "tscmaa.eyes", "tscmaa.eye_separation"})
+    r.needs(key, tscmaa, "taa.mode is tscmaa");
+  if (!tscmaa) return;
+  r.needs("tscmaa.eye_separation", s.tscmaa.eyes == 2, "tscmaa.eyes is 2");
+  if (r.set("taa.history_format"))
+    r.add("taa.history_format", "TSCMAA's history is its RGBA16F output; remove the key");
+  if (s.tscmaa.eyes == 2 && !s.output.aux.empty())
+    r.add("output.aux",
+          "tscmaa.eyes 2 renders the G-buffer once per eye and writes the eyes side by side; the "
+          "aux buffers exist per eye only: remove output.aux or render one eye");
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, const std::set<std::string>& present) {
@@ -57,9 +75,11 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, 
   const bool accumulate = t.mode == TaaMode::Accumulate;
   const bool blends = t.mode == TaaMode::Basic || full || accumulate;
   const bool resamples = s.render.upsample != 1.0f || !s.render.scale_schedule.empty();
-  if (resamples && (t.mode == TaaMode::Off || t.mode == TaaMode::PassThrough))
+  if (resamples &&
+      (t.mode == TaaMode::Off || t.mode == TaaMode::PassThrough || t.mode == TaaMode::Tscmaa))
     r.add("taa.mode", std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
                                   "output size; '") + enumToString(t.mode) + "' cannot: use basic or full");
+  tscmaaRules(r, s);
 
   adaptiveRules(r, s, resamples);
   r.needs("taa.alpha", blends, "taa.mode is basic or full");

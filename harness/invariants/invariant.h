@@ -24,6 +24,8 @@ struct FrameView {
   const Image* velocity = nullptr;  // pixels (render size)
   const Image* resolved = nullptr;      // adaptive mode: the resolve's output before tracing
   const Image* segmentation = nullptr;  // adaptive mode: ADAPTIVE_MASK_* per pixel
+  const Image* cmaa = nullptr;      // TSCMAA: the CMAA image (output size)
+  const Image* edgeMask = nullptr;  // TSCMAA: TSCMAA_EDGE_* / TSCMAA_TAA bits (output size)
   std::string sha256;               // of the output
 };
 
@@ -33,6 +35,7 @@ struct Needs {
   bool current = false;
   bool ids = false;
   bool velocity = false;
+  bool tscmaa = false;     // the CMAA image and the edge mask
   bool secondRun = false;  // determinism: the runner renders the case again
   bool adaptive = false;   // the resolve's output before tracing and the segmentation mask
 };

@@ -36,6 +36,9 @@ Needs needsOf(InvariantKind kind) {
     case InvariantKind::AdaptiveUnmarked:
       n.adaptive = true;
       break;
+    case InvariantKind::TscmaaNonEdge:
+      n.current = n.tscmaa = true;
+      break;
   }
   return n;
 }
@@ -58,6 +61,8 @@ std::string inapplicable(InvariantKind kind, const spec::CaseSpec& spec) {
       return matchesInputInapplicable(spec);
     case InvariantKind::AdaptiveUnmarked:
       return adaptiveUnmarkedInapplicable(spec);
+    case InvariantKind::TscmaaNonEdge:
+      return tscmaaNonEdgeInapplicable(spec);
     case InvariantKind::Finite:       // meaningful for any output
     case InvariantKind::Determinism:  // likewise
       return "";
@@ -87,6 +92,8 @@ std::unique_ptr<Invariant> makeInvariant(InvariantKind kind, const spec::CaseSpe
       return makeMatchesInput(spec);
     case InvariantKind::AdaptiveUnmarked:
       return makeAdaptiveUnmarked(spec);
+    case InvariantKind::TscmaaNonEdge:
+      return makeTscmaaNonEdge(spec);
   }
   return nullptr;
 }

@@ -50,6 +50,10 @@ std::string renderSizeReason(const std::string& name, const CaseSpec& spec) {
     return name +
            " compares pixels of render-size buffers with the output, but render.upsample is " +
            num(spec.render.upsample) + fix;
+  if (spec.taa.mode == TaaMode::Tscmaa && spec.tscmaa.eyes == 2)
+    return name +
+           " compares pixels of render-size buffers with the output, but tscmaa.eyes 2 puts two "
+           "eyes side by side; remove it from checks.invariants or render one eye";
   if (!spec.render.scale_schedule.empty())
     return name +
            " compares pixels of render-size buffers with the output, but render.scale_schedule "

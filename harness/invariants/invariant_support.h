@@ -31,6 +31,8 @@ std::unique_ptr<Invariant> makeMatchesInput(const spec::CaseSpec& spec);
 std::string matchesInputInapplicable(const spec::CaseSpec& spec);
 std::unique_ptr<Invariant> makeAdaptiveUnmarked(const spec::CaseSpec& spec);
 std::string adaptiveUnmarkedInapplicable(const spec::CaseSpec& spec);
+std::unique_ptr<Invariant> makeTscmaaNonEdge(const spec::CaseSpec& spec);
+std::string tscmaaNonEdgeInapplicable(const spec::CaseSpec& spec);
 
 // Rec. 709 luma of the per-channel Reinhard curve c / (1 + c), the mapping toDisplaySrgb
 // applies before the sRGB transfer (c <= 0 -> 0, +Inf -> 1). It lies in [0, 1), so a few

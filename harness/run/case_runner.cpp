@@ -51,6 +51,8 @@ invariants::FrameView viewOf(const FrameRecord& r) {
   v.velocity = findAux(r, "velocity");
   v.resolved = findAux(r, "taa_resolve");
   v.segmentation = findAux(r, "segmentation");
+  v.cmaa = findAux(r, "cmaa");
+  v.edgeMask = findAux(r, "tscmaa_mask");
   v.sha256 = r.colorSha256;
   return v;
 }
@@ -69,6 +71,7 @@ Plan planChecks(const spec::CaseSpec& spec) {
     p.needs.current |= n.current;
     p.needs.ids |= n.ids;
     p.needs.velocity |= n.velocity;
+    p.needs.tscmaa |= n.tscmaa;
     p.needs.secondRun |= n.secondRun;
     p.needs.adaptive |= n.adaptive;
     p.invariants.push_back(invariants::makeInvariant(kind, spec));
@@ -87,6 +90,7 @@ void replay(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& sc
   ro.captureIds = plan.needs.ids;
   ro.captureVelocity = plan.needs.velocity;
   ro.captureAdaptive = plan.needs.adaptive;
+  ro.captureTscmaa = plan.needs.tscmaa;
   Renderer renderer(ctx, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;

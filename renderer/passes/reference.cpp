@@ -5,6 +5,7 @@
 
 #include "frame_uniforms.h"
 #include "script/jitter.h"
+#include "stereo.h"
 #include "vk/context.h"
 
 namespace taa {
@@ -31,6 +32,7 @@ struct AccumulatePush {
   int32_t width, height;
   uint32_t mode;
   float invCount;
+  int32_t offsetX;  // of the eye's half in the accumulator
 };
 
 }  // namespace
@@ -57,7 +59,7 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   vk::ImageDesc d;
   d.name = "reference";
-  d.width = config_.width;
+  d.width = config_.width * uint32_t(eyeCount(spec));
   d.height = config_.height;
   d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
   d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -66,23 +68,26 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
   vkGetPhysicalDeviceProperties(ctx.physical(), &props);
   const VkDeviceSize align = props.limits.minUniformBufferOffsetAlignment;
   stride_ = (sizeof(gpu::FrameUniforms) + align - 1) / align * align;
-  uniforms_ = vk::Buffer(ctx, stride_ * offsets_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+  uniforms_ = vk::Buffer(ctx, stride_ * offsets_.size() * size_t(eyeCount(spec)),
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 }
 
-void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
-                           VkBuffer instances) {
+void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
+                           const DrawList& draws, VkBuffer instances, int eye) {
   const glm::ivec2 size(spec_.render.width, spec_.render.height);
   // The same instant as the frame, without the frame's jitter and at output size.
   script::FrameState sub = state;
   sub.renderSize = size;
+  const size_t first = size_t(eye) * offsets_.size();
   for (size_t i = 0; i < offsets_.size(); ++i) {
     sub.jitter = offsets_[i];
     sub.jitteredProjection = script::applyJitter(state.camera.projection, offsets_[i], size);
     const gpu::FrameUniforms u = makeFrameUniforms(sub, spec_.lighting);
-    std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + i * stride_, &u, sizeof(u));
+    std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + (first + i) * stride_, &u, sizeof(u));
   }
   for (size_t i = 0; i < offsets_.size(); ++i) {
-    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), i * stride_, instances, size, 0.0f);
+    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances,
+                    size, 0.0f);
     targets_.color.use(cmd, vk::Use::SampledCompute);
     accum_.use(cmd, vk::Use::StorageWrite);
     accumulate_.bind(cmd);
@@ -91,7 +96,7 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
         .storage(1, accum_.view())
         .push(ctx_, cmd, accumulate_);
     const uint32_t mode = (i > 0 ? 1u : 0u) | (i + 1 == offsets_.size() ? 2u : 0u);
-    const AccumulatePush push{size.x, size.y, mode, 1.0f / float(offsets_.size())};
+    const AccumulatePush push{size.x, size.y, mode, 1.0f / float(offsets_.size()), eye * size.x};
     vkCmdPushConstants(cmd, accumulate_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
     vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
   }

@@ -24,8 +24,10 @@ class ReferencePass {
  public:
   ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene);
 
-  // Records every sub-sample render and the average for this frame.
-  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws, VkBuffer instances);
+  // Records every sub-sample render and the average for this frame, seen from `eye`
+  // (stereo TSCMAA: each eye fills its half of the side-by-side output).
+  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
+              VkBuffer instances, int eye = 0);
   vk::Image& output() { return accum_; }
   int samples() const { return int(offsets_.size()); }
 
@@ -38,7 +40,7 @@ class ReferencePass {
   GBufferPass gbuffer_;
   vk::Pipeline accumulate_;
   vk::Image accum_;
-  vk::Buffer uniforms_;  // one FrameUniforms block per sub-sample
+  vk::Buffer uniforms_;  // one FrameUniforms block per sub-sample and eye
   VkDeviceSize stride_ = 0;
   vk::Sampler point_;
 };

@@ -35,6 +35,7 @@ struct CaseSpec {
   JitterSpec jitter;
   TaaSpec taa;
   AdaptiveSpec adaptive;
+  TscmaaSpec tscmaa;
   PostSpec post;
   DebugSpec debug;
   OutputSpec output;
@@ -60,6 +61,7 @@ void fields(V& v, CaseSpec& s) {
   v.object("jitter", s.jitter, Meta{"projection jitter sequence", ""});
   v.object("taa", s.taa, Meta{"temporal resolve", ""});
   v.object("adaptive", s.adaptive, Meta{"adaptive ray tracing (taa.mode adaptive)", ""});
+  v.object("tscmaa", s.tscmaa, Meta{"TSCMAA settings (taa.mode tscmaa)", ""});
   v.object("post", s.post, Meta{"passes around the resolve", ""});
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});

@@ -48,14 +48,16 @@ enum class InvariantKind {
   Determinism,
   BitStable,
   MatchesInput,
-  AdaptiveUnmarked
+  AdaptiveUnmarked,
+  TscmaaNonEdge
 };
 TAA_ENUM_NAMES(InvariantKind, {InvariantKind::HistoryBounded, "history_bounded"},
                {InvariantKind::NoGhosting, "no_ghosting"}, {InvariantKind::Converges, "converges"},
                {InvariantKind::TemporalStability, "temporal_stability"}, {InvariantKind::Finite, "finite"},
                {InvariantKind::Energy, "energy"}, {InvariantKind::Determinism, "determinism"},
                {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::MatchesInput, "matches_input"},
-               {InvariantKind::AdaptiveUnmarked, "adaptive_unmarked"})
+               {InvariantKind::AdaptiveUnmarked, "adaptive_unmarked"},
+               {InvariantKind::TscmaaNonEdge, "tscmaa_non_edge"})
 
 struct NoGhostingSpec {
   int frames = 8;

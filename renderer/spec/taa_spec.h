@@ -198,6 +198,49 @@ void fields(V& v, AdaptiveSpec& s) {
   v.field("trace_all", s.trace_all, Meta{"debug: trace every pixel", seg});
 }
 
+// TSCMAA (taa.mode tscmaa): CMAA on the edge pixels of a luma edge detection, then TAA
+// on a share of them; the knobs follow the seed's SetEdgeThresholds.
+struct TscmaaSpec {
+  float edge_threshold = 1.0f / 22.0f;
+  float non_dominant_edge_removal = 0.5f;
+  float blurriness = 0.7f;
+  float taa_share = 0.5f;
+  float history_weight = 0.8f;
+  int eyes = 1;
+  float eye_separation = 0.064f;
+};
+
+template <class V>
+void fields(V& v, TscmaaSpec& s) {
+  const char* edges = "shaders/tscmaa/edge_rules.glsl";
+  v.field("edge_threshold", s.edge_threshold, Range<float>{0.0f, 1.0f},
+          Meta{"smallest perceptual-luma difference (sqrt of Y/(1+Y)) that makes an edge; the seed "
+               "recommends 1/32 .. 1",
+               edges});
+  v.field("non_dominant_edge_removal", s.non_dominant_edge_removal, Range<float>{0.0f, 8.0f},
+          Meta{"an edge loses this many times the amount by which the strongest edge touching it "
+               "is stronger, before the threshold test (0 keeps every edge over the threshold)",
+               edges});
+  v.field(
+      "blurriness", s.blurriness, Range<float>{0.0f, 4.0f},
+      Meta{"weight of the neighbours in the simple-shape blend of pixels with 2 to 4 edges (not "
+           "edge detection)",
+           "shaders/tscmaa/simple_shape.glsl"});
+  v.field(
+      "taa_share", s.taa_share, Range<float>{0.0f, 1.0f},
+      Meta{"share of edge pixels that also get TAA, chosen by a fixed hash of the pixel", edges});
+  v.field("history_weight", s.history_weight, Range<float>{0.0f, 1.0f},
+          Meta{"weight of the rectified history in the TAA blend of TAA edge pixels",
+               "shaders/tscmaa_taa.comp"});
+  v.field("eyes", s.eyes, Range<int>{1, 2},
+          Meta{"1, or 2 for stereo: both eyes side by side, output width = 2 x render.width",
+               "renderer/passes/tscmaa.cpp"});
+  v.field("eye_separation", s.eye_separation, Range<float>{0.0f, 100.0f},
+          Meta{"distance between the eyes in world units; each eye sits half of it along the "
+               "camera's right axis",
+               "renderer/stereo.cpp"});
+}
+
 enum class Sharpen { None, Gradient, Cas };
 TAA_ENUM_NAMES(Sharpen, {Sharpen::None, "none"}, {Sharpen::Gradient, "gradient"}, {Sharpen::Cas, "cas"})
 

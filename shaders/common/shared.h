@@ -262,6 +262,49 @@ TAA_BLOCK(TraceUniforms) {
   vec4 offsets[TRACE_MAX_SAMPLES];  // xy: sub-pixel sample positions, pixels from the centre
 };
 
+// ---- TSCMAA (tscmaa_edges.comp, tscmaa_cmaa.comp, tscmaa_taa.comp, shaders/tscmaa/) ----
+// One eye at a time: colour and depth are the eye's G-buffer (eye-local pixels); the
+// mask and CMAA images hold both eyes side by side (eye-local pixel + eye offset); the
+// history is per eye.
+#define TSCMAA_BINDING_UNIFORMS 0
+#define TSCMAA_BINDING_COLOR 1         // the eye's colour, nearest sampler
+#define TSCMAA_BINDING_MASK 2          // r32ui storage: TSCMAA_EDGE_* bits per pixel
+#define TSCMAA_BINDING_EDGE_LIST 3     // storage buffer: every edge pixel
+#define TSCMAA_BINDING_TAA_LIST 4      // storage buffer: the TAA share of them
+#define TSCMAA_BINDING_CMAA 5          // CMAA result: storage (cmaa pass), sampled (taa pass)
+#define TSCMAA_BINDING_TAA_UNIFORMS 6  // TaaUniforms of the eye (taa pass)
+#define TSCMAA_BINDING_DEPTH 7         // the eye's depth (taa pass)
+#define TSCMAA_BINDING_HISTORY 8       // the eye's previous output, linear sampler (taa pass)
+#define TSCMAA_BINDING_HISTORY_OUT 9   // the eye's new output (taa pass)
+#define TSCMAA_BINDING_COUNT 10
+
+// Mask bits: an edge on each side of the pixel, and membership of the TAA share.
+#define TSCMAA_EDGE_LEFT 1u
+#define TSCMAA_EDGE_TOP 2u
+#define TSCMAA_EDGE_RIGHT 4u
+#define TSCMAA_EDGE_BOTTOM 8u
+#define TSCMAA_EDGES 15u
+#define TSCMAA_TAA 16u
+
+// Invocations per group of the indirect passes; the edge pass counts groups as it appends.
+#define TSCMAA_LIST_GROUP 64u
+
+TAA_BLOCK(TscmaaUniforms) {
+  vec4 params;  // edge threshold, non-dominant edge removal, blurriness, taa share
+  vec4 size;    // eye width, height, 1/width, 1/height
+  uvec4 eye;    // x: the eye's x offset in the side-by-side images; y: taa share as a 16-bit
+                // fixed-point bound (hash < y selects); zw: 0
+};
+
+// The first 16 bytes of an edge list: the VkDispatchIndirectCommand of the pass over
+// it, then the entry count. Entries (x | y << 16) follow.
+TAA_BLOCK(EdgeListHeader) {
+  uint groupsX;
+  uint groupsY;
+  uint groupsZ;
+  uint count;
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 32);
 static_assert(sizeof(TraceTriangle) == 48);
@@ -275,5 +318,7 @@ static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
 static_assert(sizeof(FrameUniforms) == 7 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
 static_assert(sizeof(DrawPush) == 32);
+static_assert(sizeof(TscmaaUniforms) == 48);
+static_assert(sizeof(EdgeListHeader) == 16);
 }  // namespace taa::gpu
 #endif

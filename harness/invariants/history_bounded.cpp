@@ -9,7 +9,8 @@
 // negative RGB (YCoCg box corners) lifted to zero by boundColor or Karis' max(history, 0).
 //
 // Tolerance per pixel: 2^-10 x its largest output channel + 2^-20 x the box's largest bound
-// + 1e-6 (see checkPixel). Frames that reset the history are skipped; every other frame is
+// + 1e-6 (see checkPixel), plus for clip the 2^-10 x largest bound by which the resolve
+// widens the box it clips against (shaders/taa/rectify.glsl). Frames that reset the history are skipped; every other frame is
 // checked, warm-up included, because the bound holds from the first blended frame on.
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,7 @@ class HistoryBounded : public Invariant {
  public:
   explicit HistoryBounded(const CaseSpec& spec)
       : ycocg_(spec.taa.color_space == ColorSpace::YCoCg),
+        clip_(spec.taa.rectify == Rectify::Clip),
         shrinkChroma_(ycocg_ && spec.taa.shrink_chroma),
         lift_(spec.taa.tonemap_weighting == ToneWeight::Karis ? box::Lift::NegativeChannels
                                                               : box::Lift::ZeroChannels) {}
@@ -87,7 +89,7 @@ class HistoryBounded : public Invariant {
     // Half floats round to 2^-11 relative; each working component is a combination of RGB
     // with absolute weights summing to 1, so twice that step covers the stored output.
     // 2^-20 of the box covers the resolve's float32 arithmetic.
-    const double tol = std::ldexp(big, -10) + std::ldexp(boxBig, -20) + 1e-6;
+    const double tol = std::ldexp(big, -10) + std::ldexp(boxBig, clip_ ? -10 : -20) + 1e-6;
     double e = finite ? box::excess(o, b, ycocg_) : kInf;
     if (finite && e > tol && ycocg_) e = std::min(e, box::liftedExcess(o, b, lift_));
     if (e > tol) ++pixelsOver_;
@@ -99,6 +101,7 @@ class HistoryBounded : public Invariant {
   }
 
   bool ycocg_;
+  bool clip_;
   bool shrinkChroma_;
   box::Lift lift_;
   std::string error_;

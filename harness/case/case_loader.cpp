@@ -24,6 +24,36 @@ std::string formatNumber(double value) {
   return s.str();
 }
 
+namespace {
+
+// The case file's bytes, then each file it references (scene, mover models, tracks) by
+// its relative path and bytes: editing any of them makes blessed goldens stale.
+std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
+  std::vector<std::string> refs;
+  if (!spec.scene.gltf.empty()) refs.push_back(spec.scene.gltf);
+  if (!spec.camera.track.empty()) refs.push_back(spec.camera.track);
+  for (const auto& m : spec.movers) {
+    if (!m.gltf.empty()) refs.push_back(m.gltf);
+    if (!m.track.empty()) refs.push_back(m.track);
+  }
+  Sha256 h;
+  h.update(text.data(), text.size());
+  for (const auto& ref : refs) {
+    std::ifstream in(spec.file.parent_path() / ref, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    const std::string b = bytes.str();
+    h.update("\0", 1);
+    h.update(ref.data(), ref.size());
+    h.update("\0", 1);
+    h.update(b.data(), b.size());
+  }
+  const auto digest = h.finish();
+  return toHex(digest.data(), digest.size());
+}
+
+}  // namespace
+
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file) {
   const std::string where = file.string();
   nlohmann::json root;
@@ -56,7 +86,7 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
   if (!ctx.problems.empty()) throw CaseError(ctx.problems);
   out.present = std::move(ctx.present);
   validateCase(out.spec, out.present);
-  out.sha256 = sha256Hex(text.data(), text.size());
+  out.sha256 = inputsSha256(out.spec, text);
   return out;
 }
 

@@ -14,7 +14,9 @@ namespace taa::cases {
 struct LoadedCase {
   spec::CaseSpec spec;
   std::set<std::string> present;  // key paths the file sets; the rest are defaults
-  std::string sha256;             // of the file's bytes, for stale-golden detection
+  // Of the file's bytes and of every file it references (scene, mover models, tracks),
+  // for stale-golden detection.
+  std::string sha256;
 };
 
 LoadedCase loadCase(const std::filesystem::path& file);

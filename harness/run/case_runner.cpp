@@ -210,7 +210,8 @@ void compareWithGoldens(const spec::CaseSpec& spec, const std::map<int, Image>& 
   }
   const bool stale = m.caseSha256 != caseSha;
   if (stale) {
-    result.message = "the case file changed since its goldens were blessed (" + m.bless.date + ", \"" +
+    result.message = "the case file (or a file it references) changed since its goldens were blessed (" +
+                     m.bless.date + ", \"" +
                      m.bless.reason + "\")";
     if (anyFailed) result.status = CaseStatus::Stale;
   }

@@ -102,7 +102,7 @@ TEST_F(HarnessCli, EditedCaseWithUnchangedPixelsPassesWithStaleNote) {
   writeCase("small", edited);
   const auto r = run("small");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("NOTE small: the case file changed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("NOTE small: the case file (or a file it references) changed"), std::string::npos) << r.output;
 }
 
 TEST_F(HarnessCli, OtherCpuFeatureLevelUsesTolerancesAndStillCatchesARegression) {
@@ -196,6 +196,25 @@ TEST_F(HarnessCli, ShardsPartitionTheCases) {
   }
   EXPECT_EQ(seen, "acb");
   EXPECT_EQ(harness("run " + (root_ / "cases").string() + " --shard 3/2").exitCode, 2);
+}
+
+}  // namespace
+}  // namespace taa
+
+namespace taa {
+namespace {
+
+TEST_F(HarnessCli, EditingAReferencedSceneFileMakesTheGoldensStale) {
+  fs::create_directories(root_ / "cases/scenes");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf", root_ / "cases/scenes/box.gltf");
+  writeCase("box", R"({"scene": {"gltf": "scenes/box.gltf"}, "render": {"width": 32, "height": 18},
+                      "camera": {"position": [0, 2, 6], "target": [0, 1, 0]}, "script": {"frames": 2}})");
+  ASSERT_EQ(bless("box").exitCode, 0);
+  EXPECT_EQ(run("box").output.find("NOTE box"), std::string::npos);
+  std::ofstream(root_ / "cases/scenes/box.gltf", std::ios::app) << "\n";  // same scene, other bytes
+  const auto r = run("box");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("NOTE box: the case file (or a file it references) changed"), std::string::npos) << r.output;
 }
 
 }  // namespace

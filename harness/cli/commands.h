@@ -16,6 +16,7 @@ int cmdRender(const Args& args);
 int cmdRun(const Args& args);
 int cmdBless(const Args& args);
 int cmdNewCase(const Args& args);
+int cmdSweep(const Args& args);
 int cmdBake(const Args& args);
 
 }  // namespace taa::cli

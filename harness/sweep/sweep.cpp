@@ -1,0 +1,197 @@
+#include "sweep/sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "case/case_error.h"
+#include "compare/flip.h"
+#include "compare/metrics.h"
+#include "invariants/invariant_support.h"
+#include "renderer.h"
+#include "run/timing.h"
+#include "scene/build_scene.h"
+
+namespace taa::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json readJson(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw cases::CaseError({file.string() + ": cannot read"});
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw cases::CaseError({file.string() + ": not valid JSON (" + std::string(e.what()) + ")"});
+  }
+}
+
+// One preset's replay: its own case, scene and renderer.
+struct Lane {
+  std::string name;
+  std::string patch;
+  cases::LoadedCase loaded;
+  scene::Scene scene;
+  std::unique_ptr<Renderer> renderer;
+  std::vector<double> taaMs, frameMs;
+  Image prevLuma;
+  double flickerSum = 0.0;
+  int flickerFrames = 0;
+};
+
+Image tonemappedLuma(const Image& img) {
+  Image out(img.width, img.height, 1);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) out.at(x, y) = invariants::tonemappedLuma(img, x, y);
+  return out;
+}
+
+double meanAbsDiff(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.data.size(); ++i) sum += std::fabs(double(a.data[i]) - double(b.data[i]));
+  return a.data.empty() ? 0.0 : sum / double(a.data.size());
+}
+
+double mean(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x;
+  return v.empty() ? 0.0 : s / double(v.size());
+}
+
+bool isRasterPass(const std::string& pass) { return pass.rfind("gbuffer", 0) == 0; }
+
+}  // namespace
+
+Presets loadPresets(const fs::path& file) {
+  const auto j = readJson(file);
+  if (!j.is_object()) throw cases::CaseError({file.string() + ": expected an object {\"preset\": {patch}, ...}"});
+  Presets out;
+  for (const auto& [name, patch] : j.items()) {
+    if (!patch.is_object())
+      throw cases::CaseError({file.string() + ": " + name + ": a preset is a JSON object merged into the case"});
+    out[name] = patch;
+  }
+  return out;
+}
+
+SweepResult runSweep(vk::Context& ctx, const fs::path& caseFile, const Presets& presets,
+                     const std::vector<std::string>& names, const SweepOptions& options) {
+  const nlohmann::json base = readJson(caseFile);
+  std::vector<std::unique_ptr<Lane>> lanes;
+  std::vector<std::string> problems;
+  for (const auto& name : names) {
+    const auto it = presets.find(name);
+    if (it == presets.end()) {
+      std::vector<std::string> known;
+      for (const auto& [k, v] : presets) known.push_back(k);
+      std::string msg = "unknown preset '" + name + "'";
+      const std::string guess = cases::closestMatch(name, known);
+      msg += guess.empty() ? "" : "; did you mean '" + guess + "'?";
+      problems.push_back(msg);
+      continue;
+    }
+    nlohmann::json patched = base;
+    patched.merge_patch(it->second);
+    auto lane = std::make_unique<Lane>();
+    lane->name = name;
+    lane->patch = it->second.dump();
+    try {
+      lane->loaded = cases::parseCase(patched.dump(2), caseFile);
+    } catch (const cases::CaseError& e) {
+      for (const auto& p : e.problems()) problems.push_back("preset " + name + ": " + p);
+      continue;
+    }
+    lanes.push_back(std::move(lane));
+  }
+  if (!problems.empty()) throw cases::CaseError(problems);
+  if (lanes.empty()) throw cases::CaseError({"no preset given"});
+  const auto& first = lanes.front()->loaded.spec;
+  for (const auto& l : lanes) {
+    const auto& s = l->loaded.spec;
+    if (s.render.width != first.render.width || s.render.height != first.render.height ||
+        s.script.frames != first.script.frames)
+      throw cases::CaseError({"preset " + l->name + " changes the output size or frame count; presets of one "
+                              "sweep must share the script and output so one reference serves them all"});
+  }
+  for (size_t i = 0; i < lanes.size(); ++i) {
+    auto& l = *lanes[i];
+    l.scene = scene::buildScene(l.loaded.spec);
+    RenderOptions ro;
+    ro.reference = i == 0;  // rendered once; every preset is measured against it
+    l.renderer = std::make_unique<Renderer>(ctx, l.loaded.spec, l.scene, ro);
+  }
+
+  SweepResult result;
+  result.caseName = caseFile.stem().string();
+  result.device = ctx.info().name;
+  result.frames = first.script.frames;
+  result.fromFrame = std::clamp(options.fromFrame, 0, first.script.frames - 1);
+  result.referenceSamples = first.reference.samples;
+  std::vector<PresetResult> out(lanes.size());
+  Image prevReferenceLuma;
+  double referenceFlickerSum = 0.0;
+  int referenceFlickerFrames = 0;
+  for (int f = 0; f < result.frames; ++f) {
+    // The frame before the first measured one is read too: flicker needs a predecessor.
+    const bool read = f + 1 >= result.fromFrame;
+    Image reference;
+    for (size_t i = 0; i < lanes.size(); ++i) {
+      auto& l = *lanes[i];
+      if (options.progress) options.progress(l.name, f, result.frames);
+      FrameRecord r = l.renderer->renderFrame(f, read);
+      double taa = 0.0, all = 0.0;
+      for (const auto& [pass, ms] : r.gpuMs) {
+        if (pass == "reference") continue;
+        all += ms;
+        if (!isRasterPass(pass)) taa += ms;
+      }
+      if (f >= result.fromFrame) {
+        l.taaMs.push_back(taa);
+        l.frameMs.push_back(all);
+      }
+      if (!read) continue;
+      if (i == 0) reference = r.reference;
+      const Image luma = tonemappedLuma(r.color);
+      if (f > result.fromFrame && !l.prevLuma.data.empty()) {
+        l.flickerSum += meanAbsDiff(luma, l.prevLuma);
+        ++l.flickerFrames;
+      }
+      l.prevLuma = luma;
+      if (f < result.fromFrame) continue;
+      out[i].rmsePerFrame.push_back(compare::computeMetrics(reference, r.color).rmse);
+      out[i].flipPerFrame.push_back(compare::flipLdrFromHdr(reference, r.color).mean);
+    }
+    if (read) {
+      const Image refLuma = tonemappedLuma(reference);
+      if (f > result.fromFrame && !prevReferenceLuma.data.empty()) {
+        referenceFlickerSum += meanAbsDiff(refLuma, prevReferenceLuma);
+        ++referenceFlickerFrames;
+      }
+      prevReferenceLuma = refLuma;
+    }
+  }
+  for (size_t i = 0; i < lanes.size(); ++i) {
+    auto& l = *lanes[i];
+    auto& p = out[i];
+    p.name = l.name;
+    p.patch = l.patch;
+    p.rmse = mean(p.rmsePerFrame);
+    p.flipMean = mean(p.flipPerFrame);
+    p.flicker = l.flickerFrames ? l.flickerSum / l.flickerFrames : 0.0;
+    p.referenceFlicker = referenceFlickerFrames ? referenceFlickerSum / referenceFlickerFrames : 0.0;
+    p.taaMs = run::percentile(l.taaMs, 50.0);
+    p.frameMs = run::percentile(l.frameMs, 50.0);
+    for (const auto& line : l.renderer->log())
+      if (line.rfind("pass ", 0) == 0) p.passes.push_back(line.substr(5));
+  }
+  result.presets = std::move(out);
+  return result;
+}
+
+}  // namespace taa::sweep

@@ -1,0 +1,122 @@
+#include <cstdio>
+#include <fstream>
+
+#include "report/html_report.h"
+#include "report/svg_plot.h"
+#include "sweep/sweep.h"
+
+namespace taa::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), f, v);
+  return buf;
+}
+
+std::vector<size_t> front(const SweepResult& r) {
+  std::vector<double> x, y;
+  for (const auto& p : r.presets) {
+    x.push_back(p.frameMs);
+    y.push_back(p.flipMean);
+  }
+  return report::paretoFront(x, y);
+}
+
+bool onFront(const std::vector<size_t>& f, size_t i) { return std::find(f.begin(), f.end(), i) != f.end(); }
+
+void writeText(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+}
+
+std::string plot(const SweepResult& r, bool standalone) {
+  const auto f = front(r);
+  report::PlotSeries all{"presets", {}, {}, "", false, true, false, {}};
+  report::PlotSeries best{"Pareto front", {}, {}, "#d62728", true, true, true, {}};
+  for (size_t i = 0; i < r.presets.size(); ++i) {
+    const auto& p = r.presets[i];
+    all.x.push_back(p.frameMs);
+    all.y.push_back(p.flipMean);
+    all.pointLabels.push_back(p.name);
+  }
+  for (size_t i : f) {
+    best.x.push_back(r.presets[i].frameMs);
+    best.y.push_back(r.presets[i].flipMean);
+    best.pointLabels.push_back(r.presets[i].name);
+  }
+  report::PlotOptions o;
+  o.title = r.caseName + ": error against run time";
+  o.xLabel = "whole frame, median GPU ms (log)";
+  o.logX = true;  // presets span from a bare raster to ray tracing
+  o.yLabel = "FLIP mean vs reference";
+  o.height = 280;
+  o.standalone = standalone;
+  return report::svgPlot({all, best}, o);
+}
+
+}  // namespace
+
+std::string markdownTable(const SweepResult& r) {
+  const auto f = front(r);
+  std::string s = "| preset | FLIP mean | RMSE | flicker (reference) | TAA ms | frame ms | Pareto |\n"
+                  "|---|---:|---:|---:|---:|---:|:---:|\n";
+  for (size_t i = 0; i < r.presets.size(); ++i) {
+    const auto& p = r.presets[i];
+    s += "| " + p.name + " | " + fmt("%.4f", p.flipMean) + " | " + fmt("%.4f", p.rmse) + " | " +
+         fmt("%.4f", p.flicker) + " (" + fmt("%.4f", p.referenceFlicker) + ") | " + fmt("%.2f", p.taaMs) + " | " +
+         fmt("%.2f", p.frameMs) + " | " + (onFront(f, i) ? "yes" : "") + " |\n";
+  }
+  return s;
+}
+
+void writeSweep(const fs::path& dir, const SweepResult& r) {
+  fs::create_directories(dir);
+  std::string csv = "preset,flip_mean,rmse,flicker,reference_flicker,taa_ms,frame_ms,pareto,patch\n";
+  const auto f = front(r);
+  for (size_t i = 0; i < r.presets.size(); ++i) {
+    const auto& p = r.presets[i];
+    std::string patch = p.patch;
+    for (auto& c : patch)
+      if (c == '"') c = '\'';
+    csv += p.name + "," + fmt("%.6g", p.flipMean) + "," + fmt("%.6g", p.rmse) + "," + fmt("%.6g", p.flicker) + "," +
+           fmt("%.6g", p.referenceFlicker) + "," + fmt("%.4f", p.taaMs) + "," + fmt("%.4f", p.frameMs) + "," +
+           (onFront(f, i) ? "1" : "0") + ",\"" + patch + "\"\n";
+  }
+  writeText(dir / "sweep.csv", csv);
+  std::string frames = "preset,frame,rmse,flip_mean\n";
+  for (const auto& p : r.presets)
+    for (size_t k = 0; k < p.rmsePerFrame.size(); ++k)
+      frames += p.name + "," + std::to_string(r.fromFrame + int(k)) + "," + fmt("%.6g", p.rmsePerFrame[k]) + "," +
+                fmt("%.6g", p.flipPerFrame[k]) + "\n";
+  writeText(dir / "frames.csv", frames);
+  writeText(dir / "sweep.md", markdownTable(r));
+  writeText(dir / "sweep.svg", plot(r, true));
+
+  std::vector<std::vector<std::string>> rows;
+  for (size_t i = 0; i < r.presets.size(); ++i) {
+    const auto& p = r.presets[i];
+    rows.push_back({p.name, fmt("%.4f", p.flipMean), fmt("%.4f", p.rmse), fmt("%.4f", p.flicker),
+                    fmt("%.2f", p.taaMs), fmt("%.2f", p.frameMs), onFront(f, i) ? "yes" : "", p.patch});
+  }
+  report::ReportSection section;
+  section.title = "Sweep: " + r.caseName;
+  section.note = "Each preset replays the same script; errors are means over frames " + std::to_string(r.fromFrame) +
+                 ".." + std::to_string(r.frames - 1) + " against the supersampled reference (" +
+                 std::to_string(r.referenceSamples) + " samples), times are GPU timestamps on " + r.device + ".";
+  section.svg = plot(r, false);
+  section.tableHtml = report::htmlTable(
+      {"preset", "FLIP mean", "RMSE", "flicker", "TAA ms", "frame ms", "Pareto", "settings"}, rows);
+  report::ReportExtras extras;
+  extras.title = "TAA sweep: " + r.caseName;
+  extras.sections.push_back(section);
+  run::RunResults empty;
+  empty.device = r.device;
+  report::writeHtmlReport(dir / "report.html", empty, extras);
+}
+
+}  // namespace taa::sweep

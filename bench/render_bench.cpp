@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 
+#include "bench_context.h"
 #include "case/case_loader.h"
 #include "renderer.h"
 #include "scene/build_scene.h"
@@ -20,22 +21,12 @@ namespace {
 
 using namespace taa;
 
-vk::Context& context() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    vk::ContextOptions o;
-    o.shaderCacheDir = std::filesystem::temp_directory_path() / "taa-bench-shader-cache";
-    std::filesystem::create_directories(o.shaderCacheDir);
-    return std::make_unique<vk::Context>(o);
-  }();
-  return *ctx;
-}
-
 // Renders `json` frame after frame; each iteration's time is the GPU time of `pass`
 // ("frame" = every pass of the frame). Extra counters: every pass's mean ms.
 void runCase(benchmark::State& state, const std::string& json, const std::string& pass) {
   const auto spec = cases::parseCase(json, std::filesystem::path(TAA_SOURCE_DIR) / "cases/bench.json").spec;
   const auto scene = scene::buildScene(spec);
-  Renderer renderer(context(), spec, scene);
+  Renderer renderer(taa::bench::context(), spec, scene);
   int frame = 0;
   for (int warm = 0; warm < 3; ++warm) renderer.renderFrame(frame++, false);  // first-use compilation
   std::map<std::string, double> sums;

@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_context.h"
 #include "case/case_loader.h"
 #include "renderer.h"
 #include "scene/build_scene.h"
@@ -21,16 +22,6 @@
 namespace {
 
 using namespace taa;
-
-vk::Context& tscmaaContext() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    vk::ContextOptions o;
-    o.shaderCacheDir = std::filesystem::temp_directory_path() / "taa-bench-shader-cache";
-    std::filesystem::create_directories(o.shaderCacheDir);
-    return std::make_unique<vk::Context>(o);
-  }();
-  return *ctx;
-}
 
 bool isTscmaaPass(const std::string& name) {
   return name.rfind("tscmaa_", 0) == 0;
@@ -46,7 +37,7 @@ void runTscmaa(benchmark::State& state, int w, int h, const std::string& tscmaa)
   const auto spec =
       cases::parseCase(json, std::filesystem::path(TAA_SOURCE_DIR) / "cases/bench.json").spec;
   const auto scene = scene::buildScene(spec);
-  Renderer renderer(tscmaaContext(), spec, scene);
+  Renderer renderer(taa::bench::context(), spec, scene);
   int frame = 0;
   for (int warm = 0; warm < 3; ++warm)
     renderer.renderFrame(frame++, false);  // first-use compilation

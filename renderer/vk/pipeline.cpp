@@ -234,15 +234,36 @@ Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const Gra
   return Pipeline(device, name, VK_PIPELINE_BIND_POINT_GRAPHICS, setLayout, layout, pipeline);
 }
 
-Bindings& Bindings::sampled(uint32_t binding, VkImageView view, VkSampler sampler) {
-  images_.push_back({sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+Bindings& Bindings::add(uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo* image,
+                        const VkDescriptorBufferInfo* buffer) {
   VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   w.dstBinding = binding;
   w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  w.pImageInfo = &images_.back();
+  w.descriptorType = type;
+  w.pImageInfo = image;
+  w.pBufferInfo = buffer;
   writes_.push_back(w);
   return *this;
+}
+
+Bindings& Bindings::sampled(uint32_t binding, VkImageView view, VkSampler sampler) {
+  images_.push_back({sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  return add(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &images_.back(), nullptr);
+}
+
+Bindings& Bindings::storage(uint32_t binding, VkImageView view) {
+  images_.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+  return add(binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, &images_.back(), nullptr);
+}
+
+Bindings& Bindings::uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  buffers_.push_back({buffer, offset, range});
+  return add(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, nullptr, &buffers_.back());
+}
+
+Bindings& Bindings::storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  buffers_.push_back({buffer, offset, range});
+  return add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nullptr, &buffers_.back());
 }
 
 Bindings& Bindings::sampledArray(uint32_t binding, const std::vector<VkImageView>& views,
@@ -258,39 +279,6 @@ Bindings& Bindings::sampledArray(uint32_t binding, const std::vector<VkImageView
   w.descriptorCount = uint32_t(views.size());
   w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   w.pImageInfo = arrays_.back().data();
-  writes_.push_back(w);
-  return *this;
-}
-
-Bindings& Bindings::storage(uint32_t binding, VkImageView view) {
-  images_.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
-  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  w.dstBinding = binding;
-  w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  w.pImageInfo = &images_.back();
-  writes_.push_back(w);
-  return *this;
-}
-
-Bindings& Bindings::uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  buffers_.push_back({buffer, offset, range});
-  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  w.dstBinding = binding;
-  w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  w.pBufferInfo = &buffers_.back();
-  writes_.push_back(w);
-  return *this;
-}
-
-Bindings& Bindings::storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  buffers_.push_back({buffer, offset, range});
-  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  w.dstBinding = binding;
-  w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  w.pBufferInfo = &buffers_.back();
   writes_.push_back(w);
   return *this;
 }

@@ -95,6 +95,8 @@ class Bindings {
   void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline) const;
 
  private:
+  Bindings& add(uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo* image,
+                const VkDescriptorBufferInfo* buffer);
   std::vector<VkWriteDescriptorSet> writes_;
   std::deque<VkDescriptorImageInfo> images_;  // deque: stable addresses for pImageInfo
   std::deque<VkDescriptorBufferInfo> buffers_;

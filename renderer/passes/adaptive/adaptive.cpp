@@ -1,5 +1,7 @@
 #include "passes/adaptive/adaptive.h"
 
+#include "vk/barrier.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -26,15 +28,8 @@ vk::Image outputImage(vk::Context& ctx, const char* name, const spec::CaseSpec& 
 
 // The counts are written by a shader and read through mapped memory after the wait.
 void hostReadBarrier(VkCommandBuffer cmd) {
-  VkMemoryBarrier2 m{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-  m.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  m.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-  m.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-  m.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dep.memoryBarrierCount = 1;
-  dep.pMemoryBarriers = &m;
-  vkCmdPipelineBarrier2(cmd, &dep);
+  vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void copyImage(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {

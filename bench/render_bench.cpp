@@ -5,6 +5,9 @@
 //
 //   build/bench/taa_bench --benchmark_filter=GBuffer
 //   build/bench/taa_bench --benchmark_filter=Resolve
+// lavapipe timings vary by tens of percent between runs on a shared machine; compare
+// presets with --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
+// and read the medians.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -74,6 +77,12 @@ void BM_Resolve(benchmark::State& state, const char* taa) {
   runCase(state, sized(1280, 720, std::string(R"("scene": {"builtin": "open_area"}, )") + taa), "taa_resolve");
 }
 BENCHMARK_CAPTURE(BM_Resolve, minimal_ycocg_clip, kMinimalClip)
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(3.0);
+// The default preset less one of its two additions over the minimal clip, so the
+// cost of each (Catmull-Rom history, depth-closest velocity) can be read off.
+BENCHMARK_CAPTURE(BM_Resolve, default_with_pixel_velocity, R"("taa": {"velocity_sampling": "pixel"})")
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK_CAPTURE(BM_Resolve, default_with_bilinear_history, R"("taa": {"history_filter": "bilinear"})")
     ->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK_CAPTURE(BM_Resolve, default_preset, kDefault)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK_CAPTURE(BM_Resolve, most_expensive, kExpensive)

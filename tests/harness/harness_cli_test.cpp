@@ -3,6 +3,7 @@
 // Each test works in its own temporary tree (cases/ + goldens/), never the repo's.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -215,6 +216,44 @@ TEST_F(HarnessCli, EditingAReferencedSceneFileMakesTheGoldensStale) {
   const auto r = run("box");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("NOTE box: the case file (or a file it references) changed"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace taa
+
+namespace taa {
+namespace {
+
+TEST_F(HarnessCli, NoVulkanDriverExitsThreeNamingThePackage) {
+  const auto r = run("small", "", "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("apt-get install mesa-vulkan-drivers"), std::string::npos) << r.output;
+}
+
+TEST_F(HarnessCli, NewCaseFramesAGltfSceneAndTheResultRendersAndValidates) {
+  fs::create_directories(root_ / "cases/scenes");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf", root_ / "cases/scenes/box.gltf");
+  auto r = harness("new-case --scene " + (root_ / "cases/scenes/box.gltf").string() + " --name boxed");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(root_ / "cases/boxed.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["scene"]["gltf"], "scenes/box.gltf");
+  // The camera looks at the centre of the scene's bounds from outside them.
+  const auto& pos = j["camera"]["position"];
+  const auto& target = j["camera"]["target"];
+  const double dx = pos[0].get<double>() - target[0].get<double>(), dy = pos[1].get<double>() - target[1].get<double>(),
+               dz = pos[2].get<double>() - target[2].get<double>();
+  EXPECT_GT(std::sqrt(dx * dx + dy * dy + dz * dz), 1.0);
+  r = harness("render " + casePath("boxed") + " --out " + (root_ / "render").string());
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  // Writing it twice would overwrite a case: refused.
+  r = harness("new-case --scene " + (root_ / "cases/scenes/box.gltf").string() + " --name boxed");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  // A scene outside the cases folder cannot be referenced by a case.
+  r = harness("new-case --scene " + std::string(TAA_SOURCE_DIR) + "/cases/scenes/box.glb --name far --cases " +
+              (root_ / "cases").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("is not inside"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -186,8 +186,12 @@ Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const Gra
   std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size());
   for (size_t i = 0; i < blends.size(); ++i) {
     auto& b = blends[i];
-    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
+    // An attachment without a target writes nothing; saying so keeps the validation layer from
+    // expecting the shader (which does not declare that output) to write it.
+    b.colorWriteMask = d.colorFormats[i] == VK_FORMAT_UNDEFINED
+                           ? 0
+                           : VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                                 VK_COLOR_COMPONENT_A_BIT;
     if (d.blendFirstAttachment) {
       if (i == 0) {
         b.blendEnable = VK_TRUE;

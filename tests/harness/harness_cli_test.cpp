@@ -258,3 +258,24 @@ TEST_F(HarnessCli, NewCaseFramesAGltfSceneAndTheResultRendersAndValidates) {
 
 }  // namespace
 }  // namespace taa
+
+namespace taa {
+namespace {
+
+// A case that allocates some G-buffer targets and not others, with the reference and
+// captures an invariant needs: the Khronos validation layer must report nothing.
+TEST_F(HarnessCli, ValidationLayerReportsNothing) {
+  writeCase("checked", R"({
+    "scene": {"builtin": "rough_floor"}, "render": {"width": 48, "height": 27},
+    "movers": [{"shape": "sphere", "start": [-2, 0.7, 1.5], "end": [2, 0.7, 1.5], "speed": 2}],
+    "taa": {"anti_ghosting": true, "rectify": "clamp"}, "post": {"fxaa": true},
+    "script": {"frames": 4}, "reference": {"samples": 4},
+    "checks": {"golden": false, "invariants": ["finite", "energy"], "energy": {"epsilon": 1}}
+  })");
+  const auto r = run("checked", "--validate");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace taa

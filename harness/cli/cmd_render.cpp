@@ -56,9 +56,13 @@ int cmdRender(const Args& args) {
       const std::string base = frameName(r.frame);
       writeExr(dir / (base + ".exr"), r.color);
       writePng(dir / (base + ".png"), r.color);
-      for (const auto& aux : r.aux) writeExr(dir / (base + "." + aux.name + ".exr"), aux.image);
+      // Depth, ids and velocities lose meaning in half floats; the colour buffers do not.
+      for (const auto& aux : r.aux) {
+        const bool exact = aux.name == "depth" || aux.name == "material_id" || aux.name == "velocity";
+        (exact ? writeExrFloat : writeExr)(dir / (base + "." + aux.name + ".exr"), aux.image);
+      }
       if (r.hasReference) {
-        writeExr(dir / (base + ".reference.exr"), r.reference);
+        writeExrFloat(dir / (base + ".reference.exr"), r.reference);
         writePng(dir / (base + ".reference.png"), r.reference);
       }
       j["sha256"] = r.colorSha256;

@@ -202,6 +202,15 @@ void writeExr(const fs::path& path, const Image& image) {
   writeAtomically(path, "openexr", spec, halves.data());
 }
 
+void writeExrFloat(const fs::path& path, const Image& image) {
+  checkShape(path, image, 4);
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
+  spec.channelnames.assign(kChannelNames, kChannelNames + image.channels);
+  spec.alpha_channel = image.channels == 4 ? 3 : -1;
+  spec.attribute("compression", "zip");
+  writeAtomically(path, "openexr", spec, image.data.data());
+}
+
 Image readImage(const fs::path& path) {
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw ImageIoError(path, OIIO::geterror());

@@ -38,6 +38,10 @@ class ImageIoError : public std::runtime_error {
 // folder that is then renamed over `path`; on failure an older file at `path` is left untouched.
 void writeExr(const std::filesystem::path& path, const Image& image);
 
+// The same in 32-bit float, for data that half floats would quantise: reversed-Z depth,
+// object ids above 2048, the float32 reference.
+void writeExrFloat(const std::filesystem::path& path, const Image& image);
+
 // Reads an OpenEXR file as float samples with the file's channels (R, G, B, A first).
 // Throws ImageIoError when the file is missing, unreadable or not OpenEXR.
 Image readExr(const std::filesystem::path& path);

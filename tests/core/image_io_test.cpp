@@ -265,3 +265,21 @@ TEST(ImageIoSha, StableAndSensitiveToOneHalfUlp) {
   EXPECT_EQ(taa::pixelSha256(Image(1, 1, 1, 0.0f)),
             "96a296d224f285c67bee93c30f8a309157f0daa35dc5b87e410b78630a09cfc7");
 }
+
+namespace taa {
+namespace {
+
+TEST(ImageIoExr, FloatWriterKeepsEveryBitThatHalfWouldLose) {
+  const fs::path dir = scratchDir("float");
+  Image depth(5, 3, 1);
+  for (size_t i = 0; i < depth.data.size(); ++i) depth.data[i] = 0.5f + 1e-6f * float(i);  // below half's step
+  writeExrFloat(dir / "depth.exr", depth);
+  const Image back = readExr(dir / "depth.exr");
+  ASSERT_TRUE(back.sameShape(depth));
+  EXPECT_EQ(back.data, depth.data);
+  writeExr(dir / "depth_half.exr", depth);
+  EXPECT_NE(readExr(dir / "depth_half.exr").data, depth.data);  // the half writer would have lost them
+}
+
+}  // namespace
+}  // namespace taa

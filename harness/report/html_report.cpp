@@ -81,8 +81,11 @@ constexpr std::array<run::CaseStatus, 5> kStatuses = {
 
 std::string header(const run::RunResults& r, const ReportExtras& extras) {
   std::string s = "<header class=\"run\">\n<h1>" + escapeMarkup(extras.title) + "</h1>\n";
-  s += "<dl class=\"kv\"><dt>device</dt><dd>" + escapeMarkup(r.device) +
-       "</dd><dt>fingerprint</dt><dd>" + escapeMarkup(r.fingerprint) + "</dd></dl>\n";
+  s += "<dl class=\"kv\"><dt>device</dt><dd>" + escapeMarkup(r.device) + "</dd>";
+  if (!r.fingerprint.empty()) s += "<dt>fingerprint</dt><dd>" + escapeMarkup(r.fingerprint) + "</dd>";
+  s += "</dl>\n";
+  // A report of extra sections only (a sweep) has no cases to summarise.
+  if (r.cases.empty()) return s + "</header>\n";
   s += "<div class=\"summary\">";
   s += "<span>" + std::to_string(r.cases.size()) + " cases:</span>";
   for (const auto st : kStatuses) {
@@ -161,7 +164,7 @@ std::string renderHtmlReport(const run::RunResults& r, const fs::path& outputDir
       escapeMarkup(extras.title) + "</title>\n<style>" + detail::kReportCss + "</style>\n</head>\n";
   s += "<body data-case-count=\"" + std::to_string(r.cases.size()) + "\">\n";
   s += header(r, extras);
-  s += tableOfContents(r);
+  if (!r.cases.empty()) s += tableOfContents(r);
   for (size_t i = 0; i < r.cases.size(); ++i)
     s += detail::renderCase(r.cases[i], i, r.fingerprint, outputDir);
   for (const auto& extra : extras.sections) {

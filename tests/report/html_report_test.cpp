@@ -147,6 +147,26 @@ TEST_F(ReportHtml, DeterministicAtomicAndExtendable) {
   EXPECT_LT(withExtra.find("class=\"extra\""), withExtra.find("<script>"));
 }
 
+TEST(ReportHtmlExtrasOnly, NoCaseSummaryOrContentsWithoutCases) {
+  // The sweep writes a report of extra sections only: no "0 cases" line, no empty contents table.
+  taa::run::RunResults none;
+  none.device = "llvmpipe";
+  taa::report::ReportExtras extras;
+  extras.sections.push_back({"Sweep", "note", "", taa::report::htmlTable({"preset"}, {{"default"}})});
+  const std::string html = renderHtmlReport(none, fs::temp_directory_path(), extras);
+  EXPECT_EQ(html.find("0 cases"), std::string::npos);
+  EXPECT_EQ(html.find("class=\"summary\""), std::string::npos);
+  EXPECT_EQ(html.find("class=\"toc\""), std::string::npos);
+  EXPECT_EQ(html.find("fingerprint"), std::string::npos);
+  EXPECT_NE(html.find("<h2>Sweep</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<dd>llvmpipe</dd>"), std::string::npos);
+  // A run with cases keeps both.
+  const auto dir = taa::test::freshDir("extras_only");
+  const std::string full = renderHtmlReport(taa::test::sampleRun(dir), dir, extras);
+  EXPECT_NE(full.find("4 cases:"), std::string::npos);
+  EXPECT_NE(full.find("class=\"toc\""), std::string::npos);
+}
+
 TEST(ReportHtmlWrite, FailsLoudlyWhenTheFolderIsMissing) {
   EXPECT_THROW(writeHtmlReport("/nonexistent-dir/report.html", {}), std::runtime_error);
 }

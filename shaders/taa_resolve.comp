@@ -28,6 +28,7 @@ layout(constant_id = TAA_SPEC_VELOCITY_IN_ALPHA) const bool kVelocityInAlpha = f
 layout(constant_id = TAA_SPEC_UPSAMPLE) const bool kUpsample = false;
 layout(constant_id = TAA_SPEC_DEBUG) const int kDebug = 0;
 layout(constant_id = TAA_SPEC_REJECT_MASK) const bool kRejectMask = false;
+layout(constant_id = TAA_SPEC_HALF_HISTORY) const bool kHalfHistory = true;
 
 layout(std140, binding = TAA_BINDING_UNIFORMS) uniform TaaBlock { TaaUniforms taaUniforms; };
 layout(binding = TAA_BINDING_COLOR) uniform sampler2D colorTex;
@@ -79,7 +80,8 @@ Current currentSample(ivec2 q, ivec2 hi) {
 }
 
 void writeOutput(ivec2 q, vec3 color, float rejected, float clampDistance, vec2 motionPx) {
-  imageStore(historyOut, q, vec4(boundColor(color), 1.0));
+  vec3 bounded = boundColor(color);
+  imageStore(historyOut, q, vec4(kHalfHistory ? roundToHalf(bounded) : bounded, 1.0));
   if (kDebug == 1) imageStore(debugOut, q, vec4(motionPx * taaUniforms.limits.w * 0.5 + 0.5, 0.0, 1.0));
   if (kDebug == 2) imageStore(debugOut, q, vec4(rejected, 0.0, 0.0, 1.0));
   if (kDebug == 3) imageStore(debugOut, q, vec4(vec3(clampDistance * taaUniforms.limits.w), 1.0));

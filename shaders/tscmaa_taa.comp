@@ -73,5 +73,5 @@ void main() {
     vec3 rectified = fromWorking(rectifyHistory(toWorking(history), box));
     result = mix(rectified, current, taaUniforms.blend.x);
   }
-  imageStore(historyOut, p, vec4(boundColor(result), 1.0));
+  imageStore(historyOut, p, vec4(roundToHalf(boundColor(result)), 1.0));  // RGBA16F history
 }

@@ -79,7 +79,8 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
       .set(TAA_SPEC_VELOCITY_IN_ALPHA, full && t.velocity_in_alpha)
       .set(TAA_SPEC_UPSAMPLE, upsample)
       .set(TAA_SPEC_DEBUG, int(spec.debug.output))
-      .set(TAA_SPEC_REJECT_MASK, spec.taa.mode == TaaMode::Adaptive);
+      .set(TAA_SPEC_REJECT_MASK, spec.taa.mode == TaaMode::Adaptive)
+      .set(TAA_SPEC_HALF_HISTORY, t.history_format == HistoryFormat::Rgba16f);
   return c;
 }
 

@@ -113,6 +113,7 @@ TAA_BLOCK(DrawPush) {
 #define TAA_SPEC_UPSAMPLE 19
 #define TAA_SPEC_DEBUG 20           // DebugOutput
 #define TAA_SPEC_REJECT_MASK 21     // write TAA_BINDING_REJECT_OUT (adaptive mode only)
+#define TAA_SPEC_HALF_HISTORY 22    // the history is RGBA16F: round stores to nearest
 
 #define TAA_REJECT_NONE 0u
 #define TAA_REJECT_OFFSCREEN 1u    // the reprojected position left the previous frame

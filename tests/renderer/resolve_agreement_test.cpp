@@ -30,7 +30,8 @@ constexpr int kHeight = 48;
 //   inverse-luma blend adds kPoleTol * (1 + luma) * |cpu|: its inverse c / (1 - luma) loses
 //   that factor to the cancellation in 1 - luma for bright colours.
 // - RGBA16F: the same plus one half ulp of |cpu|, with cpu rounded to half (round to nearest
-//   even) as the history stores it: lavapipe may round the other way (the spec allows either).
+//   even) as the resolve rounds its history before the store; the few float ulps between the
+//   two evaluations can still tip a value across a rounding midpoint.
 constexpr double kFloatTol = 1e-6;
 constexpr double kPoleTol = 4.0 / (1 << 24);
 

@@ -3,26 +3,16 @@
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
 
 namespace taa::cli {
 
 int cmdValidate(const Args& args) {
-  bool print = false;
-  std::vector<std::string> files;
-  for (const auto& a : args) {
-    if (a == "--print") {
-      print = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "validate: unknown option " << a << "\nusage: taa-harness validate [--print] CASE...\n";
-      return kBadInput;
-    } else {
-      files.push_back(a);
-    }
-  }
-  if (files.empty()) {
-    std::cerr << "usage: taa-harness validate [--print] CASE...\n";
-    return kBadInput;
-  }
+  static const char* kUsage = "taa-harness validate [--print] CASE...";
+  const auto a = parseArgs(args, {"--print"}, {}, kUsage);
+  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
+  const bool print = a.has("--print");
+  const std::vector<std::string>& files = a.positional;
   for (const auto& f : files) {
     const auto loaded = cases::loadCase(f);
     if (print)
@@ -34,8 +24,11 @@ int cmdValidate(const Args& args) {
 }
 
 int cmdTechniques(const Args& args) {
+  static const char* kUsage = "taa-harness techniques [--json]";
+  const auto a = parseArgs(args, {"--json"}, {}, kUsage);
+  if (!a.positional.empty()) throw UsageError("unexpected argument " + a.positional[0] + "\nusage: " + kUsage);
   const auto rows = cases::settingsSchema();
-  if (!args.empty() && args[0] == "--json") {
+  if (a.has("--json")) {
     std::cout << rows.dump(2) << "\n";
     return kPass;
   }

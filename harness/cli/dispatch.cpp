@@ -63,6 +63,9 @@ int dispatch(int argc, char** argv) {
   } catch (const cases::CaseError& e) {
     for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
     return kBadInput;
+  } catch (const HelpRequested& e) {
+    std::cout << "usage: " << e.what() << "\n";
+    return kPass;
   } catch (const UsageError& e) {
     std::cerr << "taa-harness " << name << ": " << e.what() << "\n";
     return kBadInput;

@@ -7,6 +7,7 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::s
   ParsedArgs out;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    if (a == "--help" || a == "-h") throw HelpRequested(usage);
     if (a.rfind("--", 0) != 0) {
       out.positional.push_back(a);
       continue;

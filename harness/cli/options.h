@@ -15,6 +15,12 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// --help or -h anywhere: the command's usage goes to stdout and the exit code is 0.
+class HelpRequested : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct ParsedArgs {
   std::set<std::string> flags;
   std::map<std::string, std::string> values;
@@ -28,6 +34,7 @@ struct ParsedArgs {
 };
 
 // `flagNames` take no value; `valueNames` take the next argument (or --key=value).
+// Throws HelpRequested (what(): the usage) for --help or -h, UsageError for anything unknown.
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& flagNames,
                      const std::set<std::string>& valueNames, const std::string& usage);
 

@@ -132,6 +132,22 @@ TEST_F(HarnessCli, BadInputExitsTwoAndNamesFileKeyAndFix) {
       << r.output;
 }
 
+TEST_F(HarnessCli, HelpPrintsUsageAndExitsZeroUnknownOptionsExitTwo) {
+  for (const char* cmd : {"run", "render", "bless", "sweep", "bake", "new-case", "validate", "techniques"}) {
+    const auto r = harness(std::string(cmd) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << cmd << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("usage: taa-harness " + std::string(cmd), 0), 0u) << cmd << ": " << r.output;
+  }
+  // An option a command does not know is an error, never silently ignored.
+  for (const char* cmd : {"techniques --bogus", "validate --bogus x.json", "run --bogus x.json"}) {
+    const auto r = harness(cmd);
+    EXPECT_EQ(r.exitCode, 2) << cmd << ": " << r.output;
+    EXPECT_NE(r.output.find("unknown option --bogus"), std::string::npos) << cmd << ": " << r.output;
+  }
+  EXPECT_EQ(harness("techniques extra").exitCode, 2);
+  EXPECT_EQ(harness("validate").exitCode, 2);
+}
+
 TEST_F(HarnessCli, MissingDeviceExitsThreeWithTheFix) {
   const auto r = run("small", "--device no-such-gpu");
   EXPECT_EQ(r.exitCode, 3) << r.output;

@@ -41,6 +41,7 @@ section.case.st-error { border-left-color: var(--error); }
 .summary span { font-family: var(--mono); }
 table { border-collapse: collapse; margin: 4px 0; }
 th, td { border: 1px solid var(--line); padding: 2px 7px; vertical-align: top; text-align: left; }
+.extra-table td:last-child { overflow-wrap: anywhere; }
 th { background: #f0f0ec; font-weight: 600; font-size: 12px; }
 tr.bad td { background: #fdecea; }
 td.bad { color: var(--fail); font-weight: bold; }

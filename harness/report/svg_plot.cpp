@@ -284,6 +284,14 @@ std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& o)
           s += "><title>" + escapeMarkup(ps.pointLabels[j]) + "</title></circle>\n";
         else
           s += "/>\n";
+        if (ps.showLabels && j < ps.pointLabels.size()) {
+          // Near the right edge the label goes to the marker's left so it is not cut off.
+          const double cx = ax.pixel(ps.x[j]);
+          const bool left = cx > ax.p1 - 80.0;
+          s += "<text class=\"point-label\" x=\"" + px(left ? cx - 5 : cx + 5) + "\" y=\"" +
+               px(ay.pixel(ps.y[j]) - 5) + "\" font-size=\"10\"" + (left ? " text-anchor=\"end\"" : "") + ">" +
+               escapeMarkup(ps.pointLabels[j]) + "</text>\n";
+        }
       }
     }
     s += "</g>\n";

@@ -19,6 +19,7 @@ struct PlotSeries {
   bool markers = false;
   bool highlight = false;                // thicker, drawn last (a Pareto front, a failure)
   std::vector<std::string> pointLabels;  // optional tooltip per point
+  bool showLabels = false;               // also print each point's label beside its marker
 };
 
 struct PlotOptions {

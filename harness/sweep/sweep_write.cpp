@@ -38,6 +38,7 @@ std::string plot(const SweepResult& r, bool standalone) {
   const auto f = front(r);
   report::PlotSeries all{"presets", {}, {}, "", false, true, false, {}};
   report::PlotSeries best{"Pareto front", {}, {}, "#d62728", true, true, true, {}};
+  best.showLabels = true;  // a static SVG (docs, CI artefacts) has no tooltips; the front is sparse
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
     all.x.push_back(p.frameMs);

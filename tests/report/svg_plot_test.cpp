@@ -64,6 +64,11 @@ TEST(ReportSvgPlot, ByteIdenticalAndWellFormed) {
   // The highlighted series is drawn after the other one.
   EXPECT_LT(svg.find("data-name=\"rmse\""), svg.find("data-name=\"front\""));
   EXPECT_EQ(count(svg, "<g "), count(svg, "</g>"));
+  EXPECT_EQ(svg.find("point-label"), std::string::npos);  // tooltips only, unless asked
+  b.showLabels = true;
+  const std::string labelled = svgPlot({a, b}, o);
+  EXPECT_EQ(count(labelled, "class=\"point-label\""), 2u);
+  EXPECT_NE(labelled.find(">cfg &lt;a&gt;</text>"), std::string::npos);
   EXPECT_NE(svgPlot({a}, {.standalone = true}).find("xmlns=\"http://www.w3.org/2000/svg\""),
             std::string::npos);
 }

@@ -22,8 +22,7 @@ class Converges : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.frame < fromFrame_) return;
-    error_ = requireImage(f, f.output, "output", 3);
-    if (error_.empty()) error_ = requireImage(f, f.reference, "reference", 3);
+    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
     if (!error_.empty()) return;
     if (f.historyReset || rmse_.empty()) {
       rmse_.clear();

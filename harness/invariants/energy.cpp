@@ -27,8 +27,7 @@ class Energy : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.frame < fromFrame_ || f.historyReset) return;
-    error_ = requireImage(f, f.output, "output", 3);
-    if (error_.empty()) error_ = requireImage(f, f.reference, "reference", 3);
+    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
     if (!error_.empty()) return;
     const double out = meanLuminance(*f.output), ref = meanLuminance(*f.reference);
     const double rel = std::fabs(out - ref) / std::max(ref, 1e-6);

@@ -38,8 +38,7 @@ class HistoryBounded : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.historyReset) return;
-    error_ = requireImage(f, f.output, "output", 3);
-    if (error_.empty()) error_ = requireImage(f, f.current, "current", 3);
+    error_ = requireImages(f, {{f.output, "output", 3}, {f.current, "current", 3}});
     if (!error_.empty()) return;
     ++framesChecked_;
     for (int y = 0; y < f.output->height; ++y)

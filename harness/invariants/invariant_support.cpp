@@ -101,4 +101,10 @@ std::string requireImage(const FrameView& f, const Image* img, const char* what,
   return "";
 }
 
+std::string requireImages(const FrameView& f, std::initializer_list<RequiredImage> images) {
+  for (const auto& r : images)
+    if (auto why = requireImage(f, r.image, r.what, r.minChannels); !why.empty()) return why;
+  return "";
+}
+
 }  // namespace taa::invariants

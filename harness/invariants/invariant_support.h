@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -75,5 +76,13 @@ std::string jitterConstant(const spec::CaseSpec& spec);
 // Checks that an image the invariant needs is there and has the output's size; returns why
 // not ("" when fine). `what` names it for the message.
 std::string requireImage(const FrameView& f, const Image* img, const char* what, int minChannels);
+
+struct RequiredImage {
+  const Image* image;
+  const char* what;
+  int minChannels;
+};
+// The first of requireImage's errors over `images`, in order; empty when all are usable.
+std::string requireImages(const FrameView& f, std::initializer_list<RequiredImage> images);
 
 }  // namespace taa::invariants

@@ -26,9 +26,7 @@ class NoGhosting : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    error_ = requireImage(f, f.output, "output", 3);
-    if (error_.empty()) error_ = requireImage(f, f.reference, "reference", 3);
-    if (error_.empty()) error_ = requireImage(f, f.ids, "ids", 3);
+    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}, {f.ids, "ids", 3}});
     if (!error_.empty()) return;
     const Image& ids = *f.ids;
     if (lastCovered_.empty()) lastCovered_.assign(ids.pixelCount(), kNever);

@@ -29,10 +29,10 @@ class TemporalStability : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    error_ = requireImage(f, f.output, "output", 3);
-    if (error_.empty()) error_ = requireImage(f, f.reference, "reference", 3);
-    if (error_.empty()) error_ = requireImage(f, f.ids, "ids", 3);
-    if (error_.empty()) error_ = requireImage(f, f.velocity, "velocity", 2);
+    error_ = requireImages(f, {{f.output, "output", 3},
+                               {f.reference, "reference", 3},
+                               {f.ids, "ids", 3},
+                               {f.velocity, "velocity", 2}});
     if (!error_.empty()) return;
     const int w = f.output->width, h = f.output->height;
     const size_t n = f.output->pixelCount();

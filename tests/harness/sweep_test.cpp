@@ -4,10 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "case/case_error.h"
 #include "support/gpu.h"
+#include "support/text.h"
 #include "sweep/sweep.h"
 
 namespace taa {
@@ -47,19 +47,13 @@ TEST(Sweep, BasicGhostsMoreThanTheFullResolveAndEverythingIsWritten) {
   sweep::writeSweep(out, r);
   for (const char* f : {"sweep.csv", "frames.csv", "sweep.md", "sweep.svg", "report.html"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
-  std::ifstream svgFile(out / "sweep.svg");
-  std::stringstream svgText;
-  svgText << svgFile.rdbuf();
-  const std::string svg = svgText.str();
+  const std::string svg = test::readFile(out / "sweep.svg");
   // The static plot names the points of the Pareto front, as many as the table marks.
   EXPECT_NE(svg.find(">default</text>"), std::string::npos) << svg;
-  size_t labels = 0, marked = 0;
-  for (size_t p = svg.find("class=\"point-label\""); p != std::string::npos; p = svg.find("class=\"point-label\"", p + 1)) ++labels;
   const std::string md = sweep::markdownTable(r);
   EXPECT_NE(md.find("| default |"), std::string::npos) << md;
   EXPECT_NE(md.find("| yes |"), std::string::npos) << md;  // a Pareto front exists
-  for (size_t p = md.find("| yes |"); p != std::string::npos; p = md.find("| yes |", p + 1)) ++marked;
-  EXPECT_EQ(labels, marked) << md;
+  EXPECT_EQ(test::count(svg, "class=\"point-label\""), test::count(md, "| yes |")) << md;
 }
 
 TEST(Sweep, UnknownOrInvalidPresetsAreBadInputNamingThePreset) {

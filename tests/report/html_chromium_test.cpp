@@ -13,10 +13,13 @@
 #include "report/html_report.h"
 #include "report/svg_plot.h"
 #include "report/text_util.h"
+#include "support/text.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using taa::test::count;
 
 std::string findChromium() {
   if (const char* env = std::getenv("TAA_CHROMIUM"); env && *env) return fs::exists(env) ? env : "";
@@ -58,12 +61,6 @@ std::map<std::string, std::string> bodyAttributes(const std::string& dom) {
        it != std::sregex_iterator(); ++it)
     out[(*it)[1]] = (*it)[2];
   return out;
-}
-
-size_t count(const std::string& hay, const std::string& needle) {
-  size_t n = 0;
-  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
-  return n;
 }
 
 TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {

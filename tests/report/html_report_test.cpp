@@ -8,6 +8,7 @@
 
 #include "report/fixture.h"
 #include "report/svg_plot.h"
+#include "support/text.h"
 
 namespace fs = std::filesystem;
 using taa::report::renderHtmlReport;
@@ -15,12 +16,8 @@ using taa::report::writeHtmlReport;
 
 namespace {
 
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using taa::test::count;
+using taa::test::readFile;
 
 std::string percentDecode(const std::string& s) {
   std::string out;
@@ -42,12 +39,6 @@ std::vector<std::string> attributeValues(const std::string& html, const std::str
        ++it)
     out.push_back((*it)[1]);
   return out;
-}
-
-size_t count(const std::string& hay, const std::string& needle) {
-  size_t n = 0;
-  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
-  return n;
 }
 
 class ReportHtml : public ::testing::Test {

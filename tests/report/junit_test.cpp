@@ -7,8 +7,11 @@
 #include <sstream>
 
 #include "report/fixture.h"
+#include "support/text.h"
 
 namespace {
+
+using taa::test::count;
 
 // Enough of XML 1.0 to catch what a careless writer breaks: nesting, quoted attributes, entities
 // and characters that need escaping. Returns an empty string when well-formed, else the problem.
@@ -49,12 +52,6 @@ std::string xmlProblem(const std::string& xml) {
     pos = lt + size_t(m.length(0));
   }
   return open.empty() ? "" : "unclosed <" + open.back() + ">";
-}
-
-size_t count(const std::string& hay, const std::string& needle) {
-  size_t n = 0;
-  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
-  return n;
 }
 
 TEST(ReportJUnit, OneTestcasePerCaseWithFailuresErrorsAndSkips) {

@@ -1,4 +1,5 @@
 #include "report/svg_plot.h"
+#include "support/text.h"
 
 #include <gtest/gtest.h>
 
@@ -13,11 +14,7 @@ using taa::report::svgPlot;
 
 namespace {
 
-size_t count(const std::string& hay, const std::string& needle) {
-  size_t n = 0;
-  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
-  return n;
-}
+using taa::test::count;
 
 TEST(ReportSvgPlot, NiceTicksCoverTheRangeWithRoundSteps) {
   const auto unit = niceTicks(0.0, 1.0, 6);

@@ -14,10 +14,13 @@
 #include "script/frame_state.h"
 #include "support/gpu.h"
 #include "support/process.h"
+#include "support/text.h"
 #include "track_test_util.h"
 
 namespace taa::script {
 namespace {
+
+using taa::test::readFile;
 
 namespace fs = std::filesystem;
 
@@ -158,13 +161,6 @@ TEST(TrackBake, RenderedFramesAreBitIdentical) {
     distinct.insert(a[f].colorSha256);
   }
   EXPECT_EQ(distinct.size(), frames.size());  // the frames differ, so equality means something
-}
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(TrackBake, ShippedBakedCaseIsCurrentAndReplaysItsSource) {

@@ -1,10 +1,11 @@
 #include "report/svg_plot.h"
-#include "support/text.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+
+#include "support/text.h"
 
 using taa::report::niceTicks;
 using taa::report::paretoFront;

@@ -1,12 +1,30 @@
 #!/usr/bin/env bash
 # Installs every build and run dependency from Debian 12's packages (run as root).
+# One package a line, so that changes merge cleanly.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 packages=(
-  build-essential cmake ninja-build pkg-config git
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libglm-dev nlohmann-json3-dev libopenimageio-dev libtinygltf-dev
-  googletest libgtest-dev libbenchmark-dev
+  build-essential
+  clang
+  cmake
+  ninja-build
+  pkg-config
+  git
+  libvulkan-dev
+  mesa-vulkan-drivers
+  vulkan-validationlayers
+  glslang-tools
+  libglm-dev
+  nlohmann-json3-dev
+  libopenimageio-dev
+  # OpenImageIO's CMake package names /usr/bin/iconvert and the other tools as imported
+  # targets and refuses to configure when they are absent.
+  openimageio-tools
+  libtinygltf-dev
+  googletest
+  libgtest-dev
+  libbenchmark-dev
+  # The report check renders out/report.html headless.
   chromium
 )
 if [ "${TAA_SKIP_APT_UPDATE:-0}" != 1 ]; then apt-get update; fi

@@ -9,6 +9,8 @@ if [ "$(id -u)" = 0 ]; then
 else
   sudo bash "$root/ci/install-deps.sh"
 fi
-cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# Extra configure arguments (CI passes -DTAA_WERROR=ON) come from $TAA_CMAKE_ARGS.
+# shellcheck disable=SC2086
+cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo ${TAA_CMAKE_ARGS:-}
 cmake --build "$root/build" -j "$(nproc)"
 "$root/build/harness/taa-harness" run "$root/cases" --out "$root/out"

@@ -13,4 +13,12 @@ fi
 # shellcheck disable=SC2086
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo ${TAA_CMAKE_ARGS:-}
 cmake --build "$root/build" -j "$(nproc)"
-"$root/build/harness/taa-harness" run "$root/cases" --out "$root/out"
+# Installs taa-harness and its SPIR-V (PREFIX/bin, PREFIX/share/taa-harness), so README's daily
+# commands work as typed from any folder; $TAA_PREFIX picks another prefix than /usr/local.
+prefix=${TAA_PREFIX:-/usr/local}
+if [ "$(id -u)" = 0 ] || { mkdir -p "$prefix" 2>/dev/null && [ -w "$prefix" ]; }; then
+  cmake --install "$root/build" --prefix "$prefix"
+else
+  sudo cmake --install "$root/build" --prefix "$prefix"
+fi
+"$prefix/bin/taa-harness" run "$root/cases" --out "$root/out"

@@ -13,7 +13,7 @@ namespace taa::cases {
 
 namespace {
 
-using Problems = std::vector<std::pair<std::string, std::string>>;
+using TrackProblems = std::vector<std::pair<std::string, std::string>>;
 
 std::string extension(const std::string& path) {
   std::string e = std::filesystem::path(path).extension().string();
@@ -28,7 +28,7 @@ bool setsBelow(const std::set<std::string>& present, const std::string& key) {
   return *it == key || it->rfind(key + ".", 0) == 0 || it->rfind(key + "[", 0) == 0;
 }
 
-void trackPath(Problems& p, const std::string& key, const std::string& value,
+void trackPath(TrackProblems& p, const std::string& key, const std::string& value,
                const std::vector<std::string>& extensions) {
   if (const std::string why = assetPathProblem(value); !why.empty()) p.emplace_back(key, why);
   const std::string ext = extension(value);
@@ -39,7 +39,7 @@ void trackPath(Problems& p, const std::string& key, const std::string& value,
   }
 }
 
-void cameraRules(Problems& p, const spec::CameraSpec& cam, const std::set<std::string>& present) {
+void cameraRules(TrackProblems& p, const spec::CameraSpec& cam, const std::set<std::string>& present) {
   if (cam.track.empty()) {
     for (const char* key : {"camera.track_camera", "camera.track_time_offset_s"})
       if (present.count(key))
@@ -60,7 +60,7 @@ void cameraRules(Problems& p, const spec::CameraSpec& cam, const std::set<std::s
                      "remove it, or remove camera.track");
 }
 
-void moverRules(Problems& p, const std::vector<spec::MoverSpec>& movers,
+void moverRules(TrackProblems& p, const std::vector<spec::MoverSpec>& movers,
                 const std::set<std::string>& present) {
   for (size_t i = 0; i < movers.size(); ++i) {
     const std::string m = "movers[" + std::to_string(i) + "]";
@@ -84,7 +84,7 @@ void moverRules(Problems& p, const std::vector<spec::MoverSpec>& movers,
 
 std::vector<std::pair<std::string, std::string>> trackProblems(
     const spec::CaseSpec& spec, const std::set<std::string>& present) {
-  Problems p;
+  TrackProblems p;
   cameraRules(p, spec.camera, present);
   moverRules(p, spec.movers, present);
   return p;

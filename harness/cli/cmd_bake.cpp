@@ -13,7 +13,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kBakeUsage =
     "taa-harness bake CASE --out TRACK.json\n"
     "  writes the case's camera (exact pose, lens, cut flags) and every mover's transform\n"
     "  for each of its frames at its fps; a case with \"camera\": {\"track\": ...} and\n"
@@ -21,9 +21,9 @@ const char* kUsage =
 }  // namespace
 
 int cmdBake(const Args& args) {
-  const auto a = parseArgs(args, {}, {"--out"}, kUsage);
+  const auto a = parseArgs(args, {}, {"--out"}, kBakeUsage);
   if (a.positional.size() != 1 || a.value("--out").empty())
-    throw UsageError(std::string("usage: ") + kUsage);
+    throw UsageError(std::string("usage: ") + kBakeUsage);
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
   // No paths in the file: a baked track is committed and must not depend on checkouts.

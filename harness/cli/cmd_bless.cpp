@@ -15,7 +15,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kBlessUsage =
     "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR]\n"
     "taa-harness bless --failed-from out/results.json --reason \"...\"   (re-bless what failed last run)\n"
     "  renders each case, runs its invariants (a failing invariant refuses the bless unless --force),\n"
@@ -55,11 +55,11 @@ void printChanges(const run::CaseResult& r) {
 }  // namespace
 
 int cmdBless(const Args& args) {
-  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device"}, kUsage);
+  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device"}, kBlessUsage);
   const std::string reason = a.value("--reason");
   if (reason.find_first_not_of(" \t") == std::string::npos)
     throw UsageError("--reason is required: say why the images changed (it is stored in the manifest)\nusage: " +
-                     std::string(kUsage));
+                     std::string(kBlessUsage));
   std::vector<std::string> paths = a.positional;
   if (a.values.count("--failed-from")) {
     const auto failed = failedCases(a.value("--failed-from"));
@@ -69,7 +69,7 @@ int cmdBless(const Args& args) {
     }
     paths.insert(paths.end(), failed.begin(), failed.end());
   }
-  if (paths.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
+  if (paths.empty()) throw UsageError(std::string("no case given\nusage: ") + kBlessUsage);
   const CaseBatch batch = loadBatch(paths, "");
   BatchOptions options;
   options.run.outDir = a.value("--out", "out/bless");

@@ -17,7 +17,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kNewCaseUsage =
     "taa-harness new-case --scene cases/scenes/NAME.gltf --name NAME [--cases DIR] [--frames N]\n"
     "  writes DIR/NAME.json (default DIR: the cases/ folder holding the scene) with a camera that\n"
     "  frames the scene's bounds; then look at `taa-harness render` output and bless it.";
@@ -34,9 +34,9 @@ fs::path relativeInside(const fs::path& scene, const fs::path& casesDir) {
 }  // namespace
 
 int cmdNewCase(const Args& args) {
-  const auto a = parseArgs(args, {}, {"--scene", "--name", "--cases", "--frames"}, kUsage);
+  const auto a = parseArgs(args, {}, {"--scene", "--name", "--cases", "--frames"}, kNewCaseUsage);
   if (!a.values.count("--scene") || !a.values.count("--name") || !a.positional.empty())
-    throw UsageError(std::string("usage: ") + kUsage);
+    throw UsageError(std::string("usage: ") + kNewCaseUsage);
   const fs::path scenePath = a.value("--scene");
   const std::string name = a.value("--name");
   if (name.empty() || name.find_first_of("/\\. ") != std::string::npos)

@@ -17,7 +17,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kRenderUsage =
     "taa-harness render CASE --out DIR [--reference] [--device NAME] [--validate]\n"
     "  writes DIR/CASE/frame_NNNN.exr (linear half float) and .png (tonemapped sRGB) for each\n"
     "  frame in output.frames, aux buffers from output.aux, records.json and run.log;\n"
@@ -31,8 +31,8 @@ std::string frameName(int frame) {
 }  // namespace
 
 int cmdRender(const Args& args) {
-  const auto a = parseArgs(args, {"--validate", "--reference"}, {"--out", "--device"}, kUsage);
-  if (a.positional.size() != 1 || !a.values.count("--out")) throw UsageError(std::string("usage: ") + kUsage);
+  const auto a = parseArgs(args, {"--validate", "--reference"}, {"--out", "--device"}, kRenderUsage);
+  if (a.positional.size() != 1 || !a.values.count("--out")) throw UsageError(std::string("usage: ") + kRenderUsage);
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
   const fs::path dir = fs::path(a.value("--out")) / spec.name;

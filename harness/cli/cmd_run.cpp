@@ -19,7 +19,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kRunUsage =
     "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] [--validate]\n"
     "                        [--metric NAME --above X]\n"
     "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants and\n"
@@ -51,10 +51,10 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
 
 int cmdRun(const Args& args) {
   const auto a =
-      parseArgs(args, {"--validate"}, {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kUsage);
-  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
+      parseArgs(args, {"--validate"}, {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kRunUsage);
+  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kRunUsage);
   if (a.values.count("--metric") != a.values.count("--above"))
-    throw UsageError(std::string("--metric and --above go together\nusage: ") + kUsage);
+    throw UsageError(std::string("--metric and --above go together\nusage: ") + kRunUsage);
   if (a.values.count("--metric")) {
     try {
       run::ImageMetrics probe;

@@ -14,7 +14,7 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kUsage =
+const char* kSweepUsage =
     "taa-harness sweep CASE --presets A,B,C [--presets-file FILE] [--from-frame N] [--out DIR] [--device NAME]\n"
     "  replays CASE once per preset (a JSON merge patch from FILE, default cases/presets/presets.json\n"
     "  next to the case folder) and measures each against the supersampled reference, rendered once:\n"
@@ -31,8 +31,8 @@ std::vector<std::string> split(const std::string& s) {
 }  // namespace
 
 int cmdSweep(const Args& args) {
-  const auto a = parseArgs(args, {}, {"--presets", "--presets-file", "--from-frame", "--out", "--device"}, kUsage);
-  if (a.positional.size() != 1 || !a.values.count("--presets")) throw UsageError(std::string("usage: ") + kUsage);
+  const auto a = parseArgs(args, {}, {"--presets", "--presets-file", "--from-frame", "--out", "--device"}, kSweepUsage);
+  if (a.positional.size() != 1 || !a.values.count("--presets")) throw UsageError(std::string("usage: ") + kSweepUsage);
   const fs::path caseFile = a.positional[0];
   if (!fs::exists(caseFile)) throw UsageError(caseFile.string() + ": no such case file");
   fs::path presetsFile = a.value("--presets-file");

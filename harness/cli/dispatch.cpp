@@ -11,6 +11,7 @@
 #include "scene/scene_error.h"
 #include "script/track.h"
 #include "vk/check.h"
+#include "vk/pipeline.h"
 
 namespace taa::cli {
 
@@ -38,6 +39,7 @@ const std::map<std::string, Command>& commands() {
 void usage(std::ostream& out) {
   out << "usage: taa-harness <command> [args]\n\ncommands:\n";
   for (const auto& [name, cmd] : commands()) out << "  " << name << std::string(12 - name.size(), ' ') << cmd.summary << "\n";
+  out << "\n  --version   the version and the folder SPIR-V is loaded from\n";
   out << "\nexit codes: 0 pass, 1 regression, 2 bad input, 3 environment (no Vulkan device, ...)\n";
 }
 }  // namespace
@@ -50,6 +52,11 @@ int dispatch(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "-h" || name == "--help" || name == "help") {
     usage(std::cout);
+    return kPass;
+  }
+  if (name == "--version" || name == "version") {
+    // Where the SPIR-V comes from tells an installed binary from one in a build tree.
+    std::cout << "taa-harness " << TAA_VERSION << "\nshaders: " << vk::shaderDir() << "\n";
     return kPass;
   }
   const auto it = commands().find(name);

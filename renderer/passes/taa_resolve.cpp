@@ -3,6 +3,7 @@
 #include <cstring>
 #include <glm/matrix.hpp>
 
+#include "passes/storage_image.h"
 #include "vk/context.h"
 
 namespace taa {
@@ -10,16 +11,6 @@ namespace taa {
 namespace {
 
 using namespace spec;
-
-vk::Image storageImage(vk::Context& ctx, const char* name, glm::ivec2 size, VkFormat format) {
-  vk::ImageDesc d;
-  d.name = name;
-  d.width = uint32_t(size.x);
-  d.height = uint32_t(size.y);
-  d.format = format;
-  d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  return vk::Image(ctx, d);
-}
 
 vk::Image dummy(vk::Context& ctx, VkFormat format, vk::Use use = vk::Use::SampledCompute) {
   vk::ImageDesc d;
@@ -38,7 +29,8 @@ vk::Image dummy(vk::Context& ctx, VkFormat format, vk::Use use = vk::Use::Sample
   return image;
 }
 
-glm::ivec2 outputSize(const CaseSpec& s) { return {s.render.width, s.render.height}; }
+// One eye: the resolve never runs in stereo (TSCMAA replaces it there).
+glm::ivec2 resolveOutputSize(const CaseSpec& s) { return {s.render.width, s.render.height}; }
 
 }  // namespace
 
@@ -89,7 +81,7 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
   gpu::TaaUniforms u{};
   u.invViewProj = glm::inverse(s.camera.viewProjection);
   u.prevViewProj = s.prevCamera.viewProjection;
-  const glm::vec2 render(s.renderSize), prev(prevRenderSize), out(outputSize(spec));
+  const glm::vec2 render(s.renderSize), prev(prevRenderSize), out(resolveOutputSize(spec));
   u.renderSize = glm::vec4(render, 1.0f / render);
   u.prevRenderSize = glm::vec4(prev, 1.0f / prev);
   u.outputSize = glm::vec4(out, 1.0f / out);
@@ -117,12 +109,12 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
   withoutHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", bindings, 0, taaSpecConstants(spec, false));
   const VkFormat format = spec.taa.history_format == HistoryFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                            : VK_FORMAT_R16G16B16A16_SFLOAT;
-  history_[0] = storageImage(ctx, "history_a", outputSize(spec), format);
-  history_[1] = storageImage(ctx, "history_b", outputSize(spec), format);
+  history_[0] = storageImage(ctx, "history_a", resolveOutputSize(spec), format);
+  history_[1] = storageImage(ctx, "history_b", resolveOutputSize(spec), format);
   // The segmentation view is drawn by the adaptive pass, not here.
   if (plan.debugView && spec.debug.output != DebugOutput::Segmentation)
-    debug_ = storageImage(ctx, "debug_view", outputSize(spec), VK_FORMAT_R16G16B16A16_SFLOAT);
-  if (plan.adaptive) rejection_ = storageImage(ctx, "rejection", outputSize(spec), VK_FORMAT_R32_UINT);
+    debug_ = storageImage(ctx, "debug_view", resolveOutputSize(spec), VK_FORMAT_R16G16B16A16_SFLOAT);
+  if (plan.adaptive) rejection_ = storageImage(ctx, "rejection", resolveOutputSize(spec), VK_FORMAT_R32_UINT);
 }
 
 std::string TaaResolvePass::describe() const {

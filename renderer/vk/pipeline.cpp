@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <fstream>
 #include <utility>
@@ -63,9 +64,22 @@ void Pipeline::release() {
   device_ = VK_NULL_HANDLE;
 }
 
+std::string shaderDir() {
+  if (const char* env = std::getenv("TAA_SHADER_DIR"); env && *env) return env;
+  // An installed harness finds its SPIR-V beside it (PREFIX/bin -> PREFIX/share), so it
+  // works after the build tree is gone; a binary in the build tree falls through to the
+  // build's shader folder.
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed = exe.parent_path().parent_path() / TAA_SHADER_INSTALL_SUBDIR;
+    if (std::filesystem::is_directory(installed, ec)) return installed.string();
+  }
+  return TAA_SHADER_DIR;
+}
+
 std::vector<uint32_t> loadSpirv(const std::string& name) {
-  const char* env = std::getenv("TAA_SHADER_DIR");
-  const std::string dir = env && *env ? env : TAA_SHADER_DIR;
+  const std::string dir = shaderDir();
   const std::string path = dir + "/" + name + ".spv";
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in)

@@ -55,8 +55,11 @@ class Pipeline {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
-// SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp")
-// in $TAA_SHADER_DIR or the build's shader folder.
+// Where SPIR-V is read from: $TAA_SHADER_DIR, else PREFIX/share/taa-harness/shaders beside an
+// installed binary, else the build's shader folder.
+std::string shaderDir();
+
+// SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp") in shaderDir().
 std::vector<uint32_t> loadSpirv(const std::string& name);
 
 // `counts`: descriptors per binding (arrays); empty means one each.

@@ -71,7 +71,7 @@ TEST(EffectLumaWeight, AlphaStaysWithinItsBoundsAndSpansThem) {
 // A cube crossing the checkerboard at ~1 px per frame, no rectification: behind it the history
 // keeps its colour for many frames. The depth-closest 3x3 velocity gives the pixels it just left
 // its speed, so velocity_alpha resets them at once.
-const char* kMover = R"({
+const char* kDynamicAlphaMover = R"({
   "scene": {"builtin": "checkerboard"},
   "render": {"width": 160, "height": 90},
   "script": {"frames": 24},
@@ -99,9 +99,9 @@ TEST(EffectVelocityAlpha, FastMoverLeavesAShorterTrail) {
   RenderOptions o;
   o.reference = true;
   o.captureIds = true;
-  const auto& plain = renderOnce(kMover, "{}", frames, o);
+  const auto& plain = renderOnce(kDynamicAlphaMover, "{}", frames, o);
   const auto& fast =
-      renderOnce(kMover, R"({"taa": {"velocity_alpha": true, "velocity_alpha_px": 0.5}})",
+      renderOnce(kDynamicAlphaMover, R"({"taa": {"velocity_alpha": true, "velocity_alpha_px": 0.5}})",
                  {16, 17, 18, 19, 20, 21, 22, 23});
   double ePlain = 0.0, eFast = 0.0, rPlain = 0.0, rFast = 0.0;
   int trailPlain = 0, trailFast = 0;

@@ -10,7 +10,7 @@ namespace {
 using test::renderOnce;
 using test::report;
 
-const char* kPan = R"({
+const char* kHistoryFilterPan = R"({
   "scene": {"builtin": "checkerboard"},
   "camera": {"rotate": {"yaw_deg_per_s": 30}},
   "render": {"width": 160, "height": 90},
@@ -29,9 +29,9 @@ Measured measure(const char* filter) {
   RenderOptions o;
   o.reference = true;
   const auto& truth =
-      renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
+      renderOnce(kHistoryFilterPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
   const auto& run =
-      renderOnce(kPan, std::string(R"({"taa": {"history_filter": ")") + filter + "\"}}", kLast4,
+      renderOnce(kHistoryFilterPan, std::string(R"({"taa": {"history_filter": ")") + filter + "\"}}", kLast4,
                  std::string(filter) == "catmull_rom_5" ? o : RenderOptions{});
   Measured m;
   for (int f : kLast4) {
@@ -52,7 +52,7 @@ TEST(EffectHistoryFilter, CatmullRomIsCloserToTheReferenceThanBilinearUnderAPan)
     RenderOptions o;
     o.reference = true;
     const auto& truth =
-        renderOnce(kPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
+        renderOnce(kHistoryFilterPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
     return test::localContrast(truth[23].reference);
   }());
 }

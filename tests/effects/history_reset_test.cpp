@@ -16,21 +16,21 @@ const char* kBase = R"({
   "script": {"frames": 12}
 })";
 
-const std::vector<int> kAll = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+const std::vector<int> kHistoryResetAll = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
 
-RenderOptions current() {
+RenderOptions currentHistoryReset() {
   RenderOptions o;
   o.captureCurrent = true;
   return o;
 }
 
 bool outputIsInput(const FrameRecord& r) {
-  return test::rgbIdentical(r.color, test::auxImage(r, "current"));
+  return test::rgbIdentical(r.color, test::auxImage(r, "currentHistoryReset"));
 }
 
 TEST(EffectHistoryReset, ScriptedResetFrameOutputsTheCurrentFrame) {
-  const auto& run = renderOnce(kBase, R"({"script": {"reset_history_at": [5]}})", kAll, current());
-  const auto& plain = renderOnce(kBase, "{}", kAll, current());
+  const auto& run = renderOnce(kBase, R"({"script": {"reset_history_at": [5]}})", kHistoryResetAll, currentHistoryReset());
+  const auto& plain = renderOnce(kBase, "{}", kHistoryResetAll, currentHistoryReset());
   EXPECT_TRUE(run[5].historyReset);
   EXPECT_TRUE(outputIsInput(run[5]));
   EXPECT_FALSE(outputIsInput(plain[5]));  // without the reset, frame 5 has history
@@ -42,7 +42,7 @@ TEST(EffectHistoryReset, CameraCutOutputsTheCurrentFrame) {
   const auto& run = renderOnce(
       kBase,
       R"({"camera": {"cuts": [{"frame": 7, "position": [3, 2, 4], "target": [0, 0.5, -2]}]}})",
-      kAll, current());
+      kHistoryResetAll, currentHistoryReset());
   EXPECT_TRUE(run[7].cameraCut);
   EXPECT_TRUE(run[7].historyReset);
   EXPECT_TRUE(outputIsInput(run[7]));

@@ -92,21 +92,21 @@ const char* kRaw = R"({
   "jitter": {"pattern": "halton", "length": 8}
 })";
 
-const std::vector<int> kAll = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+const std::vector<int> kJitterAll = {0, 1, 2, 3, 4, 5, 6, 7, 8};
 
-RenderOptions current() {
+RenderOptions currentJitter() {
   RenderOptions o;
   o.captureCurrent = true;
   return o;
 }
 
 const Image& raw(const test::EffectRun& run, int f) {
-  return test::auxImage(run[f], "current");
+  return test::auxImage(run[f], "currentJitter");
 }
 
 TEST(EffectJitter, LockPinsOneStepOfTheSequence) {
-  const auto& free = renderOnce(kRaw, "{}", kAll, current());
-  const auto& locked = renderOnce(kRaw, R"({"jitter": {"lock": 3}})", kAll, current());
+  const auto& free = renderOnce(kRaw, "{}", kJitterAll, currentJitter());
+  const auto& locked = renderOnce(kRaw, R"({"jitter": {"lock": 3}})", kJitterAll, currentJitter());
   for (int f = 0; f < 9; ++f) {
     EXPECT_TRUE(test::bitIdentical(raw(locked, f), raw(free, 3))) << "frame " << f;
     if (f > 0) {
@@ -116,8 +116,8 @@ TEST(EffectJitter, LockPinsOneStepOfTheSequence) {
 }
 
 TEST(EffectJitter, SlowdownHoldsEachStepForKFrames) {
-  const auto& free = renderOnce(kRaw, "{}", kAll, current());
-  const auto& slow = renderOnce(kRaw, R"({"jitter": {"slowdown": 3}})", kAll, current());
+  const auto& free = renderOnce(kRaw, "{}", kJitterAll, currentJitter());
+  const auto& slow = renderOnce(kRaw, R"({"jitter": {"slowdown": 3}})", kJitterAll, currentJitter());
   for (int f = 0; f < 9; ++f)
     EXPECT_TRUE(test::bitIdentical(raw(slow, f), raw(free, f / 3))) << "frame " << f;
   EXPECT_FALSE(test::bitIdentical(raw(slow, 2), raw(slow, 3)));

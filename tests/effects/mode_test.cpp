@@ -29,7 +29,7 @@ TEST(EffectPassThrough, OutputIsTheInputBitForBit) {
 }
 
 // A camera panning at ~1 px per frame over the checkerboard.
-const char* kPan = R"({
+const char* kModePan = R"({
   "scene": {"builtin": "checkerboard"},
   "camera": {"rotate": {"yaw_deg_per_s": 30}},
   "render": {"width": 160, "height": 90},
@@ -40,8 +40,8 @@ const char* kPan = R"({
 TEST(EffectBasic, GhostsUnderCameraMotionFarMoreThanFull) {
   RenderOptions o;
   o.reference = true;
-  const auto& full = renderOnce(kPan, "{}", {23}, o);
-  const auto& basic = renderOnce(kPan, R"({"taa": {"mode": "basic"}})", {23});
+  const auto& full = renderOnce(kModePan, "{}", {23}, o);
+  const auto& basic = renderOnce(kModePan, R"({"taa": {"mode": "basic"}})", {23});
   const Image& ref = full[23].reference;
   const double eFull = test::rmse(full[23].color, ref), eBasic = test::rmse(basic[23].color, ref);
   report("rmse vs reference under a pan, full", eFull);

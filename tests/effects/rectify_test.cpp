@@ -13,7 +13,7 @@ namespace {
 using test::renderOnce;
 using test::report;
 
-const char* kMover = R"({
+const char* kRectifyMover = R"({
   "scene": {"builtin": "rough_floor"},
   "render": {"width": 160, "height": 90},
   "script": {"frames": 24},
@@ -21,7 +21,7 @@ const char* kMover = R"({
   "movers": [{"shape": "cube", "start": [-3, 0.5, 2], "end": [3, 0.5, 2], "speed": 6, "repeat": "once"}]
 })";
 
-const std::vector<int> kFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
+const std::vector<int> kRectifyFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
 
 // Mean over frames 16-23 of the rmse against the reference where the mover was in the last 8
 // frames but is no more: its ghost.
@@ -29,8 +29,8 @@ double ghosting(const std::string& taa) {
   RenderOptions o;
   o.reference = true;
   o.captureIds = true;
-  const auto& truth = renderOnce(kMover, R"({"taa": {"rectify": "none"}})", kFrames, o);
-  const auto& run = renderOnce(kMover, R"({"taa": )" + taa + "}", {16, 17, 18, 19, 20, 21, 22, 23});
+  const auto& truth = renderOnce(kRectifyMover, R"({"taa": {"rectify": "none"}})", kRectifyFrames, o);
+  const auto& run = renderOnce(kRectifyMover, R"({"taa": )" + taa + "}", {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;
   for (int f = 16; f <= 23; ++f)
     sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
@@ -54,7 +54,7 @@ TEST(EffectRectify, ClampKeepsTheOutputInsideTheCurrentFrames3x3Box) {
   o.captureCurrent = true;
   auto outside = [&](const char* rectify) {
     const auto& run = renderOnce(
-        kMover, std::string(R"({"taa": {"color_space": "rgb", "rectify": ")") + rectify + "\"}}",
+        kRectifyMover, std::string(R"({"taa": {"color_space": "rgb", "rectify": ")") + rectify + "\"}}",
         {20}, o);
     const Image& out = run[20].color;
     const Image& cur = test::auxImage(run[20], "current");

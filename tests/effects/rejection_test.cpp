@@ -12,7 +12,7 @@ using test::renderOnce;
 using test::report;
 
 // A fast pan (~3.5 px per frame) turning left: new content enters at the left border.
-const char* kPan = R"({
+const char* kRejectionPan = R"({
   "scene": {"builtin": "checkerboard"},
   "camera": {"rotate": {"yaw_deg_per_s": 120}},
   "render": {"width": 160, "height": 90},
@@ -37,9 +37,9 @@ test::Mask revealed(const FrameRecord& r) {
 }
 
 TEST(EffectRejectOffscreen, RevealedBorderPixelsAreTheCurrentFrame) {
-  const auto& on = renderOnce(kPan, "{}", {5}, currentAndVelocity());
+  const auto& on = renderOnce(kRejectionPan, "{}", {5}, currentAndVelocity());
   const auto& off =
-      renderOnce(kPan, R"({"taa": {"reject_offscreen": false}})", {5}, currentAndVelocity());
+      renderOnce(kRejectionPan, R"({"taa": {"reject_offscreen": false}})", {5}, currentAndVelocity());
   const test::Mask border = revealed(on[5]);
   report("revealed border pixels, frame 5", test::count(border));
   ASSERT_GT(test::count(border), 150);
@@ -50,7 +50,7 @@ TEST(EffectRejectOffscreen, RevealedBorderPixelsAreTheCurrentFrame) {
 }
 
 // Rough floor, static camera, a cube crossing at ~2 px per frame; no rectification.
-const char* kMover = R"({
+const char* kRejectionMover = R"({
   "scene": {"builtin": "rough_floor"},
   "render": {"width": 160, "height": 90},
   "script": {"frames": 24},
@@ -59,7 +59,7 @@ const char* kMover = R"({
   "taa": {"rectify": "none"}
 })";
 
-const std::vector<int> kFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
+const std::vector<int> kRejectionFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
 
 // Mean over frames 16-23 of the rmse against the reference where the mover was in the last 8
 // frames but is no more.
@@ -67,8 +67,8 @@ double trailError(const std::string& patch) {
   RenderOptions o;
   o.reference = true;
   o.captureIds = true;
-  const auto& truth = renderOnce(kMover, "{}", kFrames, o);
-  const auto& run = renderOnce(kMover, patch, {16, 17, 18, 19, 20, 21, 22, 23});
+  const auto& truth = renderOnce(kRejectionMover, "{}", kRejectionFrames, o);
+  const auto& run = renderOnce(kRejectionMover, patch, {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;
   for (int f = 16; f <= 23; ++f)
     sum += test::rmse(run[f].color, truth[f].reference, test::vacatedMask(truth, f - 8, f));
@@ -92,11 +92,11 @@ TEST(EffectAntiGhosting, ClearsTheTrailOfAMover) {
 // any difference comes from this frame's blend.
 TEST(EffectRejectionAlpha, ChangesRejectedPixelsOnly) {
   const char* culled = R"({"taa": {"depth_culling": true, "rejection_alpha": 1.0}})";
-  const auto& one = renderOnce(kMover, culled, {1});
+  const auto& one = renderOnce(kRejectionMover, culled, {1});
   const auto& half =
-      renderOnce(kMover, R"({"taa": {"depth_culling": true, "rejection_alpha": 0.5}})", {1});
+      renderOnce(kRejectionMover, R"({"taa": {"depth_culling": true, "rejection_alpha": 0.5}})", {1});
   const auto& mask = renderOnce(
-      kMover, R"({"taa": {"depth_culling": true}, "debug": {"output": "rejection"}})", {1});
+      kRejectionMover, R"({"taa": {"depth_culling": true}, "debug": {"output": "rejection"}})", {1});
   const Image& rejected = mask[1].color;
   const test::Mask isRejected = test::maskWhere(
       rejected.width, rejected.height, [&](int x, int y) { return rejected.at(x, y, 0) > 0.5f; });

@@ -50,7 +50,7 @@ TEST(EffectReprojection, DepthMatchesVelocityOnAStaticSceneUnderCameraMotion) {
 }
 
 // Static camera; a cube crossing the checkerboard at ~2 px per frame.
-const char* kMover = R"({
+const char* kReprojectionMover = R"({
   "scene": {"builtin": "checkerboard"},
   "render": {"width": 160, "height": 90},
   "script": {"frames": 24},
@@ -68,9 +68,9 @@ RenderOptions withIds(bool reference) {
 TEST(EffectReprojection, VelocityFollowsAMoverThatDepthReprojectionSmears) {
   const std::vector<int> frames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
   const auto& all =
-      renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})", frames, withIds(true));
-  const auto& movers = renderOnce(kMover, R"({"taa": {"use_velocity": "movers"}})", kLast8);
-  const auto& off = renderOnce(kMover, R"({"taa": {"use_velocity": "off"}})", kLast8);
+      renderOnce(kReprojectionMover, R"({"taa": {"use_velocity": "all"}})", frames, withIds(true));
+  const auto& movers = renderOnce(kReprojectionMover, R"({"taa": {"use_velocity": "movers"}})", kLast8);
+  const auto& off = renderOnce(kReprojectionMover, R"({"taa": {"use_velocity": "off"}})", kLast8);
   // The mover and 3 pixels around it: its own pixels and the strip it just left.
   const auto around = [&](int f) { return test::dilate(test::moverMask(all[f]), 160, 90, 3); };
   const double eAll = meanError(all, all, around), eMovers = meanError(movers, all, around),
@@ -90,10 +90,10 @@ TEST(EffectReprojection, VelocityFollowsAMoverThatDepthReprojectionSmears) {
 
 TEST(EffectVelocitySampling, Closest3x3ReducesErrorAtAMoverSilhouette) {
   const auto& closest =
-      renderOnce(kMover, R"({"taa": {"use_velocity": "all"}})",
+      renderOnce(kReprojectionMover, R"({"taa": {"use_velocity": "all"}})",
                  {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23}, withIds(true));
   const auto& pixel = renderOnce(
-      kMover, R"({"taa": {"use_velocity": "all", "velocity_sampling": "pixel"}})", kLast8);
+      kReprojectionMover, R"({"taa": {"use_velocity": "all", "velocity_sampling": "pixel"}})", kLast8);
   const auto edge = [&](int f) { return test::silhouetteMask(closest[f], 1); };
   const double eClosest = meanError(closest, closest, edge),
                ePixel = meanError(pixel, closest, edge);

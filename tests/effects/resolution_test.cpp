@@ -36,7 +36,7 @@ TEST(EffectUpsample, ConvergesTowardTheFullResolutionReference) {
   EXPECT_LT(last, 0.8 * upscaled);
 }
 
-const char* kPan = R"({
+const char* kResolutionPan = R"({
   "scene": {"builtin": "checkerboard"},
   "camera": {"rotate": {"yaw_deg_per_s": 40}},
   "render": {"width": 160, "height": 90},
@@ -48,9 +48,9 @@ TEST(EffectDynamicResolution, PanningErrorStaysCloseToTheFixedResolutionRun) {
   const std::vector<int> frames = {12, 13, 14, 15, 20, 21, 22, 23};
   RenderOptions o;
   o.reference = true;
-  const auto& fixed = renderOnce(kPan, "{}", frames, o);
+  const auto& fixed = renderOnce(kResolutionPan, "{}", frames, o);
   const auto& dynamic = renderOnce(
-      kPan,
+      kResolutionPan,
       R"({"render": {"scale_schedule": [{"frame": 0, "scale": 1.0}, {"frame": 6, "scale": 0.7},
                                                {"frame": 16, "scale": 0.85}]}})",
       frames);

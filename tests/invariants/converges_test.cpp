@@ -11,7 +11,7 @@ namespace {
 
 // output_f = reference + error(f) * zero-mean noise, so RMSE is proportional to error(f).
 template <class ErrorOf>
-std::vector<Frame> sequence(int frames, ErrorOf errorOf, int resetAt = -1) {
+std::vector<Frame> sequenceConverges(int frames, ErrorOf errorOf, int resetAt = -1) {
   const Image ref = background();
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
@@ -34,7 +34,7 @@ std::vector<Frame> sequence(int frames, ErrorOf errorOf, int resetAt = -1) {
 
 TEST(InvariantConverges, DecayingErrorPasses) {
   const auto o = runAll(InvariantKind::Converges, staticCase(),
-                        sequence(16, [](int f) { return 0.2f * std::pow(0.85f, f); }));
+                        sequenceConverges(16, [](int f) { return 0.2f * std::pow(0.85f, f); }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_LT(valueOf(o, "last_rmse"), valueOf(o, "bound"));
   EXPECT_EQ(valueOf(o, "frames"), 16.0);
@@ -42,7 +42,7 @@ TEST(InvariantConverges, DecayingErrorPasses) {
 
 TEST(InvariantConverges, GrowingErrorFails) {
   const auto o = runAll(InvariantKind::Converges, staticCase(),
-                        sequence(16, [](int f) { return 0.02f * float(1 + f); }));
+                        sequenceConverges(16, [](int f) { return 0.02f * float(1 + f); }));
   EXPECT_FALSE(o.passed);
   EXPECT_GT(valueOf(o, "last_quarter_mean"), valueOf(o, "first_quarter_mean"));
   EXPECT_TRUE(contains(o.detail, "last-quarter mean")) << o.detail;
@@ -51,14 +51,14 @@ TEST(InvariantConverges, GrowingErrorFails) {
 // Noise that never accumulates away: the end is not below ratio x the start.
 TEST(InvariantConverges, FlatErrorFailsTheRatio) {
   const auto o =
-      runAll(InvariantKind::Converges, staticCase(), sequence(16, [](int) { return 0.1f; }));
+      runAll(InvariantKind::Converges, staticCase(), sequenceConverges(16, [](int) { return 0.1f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, " > 0.6 x first")) << o.detail;
 }
 
 // A reset restarts accumulation: the check judges the run after the last one.
 TEST(InvariantConverges, HistoryResetRestartsTheRun) {
-  const auto seq = sequence(
+  const auto seq = sequenceConverges(
       24, [](int f) { return 0.2f * std::pow(0.85f, f < 8 ? f : f - 8); }, 8);
   const auto o = runAll(InvariantKind::Converges, staticCase(), seq);
   EXPECT_TRUE(o.passed) << o.detail;
@@ -69,7 +69,7 @@ TEST(InvariantConverges, HistoryResetRestartsTheRun) {
 TEST(InvariantConverges, FromFrameSkipsWarmUp) {
   // Worse for 4 frames, then converging: fails from 0 (trend), passes from 4.
   const auto seq =
-      sequence(20, [](int f) { return f < 4 ? 0.01f : 0.2f * std::pow(0.85f, f - 4); });
+      sequenceConverges(20, [](int f) { return f < 4 ? 0.01f : 0.2f * std::pow(0.85f, f - 4); });
   auto s = staticCase();
   EXPECT_FALSE(runAll(InvariantKind::Converges, s, seq).passed);
   s.checks.from_frame = 4;
@@ -78,7 +78,7 @@ TEST(InvariantConverges, FromFrameSkipsWarmUp) {
 
 TEST(InvariantConverges, TooFewFramesFails) {
   const auto o =
-      runAll(InvariantKind::Converges, staticCase(), sequence(3, [](int) { return 0.0f; }));
+      runAll(InvariantKind::Converges, staticCase(), sequenceConverges(3, [](int) { return 0.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "needs at least 4")) << o.detail;
 }

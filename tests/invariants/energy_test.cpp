@@ -9,7 +9,7 @@ namespace {
 
 // The output is the reference scaled by gain(f): mean luminance off by gain - 1.
 template <class Gain>
-std::vector<Frame> sequence(int frames, Gain gain) {
+std::vector<Frame> sequenceEnergy(int frames, Gain gain) {
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
     Frame fr;
@@ -29,14 +29,14 @@ std::vector<Frame> sequence(int frames, Gain gain) {
 
 TEST(InvariantEnergy, SmallDifferencePasses) {
   const auto o =
-      runAll(InvariantKind::Energy, staticCase(), sequence(6, [](int) { return 1.01f; }));
+      runAll(InvariantKind::Energy, staticCase(), sequenceEnergy(6, [](int) { return 1.01f; }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_NEAR(valueOf(o, "worst_relative_difference"), 0.01, 1e-5);
 }
 
 TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
   const auto o = runAll(InvariantKind::Energy, staticCase(),
-                        sequence(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
+                        sequenceEnergy(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "frame"), 4.0);
   EXPECT_EQ(valueOf(o, "frames_over"), 1.0);
@@ -46,13 +46,13 @@ TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
 
 TEST(InvariantEnergy, DarkenedOutputFails) {
   EXPECT_FALSE(
-      runAll(InvariantKind::Energy, staticCase(), sequence(4, [](int) { return 0.9f; })).passed);
+      runAll(InvariantKind::Energy, staticCase(), sequenceEnergy(4, [](int) { return 0.9f; })).passed);
 }
 
 TEST(InvariantEnergy, ResetsAndWarmUpAreSkipped) {
   auto s = staticCase();
   s.checks.from_frame = 2;
-  auto seq = sequence(6, [](int f) { return f < 2 || f == 4 ? 1.5f : 1.0f; });
+  auto seq = sequenceEnergy(6, [](int f) { return f < 2 || f == 4 ? 1.5f : 1.0f; });
   seq[4].reset = true;
   const auto o = runAll(InvariantKind::Energy, s, seq);
   EXPECT_TRUE(o.passed) << o.detail;

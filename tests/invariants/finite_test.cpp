@@ -10,7 +10,7 @@ using spec::InvariantKind;
 
 namespace {
 
-std::vector<Frame> sequence(int frames) {
+std::vector<Frame> sequenceFinite(int frames) {
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
     Frame fr;
@@ -25,13 +25,13 @@ std::vector<Frame> sequence(int frames) {
 }  // namespace
 
 TEST(InvariantFinite, FiniteFramesPass) {
-  const auto o = runAll(InvariantKind::Finite, staticCase(), sequence(4));
+  const auto o = runAll(InvariantKind::Finite, staticCase(), sequenceFinite(4));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "nonfinite_pixels"), 0.0);
 }
 
 TEST(InvariantFinite, NanAndInfFailWithCountAndFirstLocation) {
-  auto seq = sequence(5);
+  auto seq = sequenceFinite(5);
   seq[2].output.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();
   seq[2].output.at(9, 7, 0) = std::numeric_limits<float>::infinity();
   seq[4].output.at(0, 0, 3) = -std::numeric_limits<float>::infinity();  // alpha counts too
@@ -47,7 +47,7 @@ TEST(InvariantFinite, NanAndInfFailWithCountAndFirstLocation) {
 
 // Warm-up frames are checked too: a NaN is a defect whenever it appears.
 TEST(InvariantFinite, IgnoresFromFrame) {
-  auto seq = sequence(3);
+  auto seq = sequenceFinite(3);
   seq[0].output.at(1, 1, 0) = std::nanf("");
   auto s = staticCase();
   s.checks.from_frame = 2;

@@ -9,7 +9,7 @@ using spec::InvariantKind;
 
 namespace {
 
-std::vector<Frame> sequence(int frames) {
+std::vector<Frame> sequenceMatchesInput(int frames) {
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
     Frame fr;
@@ -25,12 +25,12 @@ std::vector<Frame> sequence(int frames) {
 }  // namespace
 
 TEST(InvariantMatchesInput, IdenticalOutputPasses) {
-  const auto o = runAll(InvariantKind::MatchesInput, staticCase(), sequence(3));
+  const auto o = runAll(InvariantKind::MatchesInput, staticCase(), sequenceMatchesInput(3));
   EXPECT_TRUE(o.passed) << o.detail;
 }
 
 TEST(InvariantMatchesInput, OneUlpOffFailsWithTheLocation) {
-  auto seq = sequence(3);
+  auto seq = sequenceMatchesInput(3);
   float& v = seq[2].output.at(4, 5, 1);
   v = std::nextafter(v, 10.0f);
   const auto o = runAll(InvariantKind::MatchesInput, staticCase(), seq);

@@ -7,7 +7,7 @@ using spec::InvariantKind;
 
 namespace {
 
-constexpr int kFrames = 12;
+constexpr int kNoGhostingFrames = 12;
 constexpr int kK = 3;
 
 // A 3x3 red block moving right 1 px per frame over a textured background, from x = 1.
@@ -23,7 +23,7 @@ bool covered(int x, int y, int frame) {
 std::vector<Frame> moverSequence(int trail, bool moving = true) {
   const Image bg = background();
   std::vector<Frame> seq;
-  for (int f = 0; f < kFrames; ++f) {
+  for (int f = 0; f < kNoGhostingFrames; ++f) {
     const int t = moving ? f : 0;
     Frame fr;
     fr.frame = f;

@@ -7,7 +7,7 @@ using spec::InvariantKind;
 
 namespace {
 
-constexpr int kFrames = 10;
+constexpr int kTemporalStabilityFrames = 10;
 
 // Background plus per-frame noise of the given amplitudes in the reference and the output;
 // `velocityPx` on every pixel; pixels with x < moverColumns are flagged as a mover.
@@ -15,7 +15,7 @@ std::vector<Frame> sequence(float refAmp, float outAmp, float velocityPx = 0.0f,
                             int moverColumns = 0, float moverAmp = 0.0f) {
   const Image bg = background();
   std::vector<Frame> seq;
-  for (int f = 0; f < kFrames; ++f) {
+  for (int f = 0; f < kTemporalStabilityFrames; ++f) {
     Frame fr;
     fr.frame = f;
     fr.reset = f == 0;
@@ -44,7 +44,7 @@ TEST(InvariantTemporalStability, FlickerLikeTheReferencePasses) {
   const auto o = runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_GT(valueOf(o, "reference_flicker"), 0.005);
-  EXPECT_EQ(valueOf(o, "frames"), kFrames - 1.0);  // frame 0 resets
+  EXPECT_EQ(valueOf(o, "frames"), kTemporalStabilityFrames - 1.0);  // frame 0 resets
 }
 
 TEST(InvariantTemporalStability, ThreeTimesTheReferenceFlickerFails) {
@@ -79,7 +79,7 @@ TEST(InvariantTemporalStability, MovingCameraLeavesNoStaticPixels) {
 TEST(InvariantTemporalStability, ResetFramesAreSkipped) {
   auto seq = sequence(0.1f, 0.1f);
   seq[5].reset = true;
-  for (int f = 5; f < kFrames; ++f)  // a reset (or cut) may jump to a new level
+  for (int f = 5; f < kTemporalStabilityFrames; ++f)  // a reset (or cut) may jump to a new level
     for (auto& v : seq[size_t(f)].output.data) v += 2.0f;
   EXPECT_TRUE(runAll(InvariantKind::TemporalStability, staticCase(), seq).passed);
   seq[5].reset = false;

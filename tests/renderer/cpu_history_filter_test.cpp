@@ -20,7 +20,7 @@ using glm::vec3;
 using test::hashUnit;
 namespace cpu = test::cpu;
 
-constexpr int kW = 40, kH = 30;
+constexpr int kCpuHistoryFilterW = 40, kCpuHistoryFilterH = 30;
 
 using Filter = std::function<vec3(const Image&, vec2)>;
 struct Named {
@@ -34,9 +34,9 @@ const Named kCatmullRom5{"catmull_rom_5", cpu::historyCatmullRom5};
 const Named kCatmullRom16{"catmull_rom_16", cpu::historyCatmullRom16};
 
 Image fill(const std::function<vec3(int, int)>& f) {
-  Image img(kW, kH, 4, 1.0f);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x)
+  Image img(kCpuHistoryFilterW, kCpuHistoryFilterH, 4, 1.0f);
+  for (int y = 0; y < kCpuHistoryFilterH; ++y)
+    for (int x = 0; x < kCpuHistoryFilterW; ++x)
       for (int c = 0; c < 3; ++c) img.at(x, y, c) = f(x, y)[c];
   return img;
 }
@@ -48,10 +48,10 @@ vec3 ramp(float x, float y) {
 // A position whose 4x4 footprint lies inside the image (no edge clamping), as texel
 // coordinates p (texel centres at integers) and as the uv the filters take.
 vec2 interiorTexelPos(int i) {
-  return {1.0f + hashUnit(20, i, 0) * float(kW - 4), 1.0f + hashUnit(20, i, 1) * float(kH - 4)};
+  return {1.0f + hashUnit(20, i, 0) * float(kCpuHistoryFilterW - 4), 1.0f + hashUnit(20, i, 1) * float(kCpuHistoryFilterH - 4)};
 }
 vec2 toUv(vec2 p) {
-  return (p + 0.5f) / vec2(kW, kH);
+  return (p + 0.5f) / vec2(kCpuHistoryFilterW, kCpuHistoryFilterH);
 }
 
 TEST(CpuResolve, FiltersReproduceLinearRampsExactly) {
@@ -79,8 +79,8 @@ TEST(CpuResolve, CatmullRomInterpolatesTexelCentresExactly) {
   for (const Named& f : {kCatmullRom9, kCatmullRom5, kCatmullRom16}) {
     const double bound = f.name == kCatmullRom16.name ? 1e-5 : 5e-5;
     double worst = 0.0;
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
+    for (int y = 0; y < kCpuHistoryFilterH; ++y)
+      for (int x = 0; x < kCpuHistoryFilterW; ++x) {
         const vec3 got = f.filter(img, toUv(vec2(x, y)));
         for (int c = 0; c < 3; ++c)
           worst = std::max(worst, double(std::abs(got[c] - img.at(x, y, c))));
@@ -94,8 +94,8 @@ TEST(CpuResolve, BSplineSmoothsTexelCentresButReproducesConstants) {
     return 8.0f * vec3(hashUnit(22, x, y, 0), hashUnit(22, x, y, 1), hashUnit(22, x, y, 2));
   });
   int smoothed = 0;
-  for (int y = 1; y < kH - 1; ++y)
-    for (int x = 1; x < kW - 1; ++x) {
+  for (int y = 1; y < kCpuHistoryFilterH - 1; ++y)
+    for (int x = 1; x < kCpuHistoryFilterW - 1; ++x) {
       const vec3 got = cpu::historyBSpline(noise, toUv(vec2(x, y)));
       for (int c = 0; c < 3; ++c) {
         // At a texel centre the cubic B-spline weighs the 3x3 texels by (1, 4, 1) / 6 per axis.
@@ -107,7 +107,7 @@ TEST(CpuResolve, BSplineSmoothsTexelCentresButReproducesConstants) {
         smoothed += std::abs(got[c] - noise.at(x, y, c)) > 0.05f;
       }
     }
-  EXPECT_GT(smoothed, (kW - 2) * (kH - 2) * 3 * 9 / 10);  // it does not interpolate
+  EXPECT_GT(smoothed, (kCpuHistoryFilterW - 2) * (kCpuHistoryFilterH - 2) * 3 * 9 / 10);  // it does not interpolate
   // Constants pass every filter unchanged, edges (clamped texels) included.
   const Image flat = fill([](int, int) { return vec3(3.7f, 0.25f, 1e3f); });
   for (const Named& f : {kBilinear, kBSpline, kCatmullRom9, kCatmullRom5, kCatmullRom16})

@@ -11,7 +11,7 @@ namespace {
 
 using namespace posttest;
 
-constexpr int kW = 64, kH = 32;
+constexpr int kPostFxaaW = 64, kPostFxaaH = 32;
 
 // The half-plane below the line y = slope * x + offset (y down) is white.
 float lineY(float x) {
@@ -19,7 +19,7 @@ float lineY(float x) {
 }
 
 Image aliasedEdge() {
-  return grey(kW, kH,
+  return grey(kPostFxaaW, kPostFxaaH,
               [](int x, int y) { return float(y) + 0.5f > lineY(float(x) + 0.5f) ? 1.0f : 0.0f; });
 }
 
@@ -41,8 +41,8 @@ float tonemap(float c) {
 float edgeError(const Image& img) {
   double sum = 0.0;
   int n = 0;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 2; x < kW - 2; ++x) {
+  for (int y = 0; y < kPostFxaaH; ++y)
+    for (int x = 2; x < kPostFxaaW - 2; ++x) {
       const float dist = std::fabs(float(y) + 0.5f - lineY(float(x) + 0.5f));
       if (dist > 2.0f) continue;
       sum += std::fabs(tonemap(img.at(x, y)) - coverage(x, y) * tonemap(1.0f));
@@ -60,7 +60,7 @@ TEST(Fxaa, MovesAnAliasedEdgeTowardItsCoverage) {
   EXPECT_LT(after, 0.6f * before);
   // The staircase flattens: along a row, the step at the edge gets smaller.
   float stepBefore = 0.0f, stepAfter = 0.0f;
-  for (int x = 4; x < kW - 4; ++x) {
+  for (int x = 4; x < kPostFxaaW - 4; ++x) {
     const int y = int(lineY(float(x) + 0.5f));
     for (int j = y - 1; j <= y + 1; ++j) {
       stepBefore = std::max(stepBefore, std::fabs(in.at(x + 1, j) - in.at(x, j)));
@@ -78,8 +78,8 @@ TEST(Fxaa, LeavesFlatImagesAndPixelsAwayFromEdgesBitExact) {
   const Image in = roundedToHalf(aliasedEdge());
   const Image out = runFilter(pass, in);
   int checked = 0;
-  for (int y = 1; y < kH - 1; ++y)
-    for (int x = 1; x < kW - 1; ++x) {
+  for (int y = 1; y < kPostFxaaH - 1; ++y)
+    for (int x = 1; x < kPostFxaaW - 1; ++x) {
       bool uniform = true;
       for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) uniform &= in.at(x + i, y + j) == in.at(x, y);

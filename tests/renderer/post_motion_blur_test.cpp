@@ -12,19 +12,19 @@ namespace {
 
 using namespace posttest;
 
-constexpr int kW = 64, kH = 16, kEdge = 32;
+constexpr int kPostMotionBlurW = 64, kPostMotionBlurH = 16, kPostMotionBlurEdge = 32;
 
 struct Inputs {
-  Image color = grey(kW, kH, [](int x, int) { return x < kEdge ? 0.0f : 1.0f; });
-  Image velocity = Image(kW, kH, 2, 0.0f);
-  Image depth = Image(kW, kH, 1, 0.5f);
+  Image color = grey(kPostMotionBlurW, kPostMotionBlurH, [](int x, int) { return x < kPostMotionBlurEdge ? 0.0f : 1.0f; });
+  Image velocity = Image(kPostMotionBlurW, kPostMotionBlurH, 2, 0.0f);
+  Image depth = Image(kPostMotionBlurW, kPostMotionBlurH, 1, 0.5f);
 };
 
-// Rows [0, kH/2) move by `v` (render pixels); the rest is static.
+// Rows [0, kPostMotionBlurH/2) move by `v` (render pixels); the rest is static.
 Inputs movingTopHalf(glm::vec2 v) {
   Inputs in;
-  for (int y = 0; y < kH / 2; ++y)
-    for (int x = 0; x < kW; ++x) {
+  for (int y = 0; y < kPostMotionBlurH / 2; ++y)
+    for (int x = 0; x < kPostMotionBlurW; ++x) {
       in.velocity.at(x, y, 0) = v.x;
       in.velocity.at(x, y, 1) = v.y;
     }
@@ -36,9 +36,9 @@ Image blur(const MotionBlurSettings& s, const Inputs& in) {
   auto color = test::uploadFloatImage(in.color, VK_FORMAT_R16G16B16A16_SFLOAT, "color");
   auto velocity = test::uploadFloatImage(in.velocity, VK_FORMAT_R16G16_SFLOAT, "velocity");
   auto depth = test::uploadFloatImage(in.depth, VK_FORMAT_R32_SFLOAT, "depth");
-  auto out = makePostImage(test::gpu(), "blurred", {kW, kH});
+  auto out = makePostImage(test::gpu(), "blurred", {kPostMotionBlurW, kPostMotionBlurH});
   VkCommandBuffer cmd = test::gpu().beginCommands();
-  pass.record(cmd, color, velocity, depth, out, {kW, kH});
+  pass.record(cmd, color, velocity, depth, out, {kPostMotionBlurW, kPostMotionBlurH});
   test::gpu().submitAndWait(cmd);
   return test::downloadImage(out);
 }
@@ -46,12 +46,12 @@ Image blur(const MotionBlurSettings& s, const Inputs& in) {
 TEST(MotionBlur, StaticPixelsAreCopiedBitForBit) {
   Inputs in = movingTopHalf({8.0f, 0.0f});
   // Values that need every mantissa bit of a half: any averaging would show.
-  for (int y = kH / 2; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) setPixel(in.color, x, y, halfRound(0.1f + 0.37f * float(x ^ y)));
+  for (int y = kPostMotionBlurH / 2; y < kPostMotionBlurH; ++y)
+    for (int x = 0; x < kPostMotionBlurW; ++x) setPixel(in.color, x, y, halfRound(0.1f + 0.37f * float(x ^ y)));
   const Image out = blur({16, 1.0f, false}, in);
   const Image expected = roundedToHalf(in.color);
-  for (int y = kH / 2; y < kH; ++y)
-    for (int x = 0; x < kW; ++x)
+  for (int y = kPostMotionBlurH / 2; y < kPostMotionBlurH; ++y)
+    for (int x = 0; x < kPostMotionBlurW; ++x)
       for (int c = 0; c < 4; ++c)
         ASSERT_TRUE(bitEqual(out.at(x, y, c), expected.at(x, y, c))) << x << "," << y;
 }
@@ -59,12 +59,12 @@ TEST(MotionBlur, StaticPixelsAreCopiedBitForBit) {
 TEST(MotionBlur, MovingStepEdgeBecomesARampOfTheMotionLength) {
   const float length = 8.0f;
   const Image out = blur({16, 1.0f, false}, movingTopHalf({length, 0.0f}));
-  for (int y = 0; y < kH / 2; ++y) {
+  for (int y = 0; y < kPostMotionBlurH / 2; ++y) {
     int ramp = 0;
-    for (int x = 0; x < kW; ++x) {
+    for (int x = 0; x < kPostMotionBlurW; ++x) {
       // A centred box of `length` pixels over the step: the fraction of it past the edge.
       const float analytic =
-          std::clamp((float(x) + 0.5f - float(kEdge) + length / 2) / length, 0.0f, 1.0f);
+          std::clamp((float(x) + 0.5f - float(kPostMotionBlurEdge) + length / 2) / length, 0.0f, 1.0f);
       EXPECT_NEAR(out.at(x, y, 0), analytic, 1.0f / 16 + 1e-3f) << x;
       if (x > 0) {
         EXPECT_GE(out.at(x, y, 0), out.at(x - 1, y, 0));
@@ -75,26 +75,26 @@ TEST(MotionBlur, MovingStepEdgeBecomesARampOfTheMotionLength) {
     EXPECT_EQ(ramp, int(length)) << "row " << y;
   }
   // The static half keeps its hard step.
-  EXPECT_EQ(out.at(kEdge - 1, kH - 1, 0), 0.0f);
-  EXPECT_EQ(out.at(kEdge, kH - 1, 0), 1.0f);
+  EXPECT_EQ(out.at(kPostMotionBlurEdge - 1, kPostMotionBlurH - 1, 0), 0.0f);
+  EXPECT_EQ(out.at(kPostMotionBlurEdge, kPostMotionBlurH - 1, 0), 1.0f);
 }
 
 TEST(MotionBlur, ScaleShortensTheRampAndVerticalMotionLeavesAVerticalEdgeAlone) {
   const Image half = blur({16, 0.5f, false}, movingTopHalf({8.0f, 0.0f}));
   int ramp = 0;
-  for (int x = 0; x < kW; ++x) ramp += half.at(x, 0, 0) > 0.0f && half.at(x, 0, 0) < 1.0f;
+  for (int x = 0; x < kPostMotionBlurW; ++x) ramp += half.at(x, 0, 0) > 0.0f && half.at(x, 0, 0) < 1.0f;
   EXPECT_EQ(ramp, 4);
   // Motion along the edge samples the same column: nothing changes.
   const Image along = blur({16, 1.0f, false}, movingTopHalf({0.0f, 6.0f}));
-  EXPECT_EQ(along.at(kEdge - 1, 2, 0), 0.0f);
-  EXPECT_EQ(along.at(kEdge, 2, 0), 1.0f);
+  EXPECT_EQ(along.at(kPostMotionBlurEdge - 1, 2, 0), 0.0f);
+  EXPECT_EQ(along.at(kPostMotionBlurEdge, 2, 0), 1.0f);
 }
 
 TEST(MotionBlur, VelocityInAlphaHoldsTheUnscaledSpeedInRenderPixels) {
   const Image out = blur({8, 0.5f, true}, movingTopHalf({3.0f, -4.0f}));
-  for (int x = 0; x < kW; x += 7) {
+  for (int x = 0; x < kPostMotionBlurW; x += 7) {
     EXPECT_FLOAT_EQ(out.at(x, 0, 3), 5.0f) << x;
-    EXPECT_EQ(out.at(x, kH - 1, 3), 0.0f) << x;
+    EXPECT_EQ(out.at(x, kPostMotionBlurH - 1, 3), 0.0f) << x;
   }
 }
 
@@ -102,13 +102,13 @@ TEST(MotionBlur, NearerSurfacesDoNotBleedIntoTheBlurOfFartherOnes) {
   // Right of the edge a near (reversed Z 0.9) white surface, left a far black one;
   // everything moves by 8 px.
   Inputs in = movingTopHalf({8.0f, 0.0f});
-  for (int y = 0; y < kH; ++y)
-    for (int x = kEdge; x < kW; ++x) in.depth.at(x, y) = 0.9f;
+  for (int y = 0; y < kPostMotionBlurH; ++y)
+    for (int x = kPostMotionBlurEdge; x < kPostMotionBlurW; ++x) in.depth.at(x, y) = 0.9f;
   const Image out = blur({16, 1.0f, false}, in);
   // The far side stays black; the near side's blur still takes in the far side.
-  for (int x = 0; x < kEdge; ++x) EXPECT_EQ(out.at(x, 0, 0), 0.0f) << x;
-  EXPECT_LT(out.at(kEdge, 0, 0), 1.0f);
-  EXPECT_GT(out.at(kEdge, 0, 0), 0.0f);
+  for (int x = 0; x < kPostMotionBlurEdge; ++x) EXPECT_EQ(out.at(x, 0, 0), 0.0f) << x;
+  EXPECT_LT(out.at(kPostMotionBlurEdge, 0, 0), 1.0f);
+  EXPECT_GT(out.at(kPostMotionBlurEdge, 0, 0), 0.0f);
 }
 
 TEST(MotionBlur, NonFiniteColourOrVelocityStaysInItsPixel) {
@@ -129,8 +129,8 @@ TEST(MotionBlur, NonFiniteColourOrVelocityStaysInItsPixel) {
 
 TEST(MotionBlur, SameInputTwiceGivesIdenticalBytes) {
   Inputs in = movingTopHalf({5.3f, 1.7f});
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) in.color.at(x, y, 1) = float((x * 7 + y * 13) % 11) / 7.0f;
+  for (int y = 0; y < kPostMotionBlurH; ++y)
+    for (int x = 0; x < kPostMotionBlurW; ++x) in.color.at(x, y, 1) = float((x * 7 + y * 13) % 11) / 7.0f;
   EXPECT_TRUE(sameBits(blur({12, 0.8f, true}, in), blur({12, 0.8f, true}, in)));
 }
 

@@ -17,17 +17,17 @@ namespace {
 
 namespace cpu = test::cpu;
 
-constexpr int kW = 24, kH = 16;
+constexpr int kResolveToneWeightW = 24, kResolveToneWeightH = 16;
 
 // Black, with isolated magenta fireflies of 1000: around each, the shrunk chroma box is centred
 // on magenta (Cg = -500) while its luma range reaches down to black, so clamping the black
 // history gives Y = 0 and Cg near -440: RGB (440, -440, 440), luma about -190.
 test::SyntheticResolve magentaFireflies() {
   test::SyntheticResolve in;
-  in.current = Image(kW, kH, 4, 0.0f);
-  in.history = Image(kW, kH, 4, 0.0f);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
+  in.current = Image(kResolveToneWeightW, kResolveToneWeightH, 4, 0.0f);
+  in.history = Image(kResolveToneWeightW, kResolveToneWeightH, 4, 0.0f);
+  for (int y = 0; y < kResolveToneWeightH; ++y)
+    for (int x = 0; x < kResolveToneWeightW; ++x) {
       in.current.at(x, y, 3) = in.history.at(x, y, 3) = 1.0f;
       if (x % 4 == 2 && y % 4 == 2) in.current.at(x, y, 0) = in.current.at(x, y, 2) = 1000.0f;
     }

@@ -29,7 +29,7 @@ glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
   return glm::vec3(m * glm::vec4(p, 1.0f));
 }
 
-void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
+void expectVecNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, eps);
   EXPECT_NEAR(a.y, b.y, eps);
   EXPECT_NEAR(a.z, b.z, eps);
@@ -48,8 +48,8 @@ TEST(GltfLoad, TexturedBoxWithEmbeddedPng) {
   ASSERT_EQ(l.scene.meshes[0].primitives.size(), 1u);
   EXPECT_EQ(l.scene.meshes[0].primitives[0].indexCount, 36u);
   EXPECT_EQ(l.scene.vertices.size(), 24u);
-  expectNear(l.scene.meshes[0].boundsMin, glm::vec3(-0.5f));
-  expectNear(l.scene.meshes[0].boundsMax, glm::vec3(0.5f));
+  expectVecNear(l.scene.meshes[0].boundsMin, glm::vec3(-0.5f));
+  expectVecNear(l.scene.meshes[0].boundsMax, glm::vec3(0.5f));
   ASSERT_EQ(l.scene.materials.size(), 1u);
   const Material& m = l.scene.materials[0];
   EXPECT_EQ(m.baseColorFactor, glm::vec4(1.0f, 0.5f, 0.5f, 1.0f));
@@ -72,19 +72,19 @@ TEST(GltfLoad, HierarchyTransformsComposeParentFirst) {
   EXPECT_EQ(draws[0].node, 1);
   EXPECT_EQ(draws[1].node, 3);
   // box: T(1,0,0) S(2) Ry(90): +x goes to -z.
-  expectNear(apply(draws[0].transform, {1, 0, 0}), {1, 0, -2});
+  expectVecNear(apply(draws[0].transform, {1, 0, 0}), {1, 0, -2});
   // box2: root * (T(0,3,0) Rx(90)) * T(0,0,1): origin -> (0,-1,0) + (0,3,0) -> x2 +(1,0,0).
-  expectNear(apply(draws[1].transform, {0, 0, 0}), {1, 4, 0});
+  expectVecNear(apply(draws[1].transform, {0, 0, 0}), {1, 4, 0});
   // The matrix node decomposes to TRS.
   const Node& lifted = l.model.nodes[2];
-  expectNear(lifted.translation, {0, 3, 0});
-  expectNear(lifted.scale, {1, 1, 1});
+  expectVecNear(lifted.translation, {0, 3, 0});
+  expectVecNear(lifted.scale, {1, 1, 1});
   const glm::quat rx = glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0));
   EXPECT_NEAR(std::fabs(glm::dot(lifted.rotation, rx)), 1.0f, 1e-5f);
   glm::vec3 lo, hi;
   modelBounds(l.scene, 0, lo, hi);
-  expectNear(lo, {0, -1, -1});
-  expectNear(hi, {2, 5, 1});
+  expectVecNear(lo, {0, -1, -1});
+  expectVecNear(hi, {2, 5, 1});
 }
 
 TEST(GltfLoad, DecomposeHandlesScaleAndMirroring) {

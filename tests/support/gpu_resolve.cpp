@@ -62,7 +62,8 @@ GpuResolveResult gpuResolve(const spec::CaseSpec& spec, const SyntheticResolve& 
   out.output = downloadImage(pass.output());
   out.current = roundToHalf(in.current);
   const Image v = roundToHalf(velocity);
-  out.velocityPx = {v.data[0], v.data[1]};
+  if (v.data.size() < 2) throw std::logic_error("gpuResolve: the velocity image has no pixel");
+  out.velocityPx = {v.data.at(0), v.data.at(1)};
   return out;
 }
 

@@ -2,22 +2,12 @@
 
 #include <cstring>
 
+#include "passes/storage_image.h"
 #include "vk/context.h"
 
 namespace taa {
 
 namespace {
-
-vk::Image storageImage(vk::Context& ctx, const char* name, glm::ivec2 size, VkFormat format) {
-  vk::ImageDesc d;
-  d.name = name;
-  d.width = uint32_t(size.x);
-  d.height = uint32_t(size.y);
-  d.format = format;
-  d.usage =
-      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  return vk::Image(ctx, d);
-}
 
 vk::SpecConstants specConstants(const spec::CaseSpec& spec, bool hasHistory) {
   const auto& a = spec.adaptive;
@@ -30,7 +20,7 @@ vk::SpecConstants specConstants(const spec::CaseSpec& spec, bool hasHistory) {
   return c;
 }
 
-std::vector<VkDescriptorType> bindingTypes() {
+std::vector<VkDescriptorType> segmentationBindings() {
   std::vector<VkDescriptorType> b(SEG_BINDING_COUNT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
   b[SEG_BINDING_UNIFORMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   b[SEG_BINDING_COUNTER] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -57,9 +47,9 @@ gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec,
 SegmentationPass::SegmentationPass(vk::Context& ctx, const spec::CaseSpec& spec)
     : ctx_(ctx),
       spec_(spec),
-      withHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", bindingTypes(), 0,
+      withHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", segmentationBindings(), 0,
                                              specConstants(spec, true))),
-      withoutHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", bindingTypes(),
+      withoutHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", segmentationBindings(),
                                                 0, specConstants(spec, false))),
       uniforms_(ctx, sizeof(gpu::SegmentationUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       counts_(ctx, sizeof(gpu::AdaptiveCounts), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),

@@ -13,7 +13,7 @@ namespace taa {
 
 namespace {
 
-std::vector<VkDescriptorType> bindingTypes() {
+std::vector<VkDescriptorType> traceBindings() {
   std::vector<VkDescriptorType> b(TRACE_BINDING_COUNT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   b[TRACE_BINDING_FRAME] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   b[TRACE_BINDING_PARAMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -131,7 +131,7 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
   vk::SpecConstants c;
   c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples).set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod);
   pipeline_ =
-      vk::createComputePipeline(ctx, "adaptive_trace.comp", bindingTypes(), 0, c, bindingCounts());
+      vk::createComputePipeline(ctx, "adaptive_trace.comp", traceBindings(), 0, c, bindingCounts());
 }
 
 std::string TracePass::describe() const {

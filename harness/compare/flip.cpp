@@ -117,6 +117,26 @@ float srgbToLinear(float v) {
   return c > 0.04045f ? powPositive((c + 0.055f) * (1.0f / 1.055f), 2.4f) : c * (1.0f / 12.92f);
 }
 
+// HDR-FLIP's per-exposure mapping of linear samples, in place. A NaN anywhere shows the pixel
+// magenta, as the harness's PNGs do; negatives count as 0 and +Inf as a value the curve has
+// saturated long before. Written without branches so the loop vectorizes.
+void exposeAndToneMap(int w, const InputMapping& m, float* __restrict r, float* __restrict g,
+                      float* __restrict b) {
+  const float* t = m.toneMap;
+  auto curve = [&](float sample) {
+    const float v = std::clamp(sample * m.exposure, 0.0f, 1e18f);
+    return std::clamp((v * v * t[0] + v * t[1] + t[2]) / (v * v * t[3] + v * t[4] + t[5]), 0.0f,
+                      1.0f);
+  };
+  for (int x = 0; x < w; ++x) {
+    const bool nan = std::isnan(r[x]) | std::isnan(g[x]) | std::isnan(b[x]);
+    const float mr = curve(r[x]), mg = curve(g[x]), mb = curve(b[x]);
+    r[x] = nan ? 1.0f : mr;
+    g[x] = nan ? 0.0f : mg;
+    b[x] = nan ? 1.0f : mb;
+  }
+}
+
 // Source row y of `image` as linear RGB in [0, 1], channel-planar.
 void linearRow(const Image& image, int y, const InputMapping& m, Side& s) {
   const int w = image.width;
@@ -132,18 +152,7 @@ void linearRow(const Image& image, int y, const InputMapping& m, Side& s) {
       for (int x = 0; x < w; ++x) plane[size_t(x)] = srgbToLinear(plane[size_t(x)]);
     return;
   }
-  const float* t = m.toneMap;
-  for (int x = 0; x < w; ++x) {
-    // A NaN anywhere shows the pixel magenta, as the harness's PNGs do; negatives count as 0 and
-    // +Inf as a value the curve has saturated long before.
-    const bool nan = std::isnan(s.rgb[0][size_t(x)]) || std::isnan(s.rgb[1][size_t(x)]) ||
-                     std::isnan(s.rgb[2][size_t(x)]);
-    for (int c = 0; c < 3; ++c) {
-      const float v = std::clamp(s.rgb[c][size_t(x)] * m.exposure, 0.0f, 1e18f);
-      const float mapped = (v * v * t[0] + v * t[1] + t[2]) / (v * v * t[3] + v * t[4] + t[5]);
-      s.rgb[c][size_t(x)] = nan ? (c == 1 ? 0.0f : 1.0f) : std::clamp(mapped, 0.0f, 1.0f);
-    }
-  }
+  exposeAndToneMap(w, m, s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data());
 }
 
 // Linear RGB to the opponent planes the filters read. __restrict (on parameters, where compilers

@@ -18,5 +18,6 @@ int cmdBless(const Args& args);
 int cmdNewCase(const Args& args);
 int cmdSweep(const Args& args);
 int cmdBake(const Args& args);
+int cmdCompare(const Args& args);
 
 }  // namespace taa::cli

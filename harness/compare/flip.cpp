@@ -1,70 +1,61 @@
+// The fast LDR-FLIP: the algorithm of flip.h in float, with the separable filters fused per row.
+//
+// Per image, each source row is converted once to the four planes the filters read (Y, Cx, Cz of
+// YCxCz and luminance), filtered horizontally into seven planes (three CSF channels, the second
+// blue-yellow CSF term, and the Gaussian, first and second derivative of luminance) held in a ring
+// of 2R + 1 rows, R the larger filter radius. Each output row then takes its vertical passes from
+// the ring, converts to Hunt-adjusted Lab and feature magnitudes, and is compared with the other
+// image's row at once. Nothing image-sized is allocated but the error map.
+//
+// Rows are split into strips that threads claim in turn; a strip re-filters the R rows above and
+// below it horizontally. Every row's horizontal result depends only on that row, and every output
+// pixel's vertical sums run over the same taps in the same order, so each value is the same
+// whatever the strip split or thread count (tests/compare/flip_fast_test.cpp checks it).
 #include "compare/flip.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <memory>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
+#include "compare/flip_common.h"
+#include "compare/flip_core.h"
+#include "compare/flip_math.h"
+#include "compare/parallel.h"
 #include "core/image_io.h"
 
 namespace taa::compare {
 
+namespace flipdetail {
+
 namespace {
 
-// Constants of the paper (section 3) and its supplementary material.
-constexpr double kQc = 0.7;  // colour error exponent
-// The feature exponent qf = 0.5 appears as a square root in flipLdr.
-constexpr double kPc = 0.4;                  // share of cmax mapped onto [0, pt)
-constexpr double kPt = 0.95;                 // error value at pc * cmax
-constexpr double kEdgePeakToTrough = 0.082;  // degrees; twice the detector's sigma
+using flipmath::cbrtPositive;
+using flipmath::powPositive;
 
-// D65 white in XYZ and the sRGB primaries' matrices (exact rational forms of IEC 61966-2-1).
-constexpr double kWhite[3] = {0.950428545, 1.0, 1.088900371};
-constexpr double kRgbToXyz[3][3] = {
-    {10135552.0 / 24577794.0, 8788810.0 / 24577794.0, 4435075.0 / 24577794.0},
-    {2613072.0 / 12288897.0, 8788810.0 / 12288897.0, 887015.0 / 12288897.0},
-    {1425312.0 / 73733382.0, 8788810.0 / 73733382.0, 70074185.0 / 73733382.0}};
-constexpr double kXyzToRgb[3][3] = {{3.241003275, -1.537398934, -0.498615861},
-                                    {-0.969224334, 1.875930071, 0.041554224},
-                                    {0.055639423, -0.204011202, 1.057148933}};
-
-struct Plane {
-  int w = 0;
-  int h = 0;
-  std::vector<double> v;
-  Plane() = default;
-  Plane(int width, int height) : w(width), h(height), v(size_t(width) * size_t(height), 0.0) {}
-  double* row(int y) { return v.data() + size_t(y) * size_t(w); }
-  const double* row(int y) const { return v.data() + size_t(y) * size_t(w); }
-};
-
-// A centred kernel that is even (k(-i) = k(i)) or odd (k(-i) = -k(i)), stored from its centre
-// outwards. Every FLIP filter is one or the other, and folding the mirrored taps halves the
-// multiplications. Odd kernels sum to zero by construction; `zeroSum` marks an even one that does
-// in exact arithmetic (the second-derivative detector): it is applied as
-// sum_i k(i) * ((in(x + i) - in(x)) + (in(x - i) - in(x))), which is the same filter but gives
-// exactly zero on flat input. That matters because FLIP takes the square root of feature
-// differences and would turn a rounding residue of 1e-17 into a visible error.
-struct Kernel {
-  std::vector<double> w;  // w[i]: weight at offset +i
+struct FloatKernel {
+  std::vector<float> w;  // from the centre outwards, as Kernel
   bool odd = false;
   bool zeroSum = false;
   int radius() const { return int(w.size()) - 1; }
+  explicit FloatKernel(const Kernel& k) : odd(k.odd), zeroSum(k.zeroSum) {
+    for (double v : k.w) w.push_back(float(v));
+  }
 };
 
-// dst[x] = sum_i k(i) * at(i)[x] for i in [-r, r] (a correlation), where at(i) is the source
-// sequence shifted by i. Taps are accumulated over the whole row so the inner loops vectorize.
+// dst[x] = sum_i k(i) * at(i)[x] for i in [-r, r]: a correlation, at(i) the source shifted by i.
+// Taps are accumulated over the whole row (outer loop over taps) so the inner loops vectorize.
 template <class At>
-void applyKernel(const Kernel& k, int n, At at, double* dst) {
-  const double* c = at(0);
-  const double w0 = k.odd || k.zeroSum ? 0.0 : k.w[0];
+void applyKernel(const FloatKernel& k, int n, At at, float* dst) {
+  const float* c = at(0);
+  const float w0 = k.odd || k.zeroSum ? 0.0f : k.w[0];
   for (int x = 0; x < n; ++x) dst[x] = w0 * c[x];
   for (int i = 1; i <= k.radius(); ++i) {
-    const double* plus = at(i);
-    const double* minus = at(-i);
-    const double wi = k.w[size_t(i)];
+    const float* plus = at(i);
+    const float* minus = at(-i);
+    const float wi = k.w[size_t(i)];
     if (k.odd) {
       for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] - minus[x]);
     } else if (k.zeroSum) {
@@ -75,298 +66,300 @@ void applyKernel(const Kernel& k, int n, At at, double* dst) {
   }
 }
 
-// Along rows, clamp-to-edge.
-void filterRows(const Plane& in, const Kernel& k, Plane& out) {
-  const int r = k.radius();
-  out = Plane(in.w, in.h);
-  std::vector<double> padded(size_t(in.w) + 2 * size_t(r));
-  for (int y = 0; y < in.h; ++y) {
-    const double* src = in.row(y);
-    for (int i = 0; i < int(padded.size()); ++i) {
-      padded[size_t(i)] = src[std::clamp(i - r, 0, in.w - 1)];
-    }
-    applyKernel(
-        k, in.w, [&](int i) { return padded.data() + r + i; }, out.row(y));
-  }
-}
+struct FloatKernels {
+  FloatKernel csfH[4];  // Y, Cx, Cz first term, Cz second term
+  FloatKernel csfV[4];
+  FloatKernel gauss, first, second;
+  int radius;  // the larger of the CSF and feature radii: the ring's half height
 
-// Along columns, clamp-to-edge; whole rows at a time so memory is walked linearly.
-void filterCols(const Plane& in, const Kernel& k, Plane& out) {
-  out = Plane(in.w, in.h);
-  for (int y = 0; y < in.h; ++y) {
-    applyKernel(
-        k, in.w, [&](int i) { return in.row(std::clamp(y + i, 0, in.h - 1)); }, out.row(y));
-  }
-}
-
-struct CsfTerm {
-  Kernel horizontal;  // carries the term's weight and the kernel's normalization
-  Kernel vertical;
+  explicit FloatKernels(const Kernels& k)
+      : csfH{FloatKernel(k.csf[0][0].horizontal), FloatKernel(k.csf[1][0].horizontal),
+             FloatKernel(k.csf[2][0].horizontal), FloatKernel(k.csf[2][1].horizontal)},
+        csfV{FloatKernel(k.csf[0][0].vertical), FloatKernel(k.csf[1][0].vertical),
+             FloatKernel(k.csf[2][0].vertical), FloatKernel(k.csf[2][1].vertical)},
+        gauss(k.features.gauss),
+        first(k.features.first),
+        second(k.features.second),
+        radius(std::max(csfH[0].radius(), gauss.radius())) {}
 };
 
-// The contrast sensitivity kernel of one opponent channel as separable terms. The 2D kernel is
-// sum_i a_i sqrt(pi/b_i) g_i(x) g_i(y) / S, with g_i(x) = exp(-pi^2 (x/ppd)^2 / b_i) and S its
-// sum over the square, so each term factors into a row and a column pass.
-std::vector<CsfTerm> csfKernel(double ppd, std::initializer_list<std::pair<double, double>> ab) {
-  const double maxB = 0.04;  // the widest of all three channels sets one common radius
-  const double pi2 = std::numbers::pi * std::numbers::pi;
-  const int r = int(std::ceil(3.0 * std::sqrt(maxB / (2.0 * pi2)) * ppd));
-  std::vector<CsfTerm> terms;
-  double total = 0.0;
-  for (const auto& [a, b] : ab) {
-    CsfTerm t;
-    double sum = 0.0;
-    for (int x = 0; x <= r; ++x) {
-      const double deg = x / ppd;
-      t.vertical.w.push_back(std::exp(-pi2 * deg * deg / b));
-      sum += (x == 0 ? 1.0 : 2.0) * t.vertical.w.back();
-    }
-    const double s = a * std::sqrt(std::numbers::pi / b);
-    total += s * sum * sum;
-    t.horizontal.w = t.vertical.w;
-    for (double& v : t.horizontal.w) v *= s;
-    terms.push_back(std::move(t));
-  }
-  for (CsfTerm& t : terms) {
-    for (double& v : t.horizontal.w) v /= total;
-  }
-  return terms;
-}
+enum Plane { kY, kCx, kCz1, kCz2, kGauss, kFirst, kSecond, kPlanes };
 
-void applyCsf(const Plane& in, const std::vector<CsfTerm>& terms, Plane& out) {
-  Plane rows;
-  Plane cols;
-  out = Plane(in.w, in.h);
-  for (const CsfTerm& t : terms) {
-    filterRows(in, t.horizontal, rows);
-    filterCols(rows, t.vertical, cols);
-    for (size_t i = 0; i < out.v.size(); ++i) out.v[i] += cols.v[i];
-  }
-}
+// One image's scratch rows in one worker.
+struct Side {
+  int w = 0;
+  int slots = 0;
+  std::vector<float> pad[4];  // Y, Cx, Cz, luminance of one row, clamp-padded by radius
+  std::vector<float> ring;    // kPlanes x slots x w horizontally filtered rows
+  std::vector<float> rgb[3];  // one row of linear RGB
+  std::vector<float> acc[7];  // vertical results: Y, Cx, Cz, edge x/y, point x/y
+  std::vector<float> tmp;     // the second Cz term
+  std::vector<float> lab[3];  // Hunt-adjusted Lab of the output row
+  std::vector<float> edge, point;
 
-struct FeatureKernels {
-  Kernel gauss;   // normalized to sum 1
-  Kernel first;   // positive weights sum to 1, negative to -1
-  Kernel second;  // likewise
+  Side(int width, int radius) : w(width), slots(2 * radius + 1) {
+    for (auto& p : pad) p.resize(size_t(width + 2 * radius));
+    ring.resize(size_t(kPlanes) * size_t(slots) * size_t(width));
+    for (auto& v : rgb) v.resize(size_t(width));
+    for (auto& v : acc) v.resize(size_t(width));
+    for (auto& v : lab) v.resize(size_t(width));
+    tmp.resize(size_t(width));
+    edge.resize(size_t(width));
+    point.resize(size_t(width));
+  }
+  float* ringRow(int plane, int slot) {
+    return ring.data() + (size_t(plane) * size_t(slots) + size_t(slot)) * size_t(w);
+  }
 };
 
-// The 2D detectors are d(x) * e(y) with e > 0, so normalizing positive and negative 2D weights
-// separately equals normalizing d's signed parts in 1D and e to sum 1.
-FeatureKernels featureKernels(double ppd) {
-  const double sd = 0.5 * kEdgePeakToTrough * ppd;
-  const int r = int(std::ceil(3.0 * sd));
-  FeatureKernels k;
-  k.first.odd = true;
-  k.second.zeroSum = true;
-  double eSum = 0.0, firstSide = 0.0, secondPos = 0.0, secondNeg = 0.0;
-  for (int x = 0; x <= r; ++x) {
-    // x == 0 spelled out so a vanishing sigma (tiny ppd) cannot produce 0/0.
-    const double x2 = double(x) * double(x);
-    const double g = x == 0 ? 1.0 : std::exp(-x2 / (2.0 * sd * sd));
-    const double second = ((x == 0 ? 0.0 : x2 / (sd * sd)) - 1.0) * g;
-    const double mirrored = x == 0 ? 1.0 : 2.0;
-    k.gauss.w.push_back(g);
-    k.first.w.push_back(-x * g);
-    k.second.w.push_back(second);
-    eSum += mirrored * g;
-    firstSide += x * g;  // both signs of the odd kernel have this magnitude
-    (second > 0.0 ? secondPos : secondNeg) += mirrored * std::fabs(second);
-  }
-  for (double& v : k.gauss.w) v /= eSum;
-  for (double& v : k.first.w) v = firstSide > 0.0 ? v / firstSide : 0.0;
-  for (double& v : k.second.w) {
-    const double d = v > 0.0 ? secondPos : secondNeg;
-    v = d > 0.0 ? v / d : 0.0;
-  }
-  return k;
+float srgbToLinear(float v) {
+  const float c = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);
+  return c > 0.04045f ? powPositive((c + 0.055f) * (1.0f / 1.055f), 2.4f) : c * (1.0f / 12.92f);
 }
 
-double srgbToLinear(double c) {
-  return c > 0.04045 ? std::pow((c + 0.055) / 1.055, 2.4) : c / 12.92;
-}
-
-void mul3(const double m[3][3], const double in[3], double out[3]) {
-  for (int i = 0; i < 3; ++i) out[i] = m[i][0] * in[0] + m[i][1] * in[1] + m[i][2] * in[2];
-}
-
-double labF(double t) {
-  constexpr double delta = 6.0 / 29.0;
-  return t > delta * delta * delta ? std::cbrt(t) : t / (3.0 * delta * delta) + 4.0 / 29.0;
-}
-
-// Linear RGB to Hunt-adjusted CIELAB.
-void huntLab(const double rgb[3], double out[3]) {
-  double xyz[3];
-  mul3(kRgbToXyz, rgb, xyz);
-  const double fx = labF(xyz[0] / kWhite[0]);
-  const double fy = labF(xyz[1] / kWhite[1]);
-  const double fz = labF(xyz[2] / kWhite[2]);
-  const double l = 116.0 * fy - 16.0;
-  out[0] = l;
-  out[1] = 0.01 * l * 500.0 * (fx - fy);
-  out[2] = 0.01 * l * 200.0 * (fy - fz);
-}
-
-double hyab(const double a[3], const double b[3]) {
-  const double da = a[1] - b[1];
-  const double db = a[2] - b[2];
-  return std::fabs(a[0] - b[0]) + std::sqrt(da * da + db * db);
-}
-
-double cmax() {
-  const double green[3] = {0.0, 1.0, 0.0};
-  const double blue[3] = {0.0, 0.0, 1.0};
-  double g[3], b[3];
-  huntLab(green, g);
-  huntLab(blue, b);
-  return std::pow(hyab(g, b), kQc);
-}
-
-// What one image contributes to the per-pixel comparison.
-struct Prepared {
-  Plane lab[3];  // Hunt-adjusted L*a*b* of the CSF-filtered image
-  Plane edge;    // length of the (x, y) edge response
-  Plane point;   // length of the (x, y) point response
-};
-
-struct Kernels {
-  std::vector<CsfTerm> csf[3];  // achromatic, red-green, blue-yellow
-  FeatureKernels features;
-
-  explicit Kernels(double ppd)
-      : csf{csfKernel(ppd, {{1.0, 0.0047}}), csfKernel(ppd, {{1.0, 0.0053}}),
-            csfKernel(ppd, {{34.1, 0.04}, {13.5, 0.025}})},
-        features(featureKernels(ppd)) {}
-};
-
-Prepared prepare(const Image& srgb, const Kernels& kernels) {
-  const int w = srgb.width;
-  const int h = srgb.height;
-  const bool grey = srgb.channels < 3;
-  Plane opp[3] = {Plane(w, h), Plane(w, h), Plane(w, h)};
-  Plane luminance(w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      double rgb[3];
-      for (int c = 0; c < 3; ++c) {
-        const double v = srgb.at(x, y, grey ? 0 : c);
-        rgb[c] = srgbToLinear(std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0));
-      }
-      double xyz[3];
-      mul3(kRgbToXyz, rgb, xyz);
-      const double yy = xyz[1] / kWhite[1];
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      opp[0].v[i] = 116.0 * yy - 16.0;
-      opp[1].v[i] = 500.0 * (xyz[0] / kWhite[0] - yy);
-      opp[2].v[i] = 200.0 * (yy - xyz[2] / kWhite[2]);
-      luminance.v[i] = yy;
-    }
-  }
-
-  Prepared p;
-  // Colour pipeline.
-  Plane filtered[3];
-  for (int c = 0; c < 3; ++c) applyCsf(opp[c], kernels.csf[c], filtered[c]);
-  for (int c = 0; c < 3; ++c) p.lab[c] = Plane(w, h);
-  for (size_t i = 0; i < luminance.v.size(); ++i) {
-    const double yy = (filtered[0].v[i] + 16.0) / 116.0;
-    const double xyz[3] = {(yy + filtered[1].v[i] / 500.0) * kWhite[0], yy * kWhite[1],
-                           (yy - filtered[2].v[i] / 200.0) * kWhite[2]};
-    double rgb[3];
-    mul3(kXyzToRgb, xyz, rgb);
-    for (double& c : rgb) c = std::clamp(c, 0.0, 1.0);
-    double lab[3];
-    huntLab(rgb, lab);
-    for (int c = 0; c < 3; ++c) p.lab[c].v[i] = lab[c];
-  }
-
-  // Feature pipeline: three row passes shared by four column passes.
-  const FeatureKernels& fk = kernels.features;
-  Plane rowGauss, rowFirst, rowSecond, edgeX, edgeY, pointX, pointY;
-  filterRows(luminance, fk.gauss, rowGauss);
-  filterRows(luminance, fk.first, rowFirst);
-  filterRows(luminance, fk.second, rowSecond);
-  filterCols(rowFirst, fk.gauss, edgeX);
-  filterCols(rowGauss, fk.first, edgeY);
-  filterCols(rowSecond, fk.gauss, pointX);
-  filterCols(rowGauss, fk.second, pointY);
-  p.edge = Plane(w, h);
-  p.point = Plane(w, h);
-  for (size_t i = 0; i < luminance.v.size(); ++i) {
-    p.edge.v[i] = std::sqrt(edgeX.v[i] * edgeX.v[i] + edgeY.v[i] * edgeY.v[i]);
-    p.point.v[i] = std::sqrt(pointX.v[i] * pointX.v[i] + pointY.v[i] * pointY.v[i]);
-  }
-  return p;
-}
-
-void checkInputs(const Image& a, const Image& b, const FlipOptions& options) {
-  if (!a.sameShape(b)) throw std::invalid_argument("flip: reference and test differ in shape");
-  if (a.pixelCount() == 0 || a.channels <= 0) throw std::invalid_argument("flip: empty image");
-  if (!(options.pixelsPerDegree > 0.0) || !std::isfinite(options.pixelsPerDegree)) {
-    throw std::invalid_argument("flip: pixelsPerDegree must be positive and finite, got " +
-                                std::to_string(options.pixelsPerDegree));
+// HDR-FLIP's per-exposure mapping of linear samples, in place. A NaN anywhere shows the pixel
+// magenta, as the harness's PNGs do; negatives count as 0 and +Inf as a value the curve has
+// saturated long before. Written without branches so the loop vectorizes.
+void exposeAndToneMap(int w, const InputMapping& m, float* __restrict r, float* __restrict g,
+                      float* __restrict b) {
+  const float* t = m.toneMap;
+  auto curve = [&](float sample) {
+    const float v = std::clamp(sample * m.exposure, 0.0f, 1e18f);
+    return std::clamp((v * v * t[0] + v * t[1] + t[2]) / (v * v * t[3] + v * t[4] + t[5]), 0.0f,
+                      1.0f);
+  };
+  for (int x = 0; x < w; ++x) {
+    const bool nan = std::isnan(r[x]) | std::isnan(g[x]) | std::isnan(b[x]);
+    const float mr = curve(r[x]), mg = curve(g[x]), mb = curve(b[x]);
+    r[x] = nan ? 1.0f : mr;
+    g[x] = nan ? 0.0f : mg;
+    b[x] = nan ? 1.0f : mb;
   }
 }
 
-float nearestRank(std::vector<float>& values, double percent) {
-  const size_t n = values.size();
-  const double rank = std::ceil(percent / 100.0 * double(n));
-  const size_t k = size_t(std::clamp(rank, 1.0, double(n))) - 1;
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
-  return values[k];
+// Source row y of `image` as linear RGB in [0, 1], channel-planar.
+void linearRow(const Image& image, int y, const InputMapping& m, Side& s) {
+  const int w = image.width;
+  const int ch = image.channels;
+  const float* src = image.data.data() + image.index(0, y);
+  for (int c = 0; c < 3; ++c) {
+    const int from = ch < 3 ? 0 : c;
+    float* dst = s.rgb[c].data();
+    for (int x = 0; x < w; ++x) dst[x] = src[size_t(x) * size_t(ch) + size_t(from)];
+  }
+  if (m.kind == InputMapping::Kind::Srgb) {
+    for (auto& plane : s.rgb)
+      for (int x = 0; x < w; ++x) plane[size_t(x)] = srgbToLinear(plane[size_t(x)]);
+    return;
+  }
+  exposeAndToneMap(w, m, s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data());
+}
+
+// Linear RGB to the opponent planes the filters read. __restrict (on parameters, where compilers
+// honour it) spares the vectorized loop run-time checks that seven rows do not overlap.
+void toOpponent(int w, const float* __restrict rr, const float* __restrict gg,
+                const float* __restrict bb, float* __restrict y, float* __restrict cx,
+                float* __restrict cz, float* __restrict lum) {
+  constexpr float m00 = float(kRgbToXyz[0][0] / kWhite[0]),
+                  m01 = float(kRgbToXyz[0][1] / kWhite[0]),
+                  m02 = float(kRgbToXyz[0][2] / kWhite[0]);
+  constexpr float m10 = float(kRgbToXyz[1][0]), m11 = float(kRgbToXyz[1][1]),
+                  m12 = float(kRgbToXyz[1][2]);
+  constexpr float m20 = float(kRgbToXyz[2][0] / kWhite[2]),
+                  m21 = float(kRgbToXyz[2][1] / kWhite[2]),
+                  m22 = float(kRgbToXyz[2][2] / kWhite[2]);
+  for (int x = 0; x < w; ++x) {
+    const float xn = m00 * rr[x] + m01 * gg[x] + m02 * bb[x];
+    const float yn = m10 * rr[x] + m11 * gg[x] + m12 * bb[x];
+    const float zn = m20 * rr[x] + m21 * gg[x] + m22 * bb[x];
+    y[x] = 116.0f * yn - 16.0f;
+    cx[x] = 500.0f * (xn - yn);
+    cz[x] = 200.0f * (yn - zn);
+    lum[x] = yn;
+  }
+}
+
+// Converts source row clamp(v) and filters it horizontally into ring slot `slot`.
+void horizontalRow(const Image& image, int v, int slot, const InputMapping& m,
+                   const FloatKernels& k, Side& s) {
+  const int w = image.width;
+  const int r = k.radius;
+  linearRow(image, std::clamp(v, 0, image.height - 1), m, s);
+  float* y = s.pad[0].data() + r;
+  float* cx = s.pad[1].data() + r;
+  float* cz = s.pad[2].data() + r;
+  float* lum = s.pad[3].data() + r;
+  toOpponent(w, s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(), y, cx, cz, lum);
+  for (auto& p : s.pad) {
+    std::fill(p.begin(), p.begin() + r, p[size_t(r)]);
+    std::fill(p.end() - r, p.end(), p[size_t(r + w - 1)]);
+  }
+  auto shifted = [](const float* base) { return [base](int i) { return base + i; }; };
+  applyKernel(k.csfH[0], w, shifted(y), s.ringRow(kY, slot));
+  applyKernel(k.csfH[1], w, shifted(cx), s.ringRow(kCx, slot));
+  applyKernel(k.csfH[2], w, shifted(cz), s.ringRow(kCz1, slot));
+  applyKernel(k.csfH[3], w, shifted(cz), s.ringRow(kCz2, slot));
+  applyKernel(k.gauss, w, shifted(lum), s.ringRow(kGauss, slot));
+  applyKernel(k.first, w, shifted(lum), s.ringRow(kFirst, slot));
+  applyKernel(k.second, w, shifted(lum), s.ringRow(kSecond, slot));
+}
+
+// CSF-filtered YCxCz back to linear RGB, clamped to [0, 1], then to Hunt-adjusted Lab.
+void toHuntLab(int w, const float* __restrict fy, const float* __restrict fcx,
+               const float* __restrict fcz, float* __restrict labL, float* __restrict labA,
+               float* __restrict labB) {
+  constexpr float inv[3][3] = {
+      {float(kXyzToRgb[0][0]), float(kXyzToRgb[0][1]), float(kXyzToRgb[0][2])},
+      {float(kXyzToRgb[1][0]), float(kXyzToRgb[1][1]), float(kXyzToRgb[1][2])},
+      {float(kXyzToRgb[2][0]), float(kXyzToRgb[2][1]), float(kXyzToRgb[2][2])}};
+  constexpr float fwd[3][3] = {
+      {float(kRgbToXyz[0][0] / kWhite[0]), float(kRgbToXyz[0][1] / kWhite[0]),
+       float(kRgbToXyz[0][2] / kWhite[0])},
+      {float(kRgbToXyz[1][0]), float(kRgbToXyz[1][1]), float(kRgbToXyz[1][2])},
+      {float(kRgbToXyz[2][0] / kWhite[2]), float(kRgbToXyz[2][1] / kWhite[2]),
+       float(kRgbToXyz[2][2] / kWhite[2])}};
+  constexpr float wx = float(kWhite[0]), wz = float(kWhite[2]);
+  constexpr float delta3 = float(216.0 / 24389.0);  // (6/29)^3
+  constexpr float slope = float(841.0 / 108.0);     // 1 / (3 (6/29)^2)
+  constexpr float offset = float(4.0 / 29.0);
+  auto labF = [&](float t) { return t > delta3 ? cbrtPositive(t) : t * slope + offset; };
+  for (int x = 0; x < w; ++x) {
+    const float yy = (fy[x] + 16.0f) * (1.0f / 116.0f);
+    const float xyz[3] = {(yy + fcx[x] * (1.0f / 500.0f)) * wx, yy,
+                          (yy - fcz[x] * (1.0f / 200.0f)) * wz};
+    auto row = [&](int c) {
+      const float v = inv[c][0] * xyz[0] + inv[c][1] * xyz[1] + inv[c][2] * xyz[2];
+      return std::clamp(v, 0.0f, 1.0f);
+    };
+    const float rgb[3] = {row(0), row(1), row(2)};
+    const float tx = fwd[0][0] * rgb[0] + fwd[0][1] * rgb[1] + fwd[0][2] * rgb[2];
+    const float ty = fwd[1][0] * rgb[0] + fwd[1][1] * rgb[1] + fwd[1][2] * rgb[2];
+    const float tz = fwd[2][0] * rgb[0] + fwd[2][1] * rgb[1] + fwd[2][2] * rgb[2];
+    const float lx = labF(tx), ly = labF(ty), lz = labF(tz);
+    const float l = 116.0f * ly - 16.0f;
+    labL[x] = l;
+    labA[x] = 5.0f * l * (lx - ly);  // 0.01 L * 500 (fx - fy)
+    labB[x] = 2.0f * l * (ly - lz);  // 0.01 L * 200 (fy - fz)
+  }
+}
+
+// Vertical passes for output row y (the ring holds rows y - R .. y + R), then Lab and features.
+// Vertical passes for output row y, then Lab and feature magnitudes. The ring holds virtual rows
+// y - R .. y + R, each filled from its clamped source row, so edge clamping is already done.
+void verticalRow(int y, int firstRow, const FloatKernels& k, Side& s) {
+  const int w = s.w;
+  auto rows = [&](int plane) {
+    return [&, plane](int i) { return s.ringRow(plane, (y + i - firstRow) % s.slots); };
+  };
+  applyKernel(k.csfV[0], w, rows(kY), s.acc[0].data());
+  applyKernel(k.csfV[1], w, rows(kCx), s.acc[1].data());
+  applyKernel(k.csfV[2], w, rows(kCz1), s.acc[2].data());
+  applyKernel(k.csfV[3], w, rows(kCz2), s.tmp.data());
+  for (int x = 0; x < w; ++x) s.acc[2][size_t(x)] += s.tmp[size_t(x)];
+  applyKernel(k.gauss, w, rows(kFirst), s.acc[3].data());
+  applyKernel(k.first, w, rows(kGauss), s.acc[4].data());
+  applyKernel(k.gauss, w, rows(kSecond), s.acc[5].data());
+  applyKernel(k.second, w, rows(kGauss), s.acc[6].data());
+
+  toHuntLab(w, s.acc[0].data(), s.acc[1].data(), s.acc[2].data(), s.lab[0].data(), s.lab[1].data(),
+            s.lab[2].data());
+  for (int x = 0; x < w; ++x) {
+    const float ex = s.acc[3][size_t(x)], ey = s.acc[4][size_t(x)];
+    const float px = s.acc[5][size_t(x)], py = s.acc[6][size_t(x)];
+    s.edge[size_t(x)] = std::sqrt(ex * ex + ey * ey);
+    s.point[size_t(x)] = std::sqrt(px * px + py * py);
+  }
+}
+
+void compareRow(const Side& a, const Side& b, float cmaxValue, float* err) {
+  const float pcCmax = float(kPc) * cmaxValue;
+  const float lowSlope = float(kPt) / pcCmax;
+  const float highSlope = float(1.0 - kPt) / (cmaxValue - pcCmax);
+  for (int x = 0; x < a.w; ++x) {
+    const size_t i = size_t(x);
+    const float dl = std::fabs(a.lab[0][i] - b.lab[0][i]);
+    const float da = a.lab[1][i] - b.lab[1][i];
+    const float db = a.lab[2][i] - b.lab[2][i];
+    const float distance = dl + std::sqrt(da * da + db * db);
+    const float powered = distance == 0.0f ? 0.0f : powPositive(std::max(distance, FLT_MIN), 0.7f);
+    const float colour =
+        powered < pcCmax ? lowSlope * powered : float(kPt) + (powered - pcCmax) * highSlope;
+    const float featureDiff =
+        std::max(std::fabs(a.edge[i] - b.edge[i]), std::fabs(a.point[i] - b.point[i]));
+    // qf = 0.5: the feature exponent is a square root.
+    const float feature = std::sqrt(featureDiff * float(1.0 / std::numbers::sqrt2));
+    const float exponent = 1.0f - feature;
+    // pow(c, 1) == c and pow(0, e > 0) == 0 exactly, as in the double implementation.
+    const float general = powPositive(std::max(colour, FLT_MIN), std::max(exponent, 0.0f));
+    err[x] = exponent == 1.0f ? colour : colour == 0.0f ? (exponent > 0.0f ? 0.0f : 1.0f) : general;
+  }
+}
+
+// Strip height: results do not depend on it; one strip per thread would be fastest on an idle
+// machine, four per thread keeps both cores busy when another process takes one for a while.
+int stripRows(int height, int threads, int radius) {
+  const int strips = threads == 1 ? 1 : 4 * threads;
+  return std::max((height + strips - 1) / strips, 2 * radius);
 }
 
 }  // namespace
+
+Image flipErrorMap(const Image& reference, const Image& test, const InputMapping& mapping,
+                   const FlipOptions& options) {
+  const Kernels kernels(options.pixelsPerDegree);
+  const FloatKernels k(kernels);
+  const int w = reference.width;
+  const int h = reference.height;
+  const int r = k.radius;
+  static const float kCmax = float(cmax());
+  Image err(w, h, 1);
+
+  const int threads = resolveThreads(options.threads, h);
+  const int rowsPerStrip = stripRows(h, threads, r);
+  const int strips = (h + rowsPerStrip - 1) / rowsPerStrip;
+  struct Scratch {
+    Side ref, test;
+  };
+  std::vector<std::unique_ptr<Scratch>> scratch(size_t(resolveThreads(threads, strips)));
+  parallelFor(strips, threads, [&](int worker, int strip) {
+    auto& sc = scratch[size_t(worker)];
+    if (!sc) sc = std::make_unique<Scratch>(Scratch{Side(w, r), Side(w, r)});
+    const int y0 = strip * rowsPerStrip;
+    const int y1 = std::min(h, y0 + rowsPerStrip);
+    const int firstRow = y0 - r;  // the ring's first virtual row
+    for (int v = firstRow; v < y0 + r; ++v) {
+      horizontalRow(reference, v, (v - firstRow) % sc->ref.slots, mapping, k, sc->ref);
+      horizontalRow(test, v, (v - firstRow) % sc->test.slots, mapping, k, sc->test);
+    }
+    for (int y = y0; y < y1; ++y) {
+      const int v = y + r;
+      horizontalRow(reference, v, (v - firstRow) % sc->ref.slots, mapping, k, sc->ref);
+      horizontalRow(test, v, (v - firstRow) % sc->test.slots, mapping, k, sc->test);
+      verticalRow(y, firstRow, k, sc->ref);
+      verticalRow(y, firstRow, k, sc->test);
+      compareRow(sc->ref, sc->test, kCmax, err.data.data() + size_t(y) * size_t(w));
+    }
+  });
+  return err;
+}
+
+}  // namespace flipdetail
 
 double pixelsPerDegree(double distanceM, double widthM, int widthPx) {
   return distanceM * double(widthPx) / widthM * std::numbers::pi / 180.0;
 }
 
 FlipResult flipLdr(const Image& referenceSrgb, const Image& testSrgb, const FlipOptions& options) {
-  checkInputs(referenceSrgb, testSrgb, options);
-  const Kernels kernels(options.pixelsPerDegree);
-  const Prepared ref = prepare(referenceSrgb, kernels);
-  const Prepared test = prepare(testSrgb, kernels);
-
-  static const double kCmax = cmax();
-  const double pcCmax = kPc * kCmax;
+  flipdetail::checkInputs(referenceSrgb, testSrgb, options);
   FlipResult result;
-  result.errorMap = Image(referenceSrgb.width, referenceSrgb.height, 1);
-  std::vector<float>& err = result.errorMap.data;
-  double sum = 0.0;
-  for (size_t i = 0; i < err.size(); ++i) {
-    const double a[3] = {ref.lab[0].v[i], ref.lab[1].v[i], ref.lab[2].v[i]};
-    const double b[3] = {test.lab[0].v[i], test.lab[1].v[i], test.lab[2].v[i]};
-    const double distance = hyab(a, b);
-    const double powered = distance == 0.0 ? 0.0 : std::pow(distance, kQc);
-    const double colour = powered < pcCmax
-                              ? kPt / pcCmax * powered
-                              : kPt + (powered - pcCmax) / (kCmax - pcCmax) * (1.0 - kPt);
-    const double edgeDiff = std::fabs(ref.edge.v[i] - test.edge.v[i]);
-    const double pointDiff = std::fabs(ref.point.v[i] - test.point.v[i]);
-    // qf = 0.5, so the feature exponent is a square root (exact, unlike pow).
-    const double feature = std::sqrt(std::max(edgeDiff, pointDiff) / std::numbers::sqrt2);
-    // pow(c, 1) == c and pow(0, e) == 0 for e > 0: skipping those calls is exact and makes
-    // the common unchanged-pixel case cheap.
-    const double exponent = 1.0 - feature;
-    const double e = exponent == 1.0                   ? colour
-                     : colour == 0.0 && exponent > 0.0 ? 0.0
-                                                       : std::pow(colour, exponent);
-    err[i] = float(e);
-    sum += err[i];
-  }
-  result.mean = sum / double(err.size());
-  std::vector<float> sorted = err;
-  result.max = *std::max_element(sorted.begin(), sorted.end());
-  result.p50 = nearestRank(sorted, 50.0);
-  result.p95 = nearestRank(sorted, 95.0);
-  result.p99 = nearestRank(sorted, 99.0);
+  result.errorMap = flipdetail::flipErrorMap(referenceSrgb, testSrgb, {}, options);
+  flipdetail::summarize(result);
   return result;
 }
 
 FlipResult flipLdrFromHdr(const Image& referenceHdr, const Image& testHdr,
                           const FlipOptions& options) {
-  checkInputs(referenceHdr, testHdr, options);
+  flipdetail::checkInputs(referenceHdr, testHdr, options);
   return flipLdr(toDisplaySrgb(referenceHdr), toDisplaySrgb(testHdr), options);
 }
 

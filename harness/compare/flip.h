@@ -22,13 +22,15 @@
 //   FLIP = dC^(1 - dF), in [0, 1].
 // Filters are correlations with clamp-to-edge borders, run as separable passes (the kernels are
 // separable or sums of separable terms, so this equals the 2D filtering up to float rounding).
-// Everything runs single-threaded in double in a fixed order, so results are bit-reproducible for
-// a given binary. Double, not float as in the reference code: the final dC^(1 - dF) magnifies
-// rounding noise in small colour differences (in float, up to ~4e-4 absolute near the edge of a
-// filter footprint), and goldens should not move with a libm or compiler change.
 //
-// HDR-FLIP (the exposure-bracketed variant of Andersson et al., EGSR 2021) is NOT implemented:
-// flipLdrFromHdr tonemaps both frames with one fixed operator and runs LDR-FLIP once.
+// flipLdr computes in float with the passes fused per row and rows split over threads
+// (flip.cpp); every pixel's value is the same whatever the thread count. It agrees with the
+// previous double implementation (flipLdrDouble, flip_double.h) within 1e-4 in the mean and 1e-3
+// in any pixel (tests/compare/flip_fast_test.cpp), and with the pinned values of
+// tests/compare/flip_reference.py to 1e-6.
+//
+// HDR-FLIP (Andersson, Nilsson, Shirley and Akenine-Moller, "Visualizing Errors in Rendered High
+// Dynamic Range Images", Eurographics 2021), for linear frames: see flipHdr below.
 #pragma once
 
 #include "core/image.h"
@@ -45,6 +47,8 @@ inline constexpr double kFlipDefaultPixelsPerDegree = 3840.0 * 3.141592653589793
 
 struct FlipOptions {
   double pixelsPerDegree = kFlipDefaultPixelsPerDegree;
+  // Worker threads; 0 means one per hardware thread. Results are bit-identical for every count.
+  int threads = 0;
 };
 
 struct FlipResult {
@@ -73,5 +77,27 @@ FlipResult flipLdr(const Image& referenceSrgb, const Image& testSrgb,
 // so highlight differences still register, but more weakly than HDR-FLIP would weigh them.
 FlipResult flipLdrFromHdr(const Image& referenceHdr, const Image& testHdr,
                           const FlipOptions& options = {});
+
+struct HdrFlipResult : FlipResult {
+  double startExposure = 0.0;  // log2 exposure of the first and last LDR-FLIP pass
+  double stopExposure = 0.0;
+  int exposures = 0;
+};
+
+// HDR-FLIP between two linear (scene-referred) images, as the paper defines it:
+//   luminance Y = 0.2126 R + 0.7152 G + 0.0722 B of the reference's pixels (non-finite ones
+//   skipped); x85 the input at which the ACES curve (Narkowicz's fit with the paper's 0.6
+//   pre-exposure folded in) reaches 0.85; start = log2(x85 / Ymax), stop = log2(x85 / Ymedian)
+//   (median: the element at index N/2 of the sorted luminances); N = max(2, ceil(stop - start))
+//   exposures c_i evenly spaced from start to stop;
+//   per exposure: both images times 2^c_i, ACES per channel, clamped to [0, 1], taken as linear
+//   RGB into LDR-FLIP (no sRGB decode); the HDR-FLIP error is the per-pixel maximum over the N
+//   LDR-FLIP maps.
+// Where the paper leaves cases open: negative samples count as 0; a NaN in any channel makes the
+// pixel magenta at every exposure (as the PNGs show it); +Inf saturates. If Ymedian is 0 (more
+// than half the reference black) the smallest positive luminance stands in; if Ymax is 0 or no
+// pixel is finite, one exposure at 0 is used (start = stop = 0, N = 1).
+HdrFlipResult flipHdr(const Image& referenceLinear, const Image& testLinear,
+                      const FlipOptions& options = {});
 
 }  // namespace taa::compare

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+
+#include "compare/flip_double.h"
 
 using taa::Image;
 using taa::compare::flipLdr;
@@ -71,11 +74,20 @@ struct Pixel {
   float value;
 };
 
-void expectMatchesReference(const taa::compare::FlipResult& r, double mean,
-                            std::initializer_list<Pixel> pixels) {
-  EXPECT_NEAR(r.mean, mean, 1e-6);
-  for (const Pixel& p : pixels)
-    EXPECT_NEAR(r.errorMap.at(p.x, p.y), p.value, 1e-6) << p.x << "," << p.y;
+// The pinned values come from flip_reference.py. The double implementation reproduces them to the
+// 7 digits printed (pixels to 6 decimals, hence 1e-6); the float one is held to the bounds it
+// promises: 1e-4 in the mean, 1e-3 in any pixel (it is furthest off where a tiny colour difference
+// meets a large feature difference, which dC^(1 - dF) magnifies).
+template <class Pair>
+void expectMatchesReference(const Pair& images, double mean, std::initializer_list<Pixel> pixels) {
+  const auto exact = taa::compare::flipLdrDouble(images.first, images.second);
+  const auto fast = flipLdr(images.first, images.second);
+  EXPECT_NEAR(exact.mean, mean, 1e-6);
+  EXPECT_NEAR(fast.mean, mean, 1e-4);
+  for (const Pixel& p : pixels) {
+    EXPECT_NEAR(exact.errorMap.at(p.x, p.y), p.value, 1e-6) << p.x << "," << p.y;
+    EXPECT_NEAR(fast.errorMap.at(p.x, p.y), p.value, 1e-3) << p.x << "," << p.y;
+  }
 }
 
 // Double-precision colour-only FLIP for two uniform colours: with no structure the CSF filters
@@ -198,7 +210,7 @@ TEST(FlipBasics, PercentilesAreNearestRankOfTheMap) {
 TEST(FlipBasics, EdgeShiftIsFoundByFeatures) {
   const auto r = flipLdr(verticalEdge(10), verticalEdge(11));
   EXPECT_EQ(r.errorMap.at(23, 5), 0.0f);  // 12 px away: beyond every filter footprint
-  EXPECT_LT(r.errorMap.at(0, 5), 1e-6f);   // 10 px: only the far CSF tail reaches
+  EXPECT_LT(r.errorMap.at(0, 5), 1e-6f);  // 10 px: only the far CSF tail reaches
   EXPECT_GT(r.errorMap.at(10, 5), 0.4f);
 }
 
@@ -206,7 +218,7 @@ TEST(FlipBasics, EdgeShiftIsFoundByFeatures) {
 // from the paper and the NVlabs/flip Python reference's structure). The separable double code
 // agrees to the 7 digits printed; pixels are pinned to 6 decimals, hence 1e-6.
 TEST(FlipReference, NoiseCaseMatchesIndependentImplementation) {
-  expectMatchesReference(flipLdr(base(), withNoise(base(), 0.2)), 0.1292256,
+  expectMatchesReference(std::pair(base(), withNoise(base(), 0.2)), 0.1292256,
                          {{0, 0, 0.108911f},
                           {5, 3, 0.118216f},
                           {10, 8, 0.105547f},
@@ -216,18 +228,18 @@ TEST(FlipReference, NoiseCaseMatchesIndependentImplementation) {
 
 TEST(FlipReference, EdgeShiftMatchesIndependentImplementation) {
   expectMatchesReference(
-      flipLdr(verticalEdge(10), verticalEdge(11)), 0.1191131,
+      std::pair(verticalEdge(10), verticalEdge(11)), 0.1191131,
       {{0, 0, 0.0f}, {5, 3, 0.005364f}, {10, 8, 0.500927f}, {12, 8, 0.214474f}, {23, 15, 0.0f}});
 }
 
 TEST(FlipReference, RedVsGreenPatchMatchesIndependentImplementation) {
-  expectMatchesReference(flipLdr(greyWithPatch(0.8f, 0.2f, 0.2f), greyWithPatch(0.2f, 0.8f, 0.2f)),
-                         0.4389785,
-                         {{0, 0, 0.012151f},
-                          {5, 3, 0.444945f},
-                          {10, 8, 0.978366f},
-                          {12, 8, 0.978424f},
-                          {23, 15, 0.012151f}});
+  expectMatchesReference(
+      std::pair(greyWithPatch(0.8f, 0.2f, 0.2f), greyWithPatch(0.2f, 0.8f, 0.2f)), 0.4389785,
+      {{0, 0, 0.012151f},
+       {5, 3, 0.444945f},
+       {10, 8, 0.978366f},
+       {12, 8, 0.978424f},
+       {23, 15, 0.012151f}});
 }
 
 TEST(FlipReference, PixelsPerDegreeDefaultIsPapersSetup) {

@@ -8,7 +8,7 @@ using spec::InvariantKind;
 namespace {
 
 // Hashes change every frame until `settle`, then stay, except at `blip`.
-std::vector<Frame> hashes(int frames, int settle, int blip = -1) {
+std::vector<Frame> hashesBitStable(int frames, int settle, int blip = -1) {
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
     Frame fr;
@@ -30,13 +30,13 @@ spec::CaseSpec stableCase(int after) {
 }  // namespace
 
 TEST(InvariantBitStable, SettledOutputPasses) {
-  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashes(16, 5));
+  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 5));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "frames_compared"), 10.0);
 }
 
 TEST(InvariantBitStable, ChangeAfterTheFrameFails) {
-  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashes(16, 5, 9));
+  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 5, 9));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "first_change_frame"), 9.0);
   EXPECT_EQ(valueOf(o, "changes"), 2.0);  // into the blip and out of it
@@ -44,7 +44,7 @@ TEST(InvariantBitStable, ChangeAfterTheFrameFails) {
 }
 
 TEST(InvariantBitStable, StillSettlingAtAfterFrameFails) {
-  EXPECT_FALSE(runAll(InvariantKind::BitStable, stableCase(5), hashes(16, 7)).passed);
+  EXPECT_FALSE(runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 7)).passed);
 }
 
 TEST(InvariantBitStable, InapplicableWhenTheInputChanges) {

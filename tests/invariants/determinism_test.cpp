@@ -7,7 +7,7 @@ using spec::InvariantKind;
 
 namespace {
 
-std::vector<Frame> hashes(int frames, int changedFrame = -1) {
+std::vector<Frame> hashesDeterminism(int frames, int changedFrame = -1) {
   std::vector<Frame> seq;
   for (int f = 0; f < frames; ++f) {
     Frame fr;
@@ -26,27 +26,27 @@ TEST(InvariantDeterminism, NeedsASecondRun) {
 }
 
 TEST(InvariantDeterminism, IdenticalRepeatPasses) {
-  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashes(8), hashes(8));
+  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashesDeterminism(8), hashesDeterminism(8));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "mismatches"), 0.0);
 }
 
 TEST(InvariantDeterminism, DifferentHashFailsNamingTheFrame) {
-  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashes(8), hashes(8, 5));
+  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashesDeterminism(8), hashesDeterminism(8, 5));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "first_mismatch_frame"), 5.0);
   EXPECT_TRUE(contains(o.detail, "first: frame 5: ")) << o.detail;
 }
 
 TEST(InvariantDeterminism, ShortRepeatFails) {
-  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashes(8), hashes(6));
+  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashesDeterminism(8), hashesDeterminism(6));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "first_mismatch_frame"), 6.0);
   EXPECT_TRUE(contains(o.detail, "the repeat has no frame 6")) << o.detail;
 }
 
 TEST(InvariantDeterminism, NoRepeatFails) {
-  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashes(4));
+  const auto o = runAll(InvariantKind::Determinism, staticCase(), hashesDeterminism(4));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "not rendered a second time")) << o.detail;
 }

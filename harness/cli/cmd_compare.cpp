@@ -1,0 +1,169 @@
+// taa-harness compare: the harness's metrics on any two image files, with bounds that turn into
+// an exit code so the command scripts into other CI (as idiff and the FLIP tool do).
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "compare/compare_files.h"
+#include "compare/heatmap.h"
+#include "core/image_io.h"
+
+namespace taa::cli {
+
+namespace {
+
+const char* kCompareUsage =
+    "taa-harness compare REFERENCE TEST [--metrics LIST] [--flip-ppd N] [--hdr] [--threads N]\n"
+    "                    [--pixel-threshold T] [--max METRIC=V,...] [--min METRIC=V,...]\n"
+    "                    [--heatmap OUT.png] [--json]\n"
+    "  metrics of TEST against REFERENCE (EXR or any 8-bit format OpenImageIO reads; EXR and HDR\n"
+    "  files are linear, everything else display-referred sRGB; both must be the same kind).\n"
+    "  --metrics   comma list of max_abs, mean_abs, rmse, psnr, share_over, flip_mean, flip_p50,\n"
+    "              flip_p95, flip_p99, flip_max (default: all)\n"
+    "  --flip-ppd  pixels per degree for FLIP (default 67.02: 0.7 m from a 0.7 m wide 4K screen)\n"
+    "  --hdr       HDR-FLIP for linear inputs (default: LDR-FLIP of the tonemapped PNG view)\n"
+    "  --threads   FLIP worker threads (default: one per core; results do not depend on it)\n"
+    "  --pixel-threshold  per-pixel bound that share_over counts (default 1/255)\n"
+    "  --max/--min exit 1 when a metric is above a --max or below a --min bound\n"
+    "  --heatmap   write the FLIP error map as a magma PNG\n"
+    "  --json      print the result as JSON instead of lines\n"
+    "exit: 0 within every bound, 1 a bound violated, 2 bad input (file, option, shape)";
+
+double parseNumber(const std::string& text, const std::string& what) {
+  size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || std::isnan(v)) {
+    throw UsageError(what + ": '" + text + "' is not a number");
+  }
+  return v;
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+// "flip_mean=0.05,rmse=0.01" into bounds; names must be known metrics.
+void parseBounds(const std::string& option, const std::string& text, bool isMax,
+                 std::vector<compare::Bound>& out) {
+  for (const std::string& item : splitList(text)) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) {
+      throw UsageError(option + ": '" + item + "' should be METRIC=VALUE, e.g. flip_mean=0.05");
+    }
+    compare::Bound b;
+    b.metric = item.substr(0, eq);
+    if (!compare::isMetricName(b.metric)) {
+      throw UsageError(option + ": unknown metric '" + b.metric + "'; use one of " +
+                       compare::metricNameList());
+    }
+    b.isMax = isMax;
+    b.value = parseNumber(item.substr(eq + 1), option + " " + b.metric);
+    out.push_back(b);
+  }
+}
+
+nlohmann::json number(double v) {
+  if (std::isfinite(v)) return v;
+  return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+}
+
+}  // namespace
+
+int cmdCompare(const Args& args) {
+  const auto a = parseArgs(
+      args, {"--json", "--hdr"},
+      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap"},
+      kCompareUsage);
+  if (a.positional.size() != 2) {
+    throw UsageError("expected REFERENCE and TEST, got " + std::to_string(a.positional.size()) +
+                     " file(s)\nusage: " + kCompareUsage);
+  }
+  compare::CompareRequest req;
+  req.referencePath = a.positional[0];
+  req.testPath = a.positional[1];
+  if (a.values.count("--metrics")) {
+    req.metrics = splitList(a.value("--metrics"));
+    if (req.metrics.empty()) throw UsageError("--metrics: empty list");
+    for (const auto& m : req.metrics) {
+      if (!compare::isMetricName(m)) {
+        throw UsageError("--metrics: unknown metric '" + m + "'; use one of " +
+                         compare::metricNameList());
+      }
+    }
+  }
+  if (a.values.count("--flip-ppd")) {
+    req.flip.pixelsPerDegree = parseNumber(a.value("--flip-ppd"), "--flip-ppd");
+    if (!(req.flip.pixelsPerDegree > 0.0) || !std::isfinite(req.flip.pixelsPerDegree)) {
+      throw UsageError("--flip-ppd must be a positive number, got " + a.value("--flip-ppd"));
+    }
+  }
+  if (a.values.count("--threads")) {
+    const double t = parseNumber(a.value("--threads"), "--threads");
+    if (t < 1 || t > 1024 || t != std::floor(t)) {
+      throw UsageError("--threads must be a whole number in [1, 1024], got " +
+                       a.value("--threads"));
+    }
+    req.flip.threads = int(t);
+  }
+  if (a.values.count("--pixel-threshold")) {
+    req.pixelThreshold = parseNumber(a.value("--pixel-threshold"), "--pixel-threshold");
+  }
+  req.hdr = a.has("--hdr");
+  req.wantHeatmap = a.values.count("--heatmap") > 0;
+  parseBounds("--max", a.value("--max"), true, req.bounds);
+  parseBounds("--min", a.value("--min"), false, req.bounds);
+
+  compare::CompareOutcome out;
+  try {
+    out = compare::compareFiles(req);
+  } catch (const compare::CompareInputError& e) {
+    throw UsageError(e.what());
+  }
+  if (req.wantHeatmap) {
+    try {
+      writePngLinear8(a.value("--heatmap"), compare::heatmap(out.flipMap));
+    } catch (const ImageIoError& e) {
+      throw UsageError(std::string("--heatmap: ") + e.what());
+    }
+  }
+
+  if (a.has("--json")) {
+    nlohmann::json j = {{"reference", req.referencePath},
+                        {"test", req.testPath},
+                        {"width", out.width},
+                        {"height", out.height},
+                        {"flip", out.flipKind}};
+    for (const auto& [name, value] : out.values) j["metrics"][name] = number(value);
+    if (out.exposures > 0) {
+      j["hdr_exposures"] = {
+          {"start", out.startExposure}, {"stop", out.stopExposure}, {"count", out.exposures}};
+    }
+    j["violations"] = out.violations;
+    j["pass"] = out.violations.empty();
+    std::cout << j.dump(2) << "\n";
+  } else {
+    for (const auto& [name, value] : out.values) std::cout << name << " " << value << "\n";
+    for (const auto& v : out.violations) std::cout << "FAIL " << v << "\n";
+  }
+  return out.violations.empty() ? kPass : kRegression;
+}
+
+}  // namespace taa::cli

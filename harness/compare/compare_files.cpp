@@ -1,0 +1,158 @@
+#include "compare/compare_files.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "compare/metrics.h"
+#include "core/image_io.h"
+
+namespace taa::compare {
+
+namespace {
+
+Image readOrExplain(const std::string& path, const char* role) {
+  try {
+    return readImage(path);
+  } catch (const ImageIoError& e) {
+    throw CompareInputError(std::string(role) + " " + e.what());
+  }
+}
+
+std::string shape(const Image& img) {
+  return std::to_string(img.width) + "x" + std::to_string(img.height) + "x" +
+         std::to_string(img.channels);
+}
+
+Image firstThreeChannels(const Image& img) {
+  Image out(img.width, img.height, 3);
+  for (size_t p = 0; p < img.pixelCount(); ++p)
+    for (size_t c = 0; c < 3; ++c) out.data[p * 3 + c] = img.data[p * size_t(img.channels) + c];
+  return out;
+}
+
+bool wanted(const CompareRequest& r, const std::string& name) {
+  if (r.metrics.empty()) return true;
+  if (std::find(r.metrics.begin(), r.metrics.end(), name) != r.metrics.end()) return true;
+  return std::any_of(r.bounds.begin(), r.bounds.end(),
+                     [&](const Bound& b) { return b.metric == name; });
+}
+
+std::string violation(const Bound& b, double value) {
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), "%s %.6g %s %.6g", b.metric.c_str(), value, b.isMax ? ">" : "<",
+                b.value);
+  return buf;
+}
+
+}  // namespace
+
+const std::vector<std::string>& metricNames() {
+  static const std::vector<std::string> names = {"max_abs",    "mean_abs",  "rmse",     "psnr",
+                                                 "share_over", "flip_mean", "flip_p50", "flip_p95",
+                                                 "flip_p99",   "flip_max"};
+  return names;
+}
+
+bool isMetricName(const std::string& name) {
+  const auto& n = metricNames();
+  return std::find(n.begin(), n.end(), name) != n.end();
+}
+
+std::string metricNameList() {
+  std::string out;
+  for (const auto& n : metricNames()) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+bool isLinearFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".exr" || ext == ".hdr";
+}
+
+CompareOutcome compareFiles(const CompareRequest& r) {
+  const bool linear = isLinearFile(r.referencePath);
+  if (linear != isLinearFile(r.testPath)) {
+    throw CompareInputError(
+        r.referencePath + " is " + (linear ? "linear (EXR/HDR)" : "display-referred") + " but " +
+        r.testPath + " is " + (linear ? "display-referred" : "linear (EXR/HDR)") +
+        "; compare an EXR with an EXR, or the PNGs of both");
+  }
+  if (r.hdr && !linear) {
+    throw CompareInputError("--hdr needs linear inputs (EXR or HDR), got " + r.referencePath);
+  }
+  Image ref = readOrExplain(r.referencePath, "reference");
+  Image test = readOrExplain(r.testPath, "test");
+  if (ref.width != test.width || ref.height != test.height) {
+    throw CompareInputError(r.referencePath + " is " + shape(ref) + " but " + r.testPath + " is " +
+                            shape(test) + "; both images must have the same size");
+  }
+  if (ref.channels != test.channels) {
+    if (ref.channels < 3 || test.channels < 3) {
+      throw CompareInputError(r.referencePath + " has " + std::to_string(ref.channels) +
+                              " channel(s) but " + r.testPath + " has " +
+                              std::to_string(test.channels) + "; convert both to RGB");
+    }
+    ref = firstThreeChannels(ref);
+    test = firstThreeChannels(test);
+  }
+
+  CompareOutcome out;
+  out.width = ref.width;
+  out.height = ref.height;
+  std::vector<std::pair<std::string, double>> all;
+  if (wanted(r, "max_abs") || wanted(r, "mean_abs") || wanted(r, "rmse") || wanted(r, "psnr") ||
+      wanted(r, "share_over")) {
+    MetricOptions mo;
+    mo.threshold = r.pixelThreshold;
+    const Metrics m = computeMetrics(ref, test, mo);
+    all.insert(all.end(), {{"max_abs", m.maxAbsError},
+                           {"mean_abs", m.meanAbsError},
+                           {"rmse", m.rmse},
+                           {"psnr", m.psnr},
+                           {"share_over", m.shareOverThreshold}});
+  }
+  const bool anyFlip = r.wantHeatmap || wanted(r, "flip_mean") || wanted(r, "flip_p50") ||
+                       wanted(r, "flip_p95") || wanted(r, "flip_p99") || wanted(r, "flip_max");
+  if (anyFlip) {
+    FlipResult f;
+    if (r.hdr) {
+      HdrFlipResult h = flipHdr(ref, test, r.flip);
+      out.startExposure = h.startExposure;
+      out.stopExposure = h.stopExposure;
+      out.exposures = h.exposures;
+      f = std::move(h);
+      out.flipKind = "hdr";
+    } else if (linear) {
+      f = flipLdrFromHdr(ref, test, r.flip);
+      out.flipKind = "ldr-tonemapped";
+    } else {
+      f = flipLdr(ref, test, r.flip);
+      out.flipKind = "ldr";
+    }
+    all.insert(all.end(), {{"flip_mean", f.mean},
+                           {"flip_p50", f.p50},
+                           {"flip_p95", f.p95},
+                           {"flip_p99", f.p99},
+                           {"flip_max", f.max}});
+    out.flipMap = std::move(f.errorMap);
+  }
+  for (const auto& [name, value] : all) {
+    if (wanted(r, name)) out.values.emplace_back(name, value);
+  }
+  for (const Bound& b : r.bounds) {
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const auto& v) { return v.first == b.metric; });
+    const double v = it->second;
+    // Written so that a NaN value violates every bound.
+    const bool ok = b.isMax ? v <= b.value : v >= b.value;
+    if (!ok) out.violations.push_back(violation(b, v));
+  }
+  return out;
+}
+
+}  // namespace taa::compare

@@ -1,0 +1,65 @@
+// The work behind `taa-harness compare`: two image files in, the requested metrics and the bounds
+// they violate out. Kept apart from the CLI so it is one function to test.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "compare/flip.h"
+#include "core/image.h"
+
+namespace taa::compare {
+
+// A file that cannot be read or a pair that cannot be compared; what() names the file and the fix.
+class CompareInputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Bound {
+  std::string metric;
+  bool isMax = true;  // fail when the value is above (isMax) or below (!isMax) `value`
+  double value = 0.0;
+};
+
+struct CompareRequest {
+  std::string referencePath;
+  std::string testPath;
+  std::vector<std::string> metrics;  // empty: all of metricNames()
+  FlipOptions flip;
+  bool hdr = false;  // HDR-FLIP; needs linear inputs
+  double pixelThreshold = 1.0 / 255.0;
+  std::vector<Bound> bounds;  // bounded metrics are computed even when not listed in `metrics`
+  bool wantHeatmap = false;   // compute FLIP for its map even when no FLIP metric is asked for
+};
+
+struct CompareOutcome {
+  int width = 0;
+  int height = 0;
+  std::vector<std::pair<std::string, double>> values;  // in metricNames() order
+  std::vector<std::string> violations;                 // "flip_mean 0.0762 > 0.05"
+  std::string flipKind;  // "ldr", "ldr-tonemapped", "hdr", or "" when FLIP was not computed
+  Image flipMap;         // when FLIP was computed
+  double startExposure = 0.0, stopExposure = 0.0;  // HDR-FLIP only
+  int exposures = 0;
+};
+
+// Every metric name, in output order: max_abs, mean_abs, rmse, psnr, share_over (the linear
+// metrics of metrics.h on RGB), flip_mean, flip_p50, flip_p95, flip_p99, flip_max.
+const std::vector<std::string>& metricNames();
+bool isMetricName(const std::string& name);
+std::string metricNameList();  // "max_abs, mean_abs, ..."
+
+// True for files read as linear (scene-referred) data: .exr and .hdr, any letter case.
+bool isLinearFile(const std::string& path);
+
+// Reads both files and measures. Linear inputs get LDR-FLIP of their tonemapped display view
+// (toDisplaySrgb, what the harness's PNGs show) or, with `hdr`, HDR-FLIP; display inputs get
+// LDR-FLIP directly. Images whose channel counts differ are compared on their first three
+// channels when both have at least three. Throws CompareInputError for unreadable files, a linear
+// file against a display one, different sizes, or `hdr` with display inputs.
+CompareOutcome compareFiles(const CompareRequest& request);
+
+}  // namespace taa::compare

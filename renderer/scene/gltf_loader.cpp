@@ -2,6 +2,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "scene/gltf_convert.h"
@@ -102,6 +103,9 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   const std::string json =
       binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
   checkGltfUris(file, json);
+  const std::string note = checkGltfExtensions(file, json);
+  if (!note.empty() && std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
+    scene.notes.push_back(note);
 
   std::error_code ec;
   Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};

@@ -30,11 +30,11 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
       inst.model = place * now[i].transform;
       inst.prevModel = prevPlace * before[i].transform;
       inst.normalMatrix = glm::mat4(glm::inverseTranspose(glm::mat3(inst.model)));
-      inst.ids = glm::uvec4(objectId, isMover ? 1 : 0, deformed ? 1 : 0, 0);
+      const auto& mesh = scene.meshes[now[i].mesh];
+      inst.ids = glm::uvec4(objectId, isMover ? 1 : 0, deformed ? 1 : 0, mesh.vertexColors ? 1 : 0);
       const auto instance = uint32_t(out.instances.size());
       out.instances.push_back(inst);
       out.dynamic.push_back(isMover || animated || deformed);
-      const auto& mesh = scene.meshes[now[i].mesh];
       int32_t deformedBase = -1;
       if (deformed) {
         deformedBase = int32_t(out.deformed.size());

@@ -29,7 +29,9 @@ layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
 #endif
 
 void main() {
-  vec4 base = draw.baseColor * inColor * texture(baseColorTexture, inUv, draw.lodBias);
+  vec4 base = draw.baseColor * texture(baseColorTexture, inUv, draw.lodBias);
+  // Only meshes with COLOR_0: an interpolated constant white is not exactly 1.
+  if (instances[draw.instance].ids.w != 0u) base *= inColor;
   if (draw.alphaCutoff >= 0.0 && base.a < draw.alphaCutoff) discard;
 
   vec3 n = normalize(inNormal);

@@ -172,6 +172,7 @@ int Converter::mesh(int index) {
           g_.accessors[size_t(c->second)].type == TINYGLTF_TYPE_VEC3)
         colorComps = 3;
       colors = readAccessor(c->second, what + " COLOR_0", colorComps);
+      out.vertexColors = true;
     }
     if ((!normals.empty() && normals.size() != count * 3) ||
         (!uvs.empty() && uvs.size() != count * 2) ||

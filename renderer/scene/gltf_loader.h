@@ -28,6 +28,11 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 // as tinygltf decodes it). The message names `file`, the key and the uri.
 void checkGltfUris(const std::filesystem::path& file, const std::string& json);
 
+// Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
+// read (loadGltf then reports why). For spec-level checks that need to know whether a
+// glTF scene moves without loading it.
+bool gltfHasAnimations(const std::filesystem::path& file);
+
 // The extensions loadGltf implements (extensionsRequired may list only these).
 const std::vector<std::string>& supportedGltfExtensions();
 

@@ -68,6 +68,7 @@ struct Mesh {
   std::vector<Primitive> primitives;
   glm::vec3 boundsMin{0.0f};  // object-space bounds of all primitives (at rest)
   glm::vec3 boundsMax{0.0f};
+  bool vertexColors = false;  // some primitive has COLOR_0 (Vertex::color is not all white)
   // Deformation data. The mesh's vertices are Scene::vertices[firstVertex, +vertexCount)
   // in primitive order; morph targets and skin weights index the same range.
   uint32_t firstVertex = 0;

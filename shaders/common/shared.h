@@ -61,7 +61,8 @@ TAA_BLOCK(InstanceData) {
   mat4 prevModel;
   mat4 normalMatrix;  // inverse transpose of model, upper 3x3
   uvec4 ids;          // x: object id (stable across frames), y: 1 for movers, z: 1 when
-                      // deformed (vertices from the deformed buffer, prevPositions by index)
+                      // deformed (vertices from the deformed buffer, prevPositions by index),
+                      // w: 1 when the mesh has vertex colours
 };
 
 // The ids target packs mover flag (bit 31), object id (bits 16-30), material (0-15).

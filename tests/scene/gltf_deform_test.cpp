@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "draw_list.h"
+#include "invariants/invariant_support.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/build_scene.h"
 #include "scene/gltf_loader.h"
@@ -61,8 +62,11 @@ TEST(GltfDeform, VertexColoursAreRead) {
   }
   EXPECT_EQ(red, 3);
   EXPECT_EQ(blue, 3);
+  EXPECT_TRUE(s.meshes[0].vertexColors);
   // Files without COLOR_0 stay white.
-  for (const Vertex& v : load("skinned_quad.gltf").vertices) EXPECT_EQ(v.color, glm::vec4(1.0f));
+  const Scene plain = load("skinned_quad.gltf");
+  EXPECT_FALSE(plain.meshes[0].vertexColors);
+  for (const Vertex& v : plain.vertices) EXPECT_EQ(v.color, glm::vec4(1.0f));
 }
 
 // SimpleMorph: default weights [0.5, 0.5] shape the triangle even at rest.
@@ -81,10 +85,12 @@ TEST(GltfKhronos, SimpleMorphRestsAtItsDefaultWeights) {
   for (size_t i = 0; i < v.size(); ++i)
     expectNear(v[i].position, s.vertices[i].position + 0.5f * mesh.targets[0].position[i] +
                                   0.5f * mesh.targets[1].position[i]);
-  // The weights animation: at 1 s target 0 is fully on, target 1 off (the model's keys).
-  const MeshDraw at1 = poseModel(s, 0, 1.0)[0];
-  EXPECT_NEAR(at1.weights[0], 1.0f, 1e-6f);
-  EXPECT_NEAR(at1.weights[1], 0.0f, 1e-6f);
+  // The weights animation (keys (0, 0), (0, 1), (1, 1), (1, 0), (0, 0) at 0..4 s).
+  const MeshDraw at1 = poseModel(s, 0, 1.0)[0], at25 = poseModel(s, 0, 2.5)[0];
+  EXPECT_NEAR(at1.weights[0], 0.0f, 1e-6f);
+  EXPECT_NEAR(at1.weights[1], 1.0f, 1e-6f);
+  EXPECT_NEAR(at25.weights[0], 1.0f, 1e-6f);
+  EXPECT_NEAR(at25.weights[1], 0.5f, 1e-6f);
 }
 
 // SimpleSkin: joint 1 rotates about Z, bending the top of the strip sideways.
@@ -162,6 +168,18 @@ TEST(GltfPick, CaseChoosesAnimationsByNameOrIndexAndRefusesUnknownOnes) {
     EXPECT_NE(m.find("scene.animations[0]"), std::string::npos) << m;
     EXPECT_NE(m.find("'walk'"), std::string::npos) << m;
   }
+}
+
+// Invariants that need a still scene know that an animated glTF world moves.
+TEST(GltfPick, AnAnimatedGltfSceneMovesForTheInvariants) {
+  auto moves = [](const std::string& scene) {
+    return invariants::whatMoves(test::caseFromJson(R"({"scene": )" + scene + "}", "moves"));
+  };
+  EXPECT_NE(moves(R"({"gltf": "scenes/khronos/BoxAnimated.gltf"})").find("scene.animation_speed"),
+            std::string::npos);
+  EXPECT_EQ(moves(R"({"gltf": "scenes/khronos/BoxAnimated.gltf", "animation_speed": 0})"), "");
+  EXPECT_EQ(moves(R"({"gltf": "scenes/alpha_modes.gltf"})"), "") << "no animations in the file";
+  EXPECT_EQ(moves(R"({"gltf": "scenes/box.glb"})"), "");
 }
 
 TEST(GltfExtensions, RequiredButUnsupportedIsRefusedByName) {

@@ -66,6 +66,8 @@ Checked checkBend(const spec::CaseSpec& spec, const FrameRecord& r) {
           glm::length(project(prevVp, glm::dvec3(prevMover * glm::dvec4(local, 1.0))) - rigidPrev));
       ++out.pixels;
     }
+  std::printf("%d bend-quad pixels: worst velocity error %.2e px, bend motion up to %.3f px\n",
+              out.pixels, out.worst, out.maxBend);
   return out;
 }
 

@@ -335,6 +335,48 @@ def skinned_quad():
     })
 
 
+def two_skins():
+    """Two bend quads sharing one mesh, each bound to its own skin: skin 0's lifter rises at
+    0.8 units/s (animation "up"), skin 1's sinks at 0.4 units/s (animation "down") and hangs
+    under a parent joint that slides along x at 1 unit/s (an animated joint hierarchy)."""
+    b = Builder()
+    pos, nrm, idx = bend_quad(0.8)
+    view = b._view(struct.pack("<%dB" % (4 * len(pos)), *[c for _ in pos for c in (0, 1, 0, 0)]))
+    b.accessors.append({"bufferView": view, "componentType": 5121, "count": len(pos),
+                        "type": "VEC4"})
+    joints = len(b.accessors) - 1
+    attrs = {"POSITION": b.floats(pos, "VEC3", minmax=True), "NORMAL": b.floats(nrm, "VEC3"),
+             "JOINTS_0": joints,
+             "WEIGHTS_0": b.floats([(0.5 - p[0], p[0] + 0.5, 0.0, 0.0) for p in pos], "VEC4")}
+    ibm = b.floats([tuple(float(i % 5 == 0) for i in range(16))] * 2, "MAT4")
+    t = b.floats([0.0, 10.0], "SCALAR")
+    b.accessors[t]["min"], b.accessors[t]["max"] = [0.0], [10.0]
+    up = b.floats([(0.0, 0.0, 0.0), (0.0, 8.0, 0.0)], "VEC3")
+    down = b.floats([(0.0, 0.0, 0.0), (0.0, -4.0, 0.0)], "VEC3")
+    slide = b.floats([(0.0, 0.0, 0.0), (10.0, 0.0, 0.0)], "VEC3")
+    write("two_skins.gltf", {
+        "asset": ASSET, "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3, 4]}],
+        "nodes": [{"name": "first", "mesh": 0, "skin": 0}, {"name": "second", "mesh": 0, "skin": 1},
+                  {"name": "anchor"}, {"name": "lifter_up"},
+                  {"name": "slider", "children": [5, 6]}, {"name": "anchor2"},
+                  {"name": "lifter_down"}],
+        "meshes": [{"name": "bend_quad", "primitives": [
+            {"attributes": attrs, "indices": b.indices(idx), "material": 0}]}],
+        "materials": [{"doubleSided": True}],
+        "skins": [{"joints": [2, 3], "inverseBindMatrices": ibm},
+                  {"joints": [5, 6], "inverseBindMatrices": ibm}],
+        "animations": [
+            {"name": "up", "samplers": [{"input": t, "output": up}],
+             "channels": [{"sampler": 0, "target": {"node": 3, "path": "translation"}}]},
+            {"name": "down", "samplers": [{"input": t, "output": down},
+                                          {"input": t, "output": slide}],
+             "channels": [{"sampler": 0, "target": {"node": 6, "path": "translation"}},
+                          {"sampler": 1, "target": {"node": 4, "path": "translation"}}]}],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
+        "bufferViews": b.views, "accessors": b.accessors,
+    })
+
+
 def morphed_quad():
     """bend_quad by a morph target (offset (0, x + 0.5, 0)) whose weight grows at 0.8 per
     second, plus vertex colours (COLOR_0, normalised bytes: red left, blue right)."""
@@ -415,6 +457,7 @@ if __name__ == "__main__":
     alpha_modes()
     refused()
     skinned_quad()
+    two_skins()
     morphed_quad()
     extensions()
     texture_transform()

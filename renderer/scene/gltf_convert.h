@@ -39,6 +39,14 @@ std::vector<Skin> readGltfSkins(const std::filesystem::path& file, const tinyglt
 glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
                                const tinygltf::ExtensionMap& extensions, const std::string& what);
 
+// EXT_meshopt_compression (gltf_meshopt.cpp). Before tinygltf: gives every fallback
+// buffer without a uri an all-zero data URI of its byteLength; returns whether it
+// changed `json`. glbWithJson replaces a GLB's JSON chunk. After tinygltf: decodes every
+// compressed buffer view into its place; throws SceneError naming the view.
+bool fillMeshoptFallbacks(std::string& json);
+std::vector<uint8_t> glbWithJson(const std::vector<uint8_t>& glb, std::string json);
+void decodeMeshopt(const std::filesystem::path& file, tinygltf::Model& gltf);
+
 // Splits a node matrix (column-major, no shear as glTF requires) into TRS. A negative
 // determinant becomes a negative x scale.
 void decomposeTrs(const glm::mat4& m, glm::vec3& t, glm::quat& r, glm::vec3& s);

@@ -72,6 +72,21 @@ TEST(GltfDeform, SeveralSkinsEachPoseTheirOwnDraw) {
   }
 }
 
+TEST(GltfDeform, NodeWeightsOverrideTheMeshDefault) {
+  const Scene s = load("node_weights.gltf");
+  const auto draws = poseModel(s, 0, 0.0);
+  ASSERT_EQ(draws.size(), 2u);
+  EXPECT_EQ(draws[0].weights, std::vector<float>{0.75f});
+  EXPECT_EQ(draws[1].weights, std::vector<float>{0.25f});
+  const Mesh& mesh = s.meshes[0];
+  const std::vector<Vertex> a = deformVertices(s, draws[0]), b = deformVertices(s, draws[1]);
+  for (size_t i = 0; i < mesh.vertexCount; ++i) {
+    const glm::vec3 rest = s.vertices[mesh.firstVertex + i].position;
+    expectNear(a[i].position, rest + glm::vec3(0.0f, 0.75f, 0.0f));
+    expectNear(b[i].position, rest + glm::vec3(0.0f, 0.25f, 0.0f));
+  }
+}
+
 TEST(GltfDeform, VertexColoursAreRead) {
   const Scene s = load("morphed_quad.gltf");
   int red = 0, blue = 0;
@@ -237,6 +252,20 @@ TEST(GltfExtensions, UsedButUnsupportedIsNotedOncePerFile) {
       << s.notes[0];
   EXPECT_EQ(s.notes[0].find("KHR_mesh_quantization"), std::string::npos)
       << "a supported extension is not reported";
+}
+
+// KHR_mesh_quantization: integer attributes, normalised or not, at 4-byte strides.
+TEST(GltfExtensions, QuantizedAttributesLoad) {
+  const Scene s = load("quantized_quad.gltf");
+  ASSERT_EQ(s.vertices.size(), 4u);
+  EXPECT_EQ(s.vertices[0].position, glm::vec3(-500.0f, -500.0f, 0.0f));
+  EXPECT_EQ(s.vertices[2].position, glm::vec3(500.0f, 500.0f, 0.0f));
+  for (const Vertex& v : s.vertices) EXPECT_EQ(v.normal, glm::vec3(0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(s.vertices[0].uv, glm::vec2(0.0f, 1.0f));
+  EXPECT_EQ(s.vertices[2].uv, glm::vec2(1.0f, 0.0f));
+  const glm::mat4 m = poseModel(s, 0, 0.0)[0].transform;  // the node's 0.001 scale
+  expectNear(glm::vec3(m * glm::vec4(s.vertices[2].position, 1.0f)), glm::vec3(0.5f, 0.5f, 0.0f));
+  EXPECT_TRUE(s.notes.empty());
 }
 
 // The extension's own example: uv (u, v) samples (0.5 v, 1 - 0.5 u), the lower left

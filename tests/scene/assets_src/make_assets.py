@@ -450,6 +450,59 @@ def texture_transform():
     })
 
 
+def quantized_quad():
+    """KHR_mesh_quantization: positions as unnormalised shorts (node scale 0.001), normals as
+    normalised bytes, UVs as normalised unsigned shorts; each attribute padded to a 4-byte stride."""
+    b = Builder()
+    pos = [(-500, -500, 0), (500, -500, 0), (500, 500, 0), (-500, 500, 0)]
+    uv = [(0, 65535), (65535, 65535), (65535, 0), (0, 0)]
+
+    def padded(fmt, rows, stride, ctype, kind, normalized):
+        blob = b"".join(struct.pack(fmt, *r).ljust(stride, b"\0") for r in rows)
+        view = b._view(blob)
+        b.views[view]["byteStride"] = stride
+        acc = {"bufferView": view, "componentType": ctype, "count": len(rows), "type": kind}
+        if normalized:
+            acc["normalized"] = True
+        b.accessors.append(acc)
+        return len(b.accessors) - 1
+
+    p_acc = padded("<3h", pos, 8, 5122, "VEC3", False)
+    b.accessors[p_acc]["min"], b.accessors[p_acc]["max"] = [-500, -500, 0], [500, 500, 0]
+    attrs = {"POSITION": p_acc,
+             "NORMAL": padded("<3b", [(0, 0, 127)] * 4, 4, 5120, "VEC3", True),
+             "TEXCOORD_0": padded("<2H", uv, 4, 5123, "VEC2", True)}
+    write("quantized_quad.gltf", {
+        "asset": ASSET, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0, "scale": [0.001, 0.001, 0.001]}],
+        "meshes": [{"primitives": [{"attributes": attrs, "indices": b.indices([0, 1, 2, 0, 2, 3]),
+                                    "material": 0}]}],
+        "materials": [{}],
+        "extensionsUsed": ["KHR_mesh_quantization"],
+        "extensionsRequired": ["KHR_mesh_quantization"],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
+        "bufferViews": b.views, "accessors": b.accessors,
+    })
+
+
+def node_weights():
+    """A morph target whose node weight (0.75) overrides the mesh's default (0.25)."""
+    b = Builder()
+    pos, nrm, idx = bend_quad(0.8)
+    attrs = {"POSITION": b.floats(pos, "VEC3", minmax=True), "NORMAL": b.floats(nrm, "VEC3")}
+    target = {"POSITION": b.floats([(0.0, 1.0, 0.0)] * len(pos), "VEC3", minmax=True)}
+    write("node_weights.gltf", {
+        "asset": ASSET, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": "node_weight", "mesh": 0, "weights": [0.75]},
+                  {"name": "mesh_weight", "mesh": 0, "translation": [2, 0, 0]}],
+        "meshes": [{"weights": [0.25], "primitives": [
+            {"attributes": attrs, "targets": [target], "indices": b.indices(idx), "material": 0}]}],
+        "materials": [{}],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
+        "bufferViews": b.views, "accessors": b.accessors,
+    })
+
+
 if __name__ == "__main__":
     textured_box()
     glb_box()
@@ -461,3 +514,5 @@ if __name__ == "__main__":
     morphed_quad()
     extensions()
     texture_transform()
+    quantized_quad()
+    node_weights()

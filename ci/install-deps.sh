@@ -21,6 +21,8 @@ packages=(
   # targets and refuses to configure when they are absent.
   openimageio-tools
   libtinygltf-dev
+  # glTF EXT_meshopt_compression decoding (and encoding in its tests).
+  libmeshoptimizer-dev
   googletest
   libgtest-dev
   libbenchmark-dev

@@ -4,6 +4,10 @@ find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(OpenImageIO REQUIRED)
+# meshoptimizer's CMake package puts a MESHOPTIMIZER_API definition on every dependant's
+# compile line; only gltf_meshopt.cpp and its test include the header, so link the file.
+find_library(MESHOPTIMIZER_LIBRARY meshoptimizer REQUIRED)
+find_path(MESHOPTIMIZER_INCLUDE_DIR meshoptimizer.h REQUIRED)
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 # Debian's OpenImageIO 2.4.7 exports /usr/include/opencv4 as an include directory

@@ -19,21 +19,35 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
     const bool isMover = m > 0;
     const glm::mat4 place = isMover ? state.movers[m - 1] : glm::mat4(1.0f);
     const glm::mat4 prevPlace = isMover ? state.prevMovers[m - 1] : glm::mat4(1.0f);
-    const double animTime = isMover ? state.moverAnimTime[m - 1] : 0.0;
-    const double prevAnimTime = isMover ? state.prevMoverAnimTime[m - 1] : 0.0;
+    const double animTime = isMover ? state.moverAnimTime[m - 1] : state.worldAnimTime;
+    const double prevAnimTime = isMover ? state.prevMoverAnimTime[m - 1] : state.prevWorldAnimTime;
     const auto now = scene::poseModel(scene, m, animTime);
     const auto before = scene::poseModel(scene, m, prevAnimTime);
+    const bool animated = scene::modelAnimates(scene.models[size_t(m)]);
     for (size_t i = 0; i < now.size(); ++i, ++objectId) {
+      const bool deformed = now[i].deformed();
       gpu::InstanceData inst{};
       inst.model = place * now[i].transform;
       inst.prevModel = prevPlace * before[i].transform;
       inst.normalMatrix = glm::mat4(glm::inverseTranspose(glm::mat3(inst.model)));
-      inst.ids = glm::uvec4(objectId, isMover ? 1 : 0, 0, 0);
+      const auto& mesh = scene.meshes[now[i].mesh];
+      inst.ids = glm::uvec4(objectId, isMover ? 1 : 0, deformed ? 1 : 0, mesh.vertexColors ? 1 : 0);
       const auto instance = uint32_t(out.instances.size());
       out.instances.push_back(inst);
-      const auto& mesh = scene.meshes[now[i].mesh];
+      out.dynamic.push_back(isMover || animated || deformed);
+      int32_t deformedBase = -1;
+      if (deformed) {
+        deformedBase = int32_t(out.deformed.size());
+        const std::vector<scene::Vertex> a = scene::deformVertices(scene, now[i]);
+        const std::vector<scene::Vertex> b = scene::deformVertices(scene, before[i]);
+        out.deformed.insert(out.deformed.end(), a.begin(), a.end());
+        for (const scene::Vertex& v : b) out.deformedPrev.emplace_back(v.position, 1.0f);
+      }
       for (int p = 0; p < int(mesh.primitives.size()); ++p) {
-        const Draw d{instance, now[i].mesh, p};
+        Draw d{instance, now[i].mesh, p, -1};
+        if (deformed)
+          d.deformedVertex =
+              deformedBase + mesh.primitives[p].vertexOffset - int32_t(mesh.firstVertex);
         const auto& material = scene.materials[mesh.primitives[p].material];
         if (material.alphaMode == scene::AlphaMode::Blend) {
           const glm::vec3 centre = glm::vec3(inst.model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
@@ -50,6 +64,14 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
   });
   for (const auto& b : blended) out.blended.push_back(b.draw);
   return out;
+}
+
+size_t deformedVertexCount(const scene::Scene& scene) {
+  size_t n = 0;
+  for (int m = 0; m < int(scene.models.size()); ++m)
+    for (const scene::MeshDraw& d : scene::poseModel(scene, m, 0.0))
+      if (d.deformed()) n += scene.meshes[size_t(d.mesh)].vertexCount;
+  return n;
 }
 
 }  // namespace taa

@@ -16,13 +16,25 @@ struct Draw {
   uint32_t instance = 0;
   int mesh = 0;
   int primitive = 0;
+  // Deformed (skinned or morphed) draws read DrawList::deformed, from this vertex on
+  // for the primitive's first vertex; -1: the scene's own vertices.
+  int32_t deformedVertex = -1;
 };
 
 struct DrawList {
   std::vector<gpu::InstanceData> instances;
+  std::vector<uint8_t> dynamic;  // per instance: its geometry moves (mover, animated or deformed)
   std::vector<Draw> opaque;  // opaque and alpha-tested
   std::vector<Draw> blended;  // sorted far to near
+  // This frame's deformed vertices (model space, in the instance's frame) and their
+  // positions at frame - 1, which the G-buffer's velocity comes from.
+  std::vector<scene::Vertex> deformed;
+  std::vector<glm::vec4> deformedPrev;
 };
+
+// Vertices DrawList::deformed holds for every frame of this scene (the sum over
+// deformed mesh draws of their vertex counts).
+size_t deformedVertexCount(const scene::Scene& scene);
 
 DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& state);
 

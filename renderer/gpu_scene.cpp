@@ -1,5 +1,10 @@
 #include "gpu_scene.h"
 
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "draw_list.h"
 #include "vk/context.h"
 #include "vk/transfer.h"
 
@@ -16,6 +21,11 @@ GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT)),
       indices_(vk::uploadBuffer(ctx, scene.indices.data(), scene.indices.size() * sizeof(uint32_t),
                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT)),
+      deformed_(ctx, std::max<size_t>(1, deformedVertexCount(scene)) * sizeof(scene::Vertex),
+                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true),
+      deformedPrev_(ctx, std::max<size_t>(1, deformedVertexCount(scene)) * sizeof(glm::vec4),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+      deformedCapacity_(deformedVertexCount(scene)),
       repeat_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, kMaxLod, true),
       clamp_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, kMaxLod, true) {
   for (const auto& t : scene.textures) {
@@ -42,6 +52,15 @@ GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
   white_ = vk::Image(ctx, d);
   const uint8_t texel[4] = {255, 255, 255, 255};
   vk::uploadImage(ctx, white_, {texel});
+}
+
+void GpuScene::uploadDeformed(const std::vector<scene::Vertex>& vertices,
+                              const std::vector<glm::vec4>& prevPositions) {
+  if (vertices.size() > deformedCapacity_ || prevPositions.size() != vertices.size())
+    throw std::logic_error("GpuScene: the deformed vertex count changed between frames");
+  if (vertices.empty()) return;
+  std::memcpy(deformed_.mapped(), vertices.data(), vertices.size() * sizeof(scene::Vertex));
+  std::memcpy(deformedPrev_.mapped(), prevPositions.data(), prevPositions.size() * sizeof(glm::vec4));
 }
 
 VkImageView GpuScene::textureView(int material) const {

@@ -20,6 +20,13 @@ class GpuScene {
   const scene::Scene& cpu() const { return scene_; }
   VkBuffer vertices() const { return vertices_.handle(); }
   VkBuffer indices() const { return indices_.handle(); }
+  // This frame's skinned and morphed vertices (DrawList::deformed) and their previous
+  // positions, rewritten by uploadDeformed every frame; at least one element each so
+  // they can always be bound.
+  VkBuffer deformedVertices() const { return deformed_.handle(); }
+  VkBuffer deformedPrevPositions() const { return deformedPrev_.handle(); }
+  void uploadDeformed(const std::vector<scene::Vertex>& vertices,
+                      const std::vector<glm::vec4>& prevPositions);
   // The material's base-colour texture, or a 1x1 white texture when it has none.
   VkImageView textureView(int material) const;
   VkSampler sampler(int material) const;
@@ -29,6 +36,9 @@ class GpuScene {
   const scene::Scene& scene_;
   vk::Buffer vertices_;
   vk::Buffer indices_;
+  vk::Buffer deformed_;
+  vk::Buffer deformedPrev_;
+  size_t deformedCapacity_ = 0;
   std::vector<vk::Image> textures_;
   vk::Image white_;
   vk::Sampler repeat_;

@@ -134,6 +134,7 @@ struct Renderer::State {
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
+    for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
     if (adaptive)
@@ -171,6 +172,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   const script::FrameState state = script::frameState(s.spec, frame);
   const DrawList draws = buildDrawList(s.scene, state);
   std::memcpy(s.instances.mapped(), draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+  s.gpuScene.uploadDeformed(draws.deformed, draws.deformedPrev);
   const int eyes = eyeCount(s.spec);
 
   const bool lodBiasApplies = !s.spec.material.lod_bias_taa_only || s.plan.taa;

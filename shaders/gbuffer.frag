@@ -12,6 +12,7 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inCurClip;
 layout(location = 4) in vec4 inPrevClip;
+layout(location = 5) in vec4 inColor;  // glTF COLOR_0, white elsewhere
 
 layout(location = GBUF_OUT_COLOR) out vec4 outColor;
 #if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
@@ -29,6 +30,8 @@ layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
 
 void main() {
   vec4 base = draw.baseColor * texture(baseColorTexture, inUv, draw.lodBias);
+  // Only meshes with COLOR_0: an interpolated constant white is not exactly 1.
+  if (instances[draw.instance].ids.w != 0u) base *= inColor;
   if (draw.alphaCutoff >= 0.0 && base.a < draw.alphaCutoff) discard;
 
   vec3 n = normalize(inNormal);

@@ -74,8 +74,9 @@ void validateMovers(Problems& p, std::vector<MoverSpec>& movers, const std::set<
       p.add(key + ".gltf", "a file is given but shape is '" + std::string(enumToString(m.shape)) +
                                "'; set shape to gltf or remove gltf");
     if (!m.gltf.empty()) checkAssetPath(p, key + ".gltf", m.gltf);
-    if (present.count(key + ".animation_speed") && m.shape != MoverShape::Gltf)
-      p.add(key + ".animation_speed", "only glTF movers have animations; remove it");
+    for (const char* k : {".animation_speed", ".animation_offset_s", ".animations"})
+      if (present.count(key + k) && m.shape != MoverShape::Gltf)
+        p.add(key + k, "only glTF movers have animations; remove it");
     if (m.rotation_speed_deg != 0.0f && glm::length(m.rotation_axis) <= 0.0f)
       p.add(key + ".rotation_axis", "a zero axis cannot rotate; give a non-zero axis");
   }
@@ -155,6 +156,11 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
     checkAssetPath(p, "scene.gltf", spec.scene.gltf);
   } else if (spec.scene.builtin == BuiltinScene::None) {
     p.add("scene", "no scene: set scene.builtin or scene.gltf");
+  }
+  if (spec.scene.gltf.empty()) {
+    for (const char* k : {"scene.animations", "scene.animation_speed", "scene.animation_offset_s"})
+      if (present.count(k))
+        p.add(k, "only a glTF scene has animations; remove it or set scene.gltf");
   }
   if (glm::length(spec.lighting.direction) <= 0.0f) p.add("lighting.direction", "must be non-zero");
   validateRender(p, spec.render);

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "scene/gltf_loader.h"
+
 namespace taa::invariants {
 
 using namespace taa::spec;
@@ -24,6 +26,10 @@ std::string whatMoves(const CaseSpec& spec) {
     return "camera.bob.amplitude is " + num(cam.bob.amplitude);
   if (cam.strafe.speed > 0.0f) return "camera.strafe.speed is " + num(cam.strafe.speed);
   if (!cam.cuts.empty()) return "camera.cuts has " + std::to_string(cam.cuts.size()) + " cut(s)";
+  if (!spec.scene.gltf.empty() && spec.scene.animation_speed > 0.0f &&
+      scene::gltfHasAnimations(spec.file.parent_path() / spec.scene.gltf))
+    return "the glTF scene's own animations play (scene.animation_speed is " +
+           num(spec.scene.animation_speed) + "; 0 holds them)";
   for (size_t i = 0; i < spec.movers.size(); ++i) {
     const MoverSpec& m = spec.movers[i];
     const std::string key = "movers[" + std::to_string(i) + "]";

@@ -44,7 +44,8 @@ std::string variant(const char* shader, const GBufferConfig& c) {
 }
 
 const std::vector<VkDescriptorType> kBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+                                                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
 
 }  // namespace
 
@@ -112,19 +113,27 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
   if (draws.empty()) return;
   pipeline.bind(cmd);
   const VkDeviceSize offset = 0;
-  VkBuffer vb = scene_.vertices();
-  vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+  // Deformed draws read this frame's deformed vertices; the rest the scene's own.
+  const VkBuffer buffers[2] = {scene_.vertices(), scene_.deformedVertices()};
+  int boundBuffer = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &buffers[0], &offset);
   vkCmdBindIndexBuffer(cmd, scene_.indices(), 0, VK_INDEX_TYPE_UINT32);
   const auto& cpu = scene_.cpu();
   int boundMaterial = -1;
   for (const auto& draw : draws) {
     const auto& prim = cpu.meshes[draw.mesh].primitives[draw.primitive];
     const auto& material = cpu.materials[prim.material];
+    const int buffer = draw.deformedVertex >= 0 ? 1 : 0;
+    if (buffer != boundBuffer) {
+      vkCmdBindVertexBuffers(cmd, 0, 1, &buffers[buffer], &offset);
+      boundBuffer = buffer;
+    }
     if (prim.material != boundMaterial) {
       vk::Bindings()
           .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
           .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
           .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(prim.material), scene_.sampler(prim.material))
+          .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0, VK_WHOLE_SIZE)
           .push(ctx_, cmd, pipeline);
       boundMaterial = prim.material;
     }
@@ -136,7 +145,8 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
     push.baseColor = material.baseColorFactor;
     vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), &push);
-    vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex, prim.vertexOffset, 0);
+    vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
+                     draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);
   }
 }
 
@@ -181,6 +191,7 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
       .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
       .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(0), scene_.sampler(0))
+      .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0, VK_WHOLE_SIZE)
       .push(ctx_, cmd, sky_);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (config_.deferred) {

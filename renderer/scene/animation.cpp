@@ -58,15 +58,68 @@ glm::vec4 sample(const AnimChannel& ch, float t, bool rotation) {
   return value(k);
 }
 
-}  // namespace
+// Morph weights of a Weights channel at `t`, the same key rules as sample().
+std::vector<float> sampleWeights(const AnimChannel& ch, float t) {
+  const size_t n = ch.times.size(), w = size_t(ch.targets);
+  const bool cubic = ch.interpolation == Interpolation::CubicSpline;
+  auto value = [&](size_t k, size_t part) {  // part: 0 in-tangent, 1 value, 2 out-tangent
+    return &ch.weights[((cubic ? 3 * k + part : k)) * w];
+  };
+  std::vector<float> out(w);
+  if (t <= ch.times.front() || n == 1 || t >= ch.times.back()) {
+    const float* v = value(t >= ch.times.back() ? n - 1 : 0, 1);
+    out.assign(v, v + w);
+    return out;
+  }
+  const size_t k =
+      size_t(std::upper_bound(ch.times.begin(), ch.times.end(), t) - ch.times.begin()) - 1;
+  const float t0 = ch.times[k], td = ch.times[k + 1] - t0;
+  const float s = td > 0.0f ? (t - t0) / td : 0.0f;
+  const float s2 = s * s, s3 = s2 * s;
+  for (size_t i = 0; i < w; ++i) {
+    switch (ch.interpolation) {
+      case Interpolation::Step:
+        out[i] = value(k, 1)[i];
+        break;
+      case Interpolation::Linear:
+        out[i] = value(k, 1)[i] + (value(k + 1, 1)[i] - value(k, 1)[i]) * s;
+        break;
+      case Interpolation::CubicSpline:
+        out[i] = (2 * s3 - 3 * s2 + 1) * value(k, 1)[i] + (s3 - 2 * s2 + s) * value(k, 2)[i] * td +
+                 (-2 * s3 + 3 * s2) * value(k + 1, 1)[i] + (s3 - s2) * value(k + 1, 0)[i] * td;
+        break;
+    }
+  }
+  return out;
+}
 
-std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
+std::vector<int> playingAnimations(const Model& m) {
+  if (!m.playing.empty()) return m.playing;
+  std::vector<int> all(m.animations.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  return all;
+}
+
+// Node-local TRS after the playing animations are sampled; `loop` wraps each
+// animation's time into its own duration.
+std::vector<Node> animatedNodes(const Model& m, double time, bool loop) {
   std::vector<Node> nodes = m.nodes;
-  if (!m.animations.empty()) {
-    for (const AnimChannel& ch : m.animations.front().channels) {
+  for (const int a : playingAnimations(m)) {
+    if (a < 0 || size_t(a) >= m.animations.size()) continue;
+    const Animation& anim = m.animations[size_t(a)];
+    double t = time;
+    if (loop && anim.duration > 0.0f) {
+      t = std::fmod(time, double(anim.duration));
+      if (t < 0.0) t += double(anim.duration);
+    }
+    for (const AnimChannel& ch : anim.channels) {
       if (ch.node < 0 || size_t(ch.node) >= nodes.size() || ch.times.empty()) continue;
       Node& n = nodes[size_t(ch.node)];
-      const glm::vec4 v = sample(ch, float(time), ch.path == AnimPath::Rotation);
+      if (ch.path == AnimPath::Weights) {
+        n.weights = sampleWeights(ch, float(t));
+        continue;
+      }
+      const glm::vec4 v = sample(ch, float(t), ch.path == AnimPath::Rotation);
       switch (ch.path) {
         case AnimPath::Translation:
           n.translation = glm::vec3(v);
@@ -77,9 +130,15 @@ std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
         case AnimPath::Scale:
           n.scale = glm::vec3(v);
           break;
+        case AnimPath::Weights:
+          break;
       }
     }
   }
+  return nodes;
+}
+
+std::vector<glm::mat4> worldTransforms(const std::vector<Node>& nodes) {
   std::vector<glm::mat4> world(nodes.size());
   for (size_t i = 0; i < nodes.size(); ++i) {
     const Node& n = nodes[i];
@@ -91,18 +150,41 @@ std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
   return world;
 }
 
+}  // namespace
+
+std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
+  return worldTransforms(animatedNodes(m, time, false));
+}
+
+bool modelAnimates(const Model& m) {
+  for (const int a : playingAnimations(m))
+    if (a >= 0 && size_t(a) < m.animations.size() && m.animations[size_t(a)].duration > 0.0f)
+      return true;
+  return false;
+}
+
 std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
   const Model& m = scene.models[size_t(model)];
-  double local = 0.0;
-  if (!m.animations.empty() && m.animations.front().duration > 0.0f) {
-    const double duration = double(m.animations.front().duration);
-    local = std::fmod(time, duration);
-    if (local < 0.0) local += duration;
-  }
-  const std::vector<glm::mat4> world = nodeWorldTransforms(m, local);
+  const std::vector<Node> nodes = animatedNodes(m, time, true);
+  const std::vector<glm::mat4> world = worldTransforms(nodes);
   std::vector<MeshDraw> draws;
-  for (size_t i = 0; i < m.nodes.size(); ++i)
-    if (m.nodes[i].mesh >= 0) draws.push_back({int(i), m.nodes[i].mesh, world[i]});
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const Node& n = nodes[i];
+    if (n.mesh < 0) continue;
+    MeshDraw d{int(i), n.mesh, world[i], {}, {}};
+    const Mesh& mesh = scene.meshes[size_t(n.mesh)];
+    if (!mesh.targets.empty()) {
+      d.weights = n.weights.empty() ? mesh.weights : n.weights;
+      d.weights.resize(mesh.targets.size(), 0.0f);
+    }
+    if (n.skin >= 0 && size_t(n.skin) < m.skins.size() && !mesh.skin.empty()) {
+      const Skin& skin = m.skins[size_t(n.skin)];
+      for (size_t j = 0; j < skin.joints.size(); ++j)
+        d.joints.push_back(world[size_t(skin.joints[j])] * skin.inverseBind[j]);
+      d.transform = glm::mat4(1.0f);
+    }
+    draws.push_back(std::move(d));
+  }
   return draws;
 }
 

@@ -23,6 +23,31 @@ std::filesystem::path resolve(const spec::CaseSpec& spec, const std::string& key
   return spec.file.parent_path() / p;
 }
 
+// Resolves a case's animation picks (names, or decimal indices) into model.playing.
+void selectAnimations(const spec::CaseSpec& spec, const std::string& key,
+                      const std::vector<std::string>& picks, Model& model) {
+  std::string available;
+  for (size_t i = 0; i < model.animations.size(); ++i)
+    available += (i ? ", " : "") + std::to_string(i) + " '" + model.animations[i].name + "'";
+  for (size_t p = 0; p < picks.size(); ++p) {
+    const std::string& pick = picks[p];
+    int found = -1;
+    for (size_t i = 0; i < model.animations.size() && found < 0; ++i)
+      if (model.animations[i].name == pick) found = int(i);
+    const bool digits = !pick.empty() && pick.size() < 9 &&
+                        pick.find_first_not_of("0123456789") == std::string::npos;
+    if (found < 0 && digits && size_t(std::stoi(pick)) < model.animations.size())
+      found = std::stoi(pick);
+    if (found < 0)
+      throw SceneError(spec.file, key + "[" + std::to_string(p) + "]: '" + pick +
+                                      "' is neither the name nor the index of an animation of " +
+                                      model.name + " (it has " +
+                                      (available.empty() ? "none" : available) +
+                                      "); pick one of those or remove the entry");
+    model.playing.push_back(found);
+  }
+}
+
 }  // namespace
 
 bool materialHasAlpha(const Scene& scene, const Material& m) {
@@ -47,9 +72,10 @@ void applyAlphaOverride(Scene& scene, spec::AlphaMode mode, float cutoff) {
 Scene buildScene(const spec::CaseSpec& spec) {
   Scene scene;
   try {
-    if (!spec.scene.gltf.empty())
+    if (!spec.scene.gltf.empty()) {
       scene.models.push_back(loadGltf(resolve(spec, "scene.gltf", spec.scene.gltf), scene));
-    else
+      selectAnimations(spec, "scene.animations", spec.scene.animations, scene.models.back());
+    } else
       scene.models.push_back(buildProceduralScene(spec.scene.builtin, scene));
   } catch (const SceneError& e) {
     // Procedural errors know no file; name the case so the message is actionable.
@@ -62,8 +88,9 @@ Scene buildScene(const spec::CaseSpec& spec) {
       if (m.gltf.empty())
         throw SceneError(spec.file, "movers[" + std::to_string(i) +
                                         "]: shape is gltf but no gltf file is given");
-      scene.models.push_back(
-          loadGltf(resolve(spec, "movers[" + std::to_string(i) + "].gltf", m.gltf), scene));
+      const std::string key = "movers[" + std::to_string(i) + "]";
+      scene.models.push_back(loadGltf(resolve(spec, key + ".gltf", m.gltf), scene));
+      selectAnimations(spec, key + ".animations", m.animations, scene.models.back());
     } else {
       scene.models.push_back(buildMoverShape(m.shape, m.color, scene));
     }

@@ -19,7 +19,7 @@ void MeshBuilder::setMaterial(int material) {
 }
 
 uint32_t MeshBuilder::vertex(const glm::vec3& p, const glm::vec3& n, const glm::vec2& uv) {
-  vertices_.push_back({p, n, uv});
+  vertices_.push_back({p, n, uv, glm::vec4(1.0f)});
   return uint32_t(vertices_.size() - 1);
 }
 

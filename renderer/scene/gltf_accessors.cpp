@@ -24,6 +24,8 @@ int componentCount(int type) {
       return 3;
     case TINYGLTF_TYPE_VEC4:
       return 4;
+    case TINYGLTF_TYPE_MAT4:  // skins' inverse bind matrices
+      return 16;
     default:
       return 0;
   }

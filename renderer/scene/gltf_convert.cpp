@@ -41,6 +41,7 @@ class Converter {
   const std::string& warnings_;
   Scene& s_;
   std::map<int, int> textures_, materials_, meshes_, nodes_;
+  std::map<int, glm::mat3> uvTransforms_;  // per glTF material: its base colour's UV transform
 };
 
 int Converter::texture(int index, const std::string& what) {
@@ -97,6 +98,8 @@ int Converter::material(int index) {
              std::to_string(pbr.baseColorTexture.texCoord) +
              "; only TEXCOORD_0 is supported, re-export with one UV set");
       m.baseColorTexture = texture(pbr.baseColorTexture.index, name + ".baseColorTexture");
+      uvTransforms_[index] = gltfTextureTransform(file_, pbr.baseColorTexture.extensions,
+                                                  name + ".pbrMetallicRoughness.baseColorTexture");
     }
     if (gm.alphaMode == "MASK")
       m.alphaMode = AlphaMode::Mask;
@@ -134,6 +137,8 @@ int Converter::mesh(int index) {
   const tinygltf::Mesh& gm = g_.meshes.at(size_t(index));
   Mesh out;
   out.name = gm.name.empty() ? "mesh" + std::to_string(index) : gm.name;
+  out.firstVertex = uint32_t(s_.vertices.size());
+  for (double w : gm.weights) out.weights.push_back(float(w));
   bool any = false;
   for (size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
@@ -153,9 +158,27 @@ int Converter::mesh(int index) {
       normals = readAccessor(n->second, what + " NORMAL", 3);
     if (auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end())
       uvs = readAccessor(t->second, what + " TEXCOORD_0", 2);
+    material(prim.material);  // loads the material's texture transform, baked into the UVs
+    if (auto m = uvTransforms_.find(prim.material); m != uvTransforms_.end())
+      for (size_t i = 0; i + 1 < uvs.size(); i += 2) {
+        const glm::vec3 uv = m->second * glm::vec3(uvs[i], uvs[i + 1], 1.0f);
+        uvs[i] = uv.x;
+        uvs[i + 1] = uv.y;
+      }
+    std::vector<float> colors;
+    int colorComps = 4;
+    if (auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end()) {
+      if (c->second >= 0 && size_t(c->second) < g_.accessors.size() &&
+          g_.accessors[size_t(c->second)].type == TINYGLTF_TYPE_VEC3)
+        colorComps = 3;
+      colors = readAccessor(c->second, what + " COLOR_0", colorComps);
+      out.vertexColors = true;
+    }
     if ((!normals.empty() && normals.size() != count * 3) ||
-        (!uvs.empty() && uvs.size() != count * 2))
+        (!uvs.empty() && uvs.size() != count * 2) ||
+        (!colors.empty() && colors.size() != count * size_t(colorComps)))
       fail(what + " has attributes of different lengths; re-export it");
+    const GltfDeform deform = readGltfDeform(file_, g_, prim, what, count);
     std::vector<uint32_t> idx;
     if (prim.indices >= 0) {
       idx = readIndices(prim.indices, what);
@@ -174,8 +197,13 @@ int Converter::mesh(int index) {
         v.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 0.0f, 1.0f);
       }
       if (!uvs.empty()) v.uv = glm::make_vec2(&uvs[size_t(i) * 2]);
+      if (!colors.empty()) {
+        const float* c = &colors[size_t(i) * size_t(colorComps)];
+        v.color = glm::vec4(c[0], c[1], c[2], colorComps == 4 ? c[3] : 1.0f);
+      }
       return v;
     };
+    std::vector<uint32_t> source;  // the primitive's vertex each emitted vertex copies
     Primitive out_prim;
     out_prim.vertexOffset = int32_t(s_.vertices.size());
     out_prim.firstIndex = uint32_t(s_.indices.size());
@@ -186,6 +214,7 @@ int Converter::mesh(int index) {
         Vertex v[3] = {vertexAt(idx[t]), vertexAt(idx[t + 1]), vertexAt(idx[t + 2])};
         glm::vec3 n = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
         n = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 0.0f, 1.0f);
+        for (int j = 0; j < 3; ++j) source.push_back(idx[t + size_t(j)]);
         for (Vertex& x : v) {
           x.normal = n;
           s_.indices.push_back(uint32_t(s_.vertices.size()) - uint32_t(out_prim.vertexOffset));
@@ -193,9 +222,13 @@ int Converter::mesh(int index) {
         }
       }
     } else {
-      for (size_t i = 0; i < count; ++i) s_.vertices.push_back(vertexAt(uint32_t(i)));
+      for (size_t i = 0; i < count; ++i) {
+        s_.vertices.push_back(vertexAt(uint32_t(i)));
+        source.push_back(uint32_t(i));
+      }
       s_.indices.insert(s_.indices.end(), idx.begin(), idx.end());
     }
+    appendGltfDeform(deform, source, s_.vertices.size() - out.firstVertex - source.size(), out);
     out_prim.indexCount = uint32_t(s_.indices.size()) - out_prim.firstIndex;
     for (size_t i = 0; i < count; ++i) {
       const glm::vec3 q = glm::make_vec3(&positions[i * 3]);
@@ -205,6 +238,11 @@ int Converter::mesh(int index) {
     }
     out.primitives.push_back(out_prim);
   }
+  out.vertexCount = uint32_t(s_.vertices.size()) - out.firstVertex;
+  if (!out.targets.empty()) out.weights.resize(out.targets.size(), 0.0f);
+  if (std::all_of(out.skin.begin(), out.skin.end(),
+                  [](const SkinWeights& w) { return w.weights == glm::vec4(0.0f); }))
+    out.skin.clear();
   s_.meshes.push_back(std::move(out));
   return meshes_[index] = int(s_.meshes.size()) - 1;
 }
@@ -223,6 +261,8 @@ void Converter::addNode(int index, int parent, Model& model, std::vector<int>& v
   Node n;
   n.name = gn.name.empty() ? "node" + std::to_string(index) : gn.name;
   n.parent = parent;
+  n.skin = gn.skin;  // a glTF skin index: every skin is loaded, in file order
+  for (double w : gn.weights) n.weights.push_back(float(w));
   if (gn.matrix.size() == 16) {
     glm::mat4 m;
     for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(gn.matrix[size_t(i)]);
@@ -272,10 +312,17 @@ void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& 
     else if (ch.target_path == "rotation") {
       o.path = AnimPath::Rotation;
       comps = 4;
-    } else if (ch.target_path == "scale")
+    } else if (ch.target_path == "scale") {
       o.path = AnimPath::Scale;
-    else
-      continue;  // morph-target weights: not supported, the mesh stays at rest
+    } else if (ch.target_path == "weights") {
+      o.path = AnimPath::Weights;
+      const int mesh = model.nodes[size_t(o.node)].mesh;
+      o.targets = mesh >= 0 ? int(s_.meshes[size_t(mesh)].targets.size()) : 0;
+      if (o.targets == 0) continue;  // a node without morph targets: nothing to move
+      comps = 1;
+    } else {
+      fail(what + " targets path '" + ch.target_path + "', which glTF 2.0 does not define");
+    }
     if (ch.sampler < 0 || size_t(ch.sampler) >= a.samplers.size())
       fail(what + " refers to a missing sampler");
     const tinygltf::AnimationSampler& s = a.samplers[size_t(ch.sampler)];
@@ -290,13 +337,19 @@ void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& 
     o.times = readAccessor(s.input, what + " input", 1);
     const std::vector<float> values = readAccessor(s.output, what + " output", comps);
     const size_t per = o.interpolation == Interpolation::CubicSpline ? 3 : 1;
-    if (o.times.empty() || values.size() != o.times.size() * per * size_t(comps))
+    if (o.path == AnimPath::Weights) {
+      if (o.times.empty() || values.size() != o.times.size() * per * size_t(o.targets))
+        fail(what + " has " + std::to_string(values.size()) + " weights for " +
+             std::to_string(o.times.size()) + " keys of " + std::to_string(o.targets) +
+             " morph targets; re-export it");
+      o.weights = values;
+    } else if (o.times.empty() || values.size() != o.times.size() * per * size_t(comps))
       fail(what + " has " + std::to_string(values.size() / size_t(comps)) + " output values for " +
            std::to_string(o.times.size()) + " keys; expected " +
            std::to_string(o.times.size() * per));
     for (size_t k = 1; k < o.times.size(); ++k)
       if (!(o.times[k] > o.times[k - 1])) fail(what + " key times must strictly increase");
-    for (size_t i = 0; i < values.size() / size_t(comps); ++i)
+    for (size_t i = 0; o.path != AnimPath::Weights && i < values.size() / size_t(comps); ++i)
       o.values.emplace_back(values[i * size_t(comps)], values[i * size_t(comps) + 1],
                             values[i * size_t(comps) + 2],
                             comps == 4 ? values[i * size_t(comps) + 3] : 0.0f);
@@ -337,6 +390,10 @@ Model Converter::run() {
   for (int r : roots) addNode(r, -1, model, visiting);
   if (model.nodes.empty())
     fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
+  model.skins = readGltfSkins(file_, g_, nodes_);
+  for (const Node& n : model.nodes)
+    if (n.skin >= 0 && size_t(n.skin) >= model.skins.size())
+      fail("node '" + n.name + "' refers to missing skins[" + std::to_string(n.skin) + "]");
   for (size_t i = 0; i < g_.animations.size(); ++i) addAnimation(g_.animations[i], i, model);
   return model;
 }

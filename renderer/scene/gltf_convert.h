@@ -4,6 +4,8 @@
 #include <tiny_gltf.h>
 
 #include <filesystem>
+#include <glm/mat3x3.hpp>
+#include <map>
 #include <string>
 
 #include "scene/scene.h"
@@ -13,6 +15,37 @@ namespace taa::scene {
 // `warnings` are tinygltf's, quoted when an image it could not read is needed.
 Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf,
                   const std::string& warnings, Scene& scene);
+
+// A primitive's morph targets and skin attributes, per vertex of the primitive.
+struct GltfDeform {
+  std::vector<std::vector<float>> positions, normals;  // per target: xyz per vertex (may be empty)
+  std::vector<float> joints, weights;                  // 4 per vertex; empty: not skinned
+};
+GltfDeform readGltfDeform(const std::filesystem::path& file, const tinygltf::Model& gltf,
+                          const tinygltf::Primitive& prim, const std::string& what, size_t count);
+
+// Appends a primitive's deformation data to `mesh` for the vertices it emitted
+// (`source[i]`: the primitive vertex emitted vertex i copies); `before` vertices of
+// the mesh came earlier, and get zero offsets and weights where they had none.
+void appendGltfDeform(const GltfDeform& d, const std::vector<uint32_t>& source, size_t before,
+                      Mesh& mesh);
+
+// Every skin of the file, joints mapped through `nodes` (glTF node -> model node).
+std::vector<Skin> readGltfSkins(const std::filesystem::path& file, const tinygltf::Model& gltf,
+                                const std::map<int, int>& nodes);
+
+// The KHR_texture_transform of a texture reference (identity without one) as a UV
+// matrix; throws SceneError for a malformed one or one selecting another UV set.
+glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
+                               const tinygltf::ExtensionMap& extensions, const std::string& what);
+
+// EXT_meshopt_compression (gltf_meshopt.cpp). Before tinygltf: gives every fallback
+// buffer without a uri an all-zero data URI of its byteLength; returns whether it
+// changed `json`. glbWithJson replaces a GLB's JSON chunk. After tinygltf: decodes every
+// compressed buffer view into its place; throws SceneError naming the view.
+bool fillMeshoptFallbacks(std::string& json);
+std::vector<uint8_t> glbWithJson(const std::vector<uint8_t>& glb, std::string json);
+void decodeMeshopt(const std::filesystem::path& file, tinygltf::Model& gltf);
 
 // Splits a node matrix (column-major, no shear as glTF requires) into TRS. A negative
 // determinant becomes a negative x scale.

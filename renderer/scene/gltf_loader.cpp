@@ -2,6 +2,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "scene/gltf_convert.h"
@@ -96,12 +97,18 @@ std::string trimmed(std::string s) {
 }  // namespace
 
 Model loadGltf(const fs::path& file, Scene& scene) {
-  const std::vector<uint8_t> bytes = readFile(file);
+  std::vector<uint8_t> bytes = readFile(file);
   const bool binary =
       bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
-  const std::string json =
+  std::string json =
       binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
   checkGltfUris(file, json);
+  const std::string note = checkGltfExtensions(file, json);
+  if (!note.empty() && std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
+    scene.notes.push_back(note);
+  if (json.find("EXT_meshopt_compression") != std::string::npos && fillMeshoptFallbacks(json) &&
+      binary)
+    bytes = glbWithJson(bytes, json);
 
   std::error_code ec;
   Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};
@@ -119,6 +126,7 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   if (!ok)
     throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
                                "; check the file with the Khronos glTF validator or re-export it");
+  decodeMeshopt(file, gltf);
   return convertGltf(file, gltf, trimmed(warn), scene);
 }
 

@@ -28,4 +28,17 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 // as tinygltf decodes it). The message names `file`, the key and the uri.
 void checkGltfUris(const std::filesystem::path& file, const std::string& json);
 
+// Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
+// read (loadGltf then reports why). For spec-level checks that need to know whether a
+// glTF scene moves without loading it.
+bool gltfHasAnimations(const std::filesystem::path& file);
+
+// The extensions loadGltf implements (extensionsRequired may list only these).
+const std::vector<std::string>& supportedGltfExtensions();
+
+// Throws SceneError naming `file`, the extension and the fix when extensionsRequired
+// lists one that is not supported. Returns a one-line note naming the extensions that
+// extensionsUsed lists but the loader ignores ("" when there are none).
+std::string checkGltfExtensions(const std::filesystem::path& file, const std::string& json);
+
 }  // namespace taa::scene

@@ -17,8 +17,9 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  glm::vec4 color{1.0f};  // linear RGBA (glTF COLOR_0), multiplies the base colour
 };
-static_assert(sizeof(Vertex) == 32);
+static_assert(sizeof(Vertex) == 48);
 
 // RGBA8 texels, sRGB-encoded colour with linear alpha; levels[0] is full size,
 // each further level half the size (rounded down, at least 1) down to 1x1.
@@ -50,11 +51,31 @@ struct Primitive {
   int material = 0;
 };
 
+// Per-vertex offsets of one morph target, over the mesh's whole vertex range.
+struct MorphTarget {
+  std::vector<glm::vec3> position;
+  std::vector<glm::vec3> normal;  // empty when the target moves no normals
+};
+
+// Up to four joints (indices into the skin's joint list) and their weights.
+struct SkinWeights {
+  glm::uvec4 joints{0u};
+  glm::vec4 weights{0.0f};
+};
+
 struct Mesh {
   std::string name;
   std::vector<Primitive> primitives;
-  glm::vec3 boundsMin{0.0f};  // object-space bounds of all primitives
+  glm::vec3 boundsMin{0.0f};  // object-space bounds of all primitives (at rest)
   glm::vec3 boundsMax{0.0f};
+  bool vertexColors = false;  // some primitive has COLOR_0 (Vertex::color is not all white)
+  // Deformation data. The mesh's vertices are Scene::vertices[firstVertex, +vertexCount)
+  // in primitive order; morph targets and skin weights index the same range.
+  uint32_t firstVertex = 0;
+  uint32_t vertexCount = 0;
+  std::vector<MorphTarget> targets;
+  std::vector<float> weights;  // default morph weights, one per target
+  std::vector<SkinWeights> skin;  // empty: the mesh carries no joints
 };
 
 struct Node {
@@ -62,12 +83,14 @@ struct Node {
   int parent = -1;  // index into the same Model's nodes; parents come before children
   int mesh = -1;    // index into Scene::meshes, -1 = none
   int camera = -1;  // index into the same Model's cameras, -1 = none
+  int skin = -1;    // index into the same Model's skins, -1 = none
+  std::vector<float> weights;  // morph weights overriding the mesh's; empty: the mesh's
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 scale{1.0f};
 };
 
-enum class AnimPath { Translation, Rotation, Scale };
+enum class AnimPath { Translation, Rotation, Scale, Weights };
 enum class Interpolation { Linear, Step, CubicSpline };
 
 struct AnimChannel {
@@ -76,6 +99,14 @@ struct AnimChannel {
   Interpolation interpolation = Interpolation::Linear;
   std::vector<float> times;        // seconds, increasing
   std::vector<glm::vec4> values;   // xyz (or quaternion xyzw); cubic: in-tangent, value, out-tangent per key
+  std::vector<float> weights;      // Weights path: `targets` floats per value, in place of `values`
+  int targets = 0;
+};
+
+// Joints (indices into the model's nodes) and their inverse bind matrices.
+struct Skin {
+  std::vector<int> joints;
+  std::vector<glm::mat4> inverseBind;
 };
 
 struct Animation {
@@ -93,12 +124,16 @@ struct Camera {
   float zfar = 0.0f;   // 0: infinite (glTF leaves zfar out)
 };
 
-// A node hierarchy: the static world, or one mover's object.
+// A node hierarchy: the world, or one mover's object.
 struct Model {
   std::string name;
   std::vector<Node> nodes;
   std::vector<Animation> animations;
   std::vector<Camera> cameras;
+  std::vector<Skin> skins;
+  // Indices of the animations that play together, in this order (a later channel on the
+  // same node and path wins); empty: every animation in file order. A case may pick some.
+  std::vector<int> playing;
 };
 
 struct Scene {
@@ -108,22 +143,39 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Mesh> meshes;
   std::vector<Model> models;  // models[0] is the world; movers follow in case order
+  // What loading left out, one line per file (e.g. extensions used but not supported);
+  // the renderer logs them so the run log and the report show them.
+  std::vector<std::string> notes;
 };
 
-// One mesh to draw with its model-space transform.
+// One mesh to draw with its model-space transform. A skinned mesh is posed in model
+// space by `joints` (transform is then identity, as glTF ignores the node's own);
+// `weights` are the morph weights in force (empty for a mesh without targets).
 struct MeshDraw {
   int node = 0;
   int mesh = 0;
   glm::mat4 transform{1.0f};
+  std::vector<glm::mat4> joints;  // per skin joint: world(joint) * inverse bind matrix
+  std::vector<float> weights;
+  bool deformed() const { return !joints.empty() || !weights.empty(); }
 };
 
-// Evaluates a model's node hierarchy at `time` seconds of its first animation
-// (looping), returning every mesh-bearing node in node order. Pure function.
+// The mesh's vertices deformed by the draw's morph weights, then its joints; the
+// output has mesh.vertexCount entries. Pure function.
+std::vector<Vertex> deformVertices(const Scene& scene, const MeshDraw& draw);
+
+// Evaluates a model's node hierarchy at `time` seconds into its playing animations,
+// each looping over its own duration, returning every mesh-bearing node in node
+// order. Pure function.
 std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time);
 
-// World transform of every node at `time` seconds into the model's first animation,
-// not looped: before the first key and after the last the end values hold.
+// World transform of every node at `time` seconds into the model's playing
+// animations, not looped: before the first key and after the last the end values hold.
 std::vector<glm::mat4> nodeWorldTransforms(const Model& model, double time);
+
+// Whether any playing animation of the model has keys over a time span (its pose
+// changes with time).
+bool modelAnimates(const Model& model);
 
 // Object-space bounds of a model at rest (time 0), for framing a camera.
 void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi);

@@ -122,6 +122,13 @@ FrameState frameState(const spec::CaseSpec& spec, int frame) {
     fs.prevMoverAnimTime.push_back(before.animationTime);
   }
 
+  auto worldAnim = [&](int f) {
+    return double(spec.scene.animation_offset_s) +
+           double(spec.scene.animation_speed) * frameTime(spec.script, f);
+  };
+  fs.worldAnimTime = worldAnim(frame);
+  fs.prevWorldAnimTime = worldAnim(prevFrame);
+
   const auto& resets = spec.script.reset_history_at;
   fs.resetHistory =
       frame == 0 || fs.cameraCut || std::find(resets.begin(), resets.end(), frame) != resets.end();

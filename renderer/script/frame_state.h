@@ -36,6 +36,9 @@ struct FrameState {
   std::vector<glm::mat4> movers, prevMovers;
   std::vector<double> moverAnimTime;  // seconds into each mover's animation
   std::vector<double> prevMoverAnimTime;  // the same at frame - 1 (frame 0: same)
+  // Seconds into the world glTF's animations (scene.animation_offset_s + speed * time),
+  // now and at frame - 1 (frame 0: same).
+  double worldAnimTime = 0.0, prevWorldAnimTime = 0.0;
   bool cameraCut = false;             // a camera cut starts at this frame
   bool resetHistory = false;          // cut, frame 0, or script.reset_history_at
 };

@@ -42,7 +42,8 @@ MoverState moverState(const spec::MoverSpec& mover, const spec::TimingSpec& timi
   const double rate = mover.rotation_speed_deg;
   // Reduced in double before the float matrix sees it: angles grow without bound.
   st.angleDeg = std::fmod(mover.continuous_rotation ? rate * t : rate * st.offset, 360.0);
-  st.animationTime = t * static_cast<double>(mover.animation_speed);
+  st.animationTime =
+      double(mover.animation_offset_s) + t * static_cast<double>(mover.animation_speed);
 
   glm::dmat4 model = glm::translate(glm::dmat4(1.0), st.position);
   const glm::dvec3 axis(mover.rotation_axis);

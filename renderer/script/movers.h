@@ -14,7 +14,7 @@ struct MoverState {
   double offset = 0.0;         // s': distance from start after repeat, in [0, |end - start|]
   glm::dvec3 position{0.0};    // start + dir * s'
   double angleDeg = 0.0;       // about the normalised rotation_axis, reduced to (-360, 360)
-  double animationTime = 0.0;  // seconds into the glTF animation: t * animation_speed
+  double animationTime = 0.0;  // seconds into the glTF animations: offset + t * animation_speed
   glm::mat4 model{1.0f};       // translate(position) * rotate(angle, axis) * scale(size)
 };
 

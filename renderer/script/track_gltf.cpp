@@ -61,6 +61,7 @@ RawTrack gltfCameraTrack(const std::filesystem::path& file, const std::string& c
                      ": the file has no animation, so its camera does not move; "
                      "animate the camera node (the first animation is replayed)");
   const double duration = model.animations.front().duration;
+  model.playing = {0};  // a camera track replays the first animation alone (docs/tracks.md)
 
   RawTrack track;
   track.source = source + ": node '" + node.name + "'";

@@ -3,6 +3,7 @@
 
 #include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 #include "spec/fields.h"
 
@@ -17,6 +18,9 @@ TAA_ENUM_NAMES(BuiltinScene, {BuiltinScene::None, "none"}, {BuiltinScene::Checke
 struct SceneSpec {
   BuiltinScene builtin = BuiltinScene::Checkerboard;
   std::string gltf;  // relative to the case file; replaces the built-in scene when set
+  std::vector<std::string> animations;  // names or decimal indices; empty: all play
+  float animation_speed = 1.0f;
+  float animation_offset_s = 0.0f;
 };
 
 template <class V>
@@ -28,6 +32,15 @@ void fields(V& v, SceneSpec& s) {
           Meta{"glTF 2.0 file (.gltf or .glb), relative to the case file; must stay inside the "
                "case's folder tree",
                "renderer/scene/gltf_loader.cpp"});
+  const char* anim = "renderer/scene/animation.cpp";
+  v.field("animations", s.animations,
+          Meta{"the glTF scene's animations that play together, each a name or a decimal index; "
+               "empty: all of them",
+               "renderer/scene/build_scene.cpp"});
+  v.field("animation_speed", s.animation_speed, Range<float>{0.0f, 1e3f},
+          Meta{"playback speed of the glTF scene's animations (0 holds them at the offset)", anim});
+  v.field("animation_offset_s", s.animation_offset_s, Range<float>{-1e6f, 1e6f},
+          Meta{"animation time at frame 0: frame n plays offset + speed * n / fps", anim});
 }
 
 struct LightingSpec {

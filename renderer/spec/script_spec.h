@@ -179,6 +179,8 @@ struct MoverSpec {
   float rotation_speed_deg = 0.0f;
   bool continuous_rotation = true;
   float animation_speed = 1.0f;
+  float animation_offset_s = 0.0f;
+  std::vector<std::string> animations;  // names or decimal indices; empty: all play
   std::string track;  // recorded transforms; replaces start/end/speed/repeat/rotation/size
   float track_time_offset_s = 0.0f;
 };
@@ -203,7 +205,14 @@ void fields(V& v, MoverSpec& s) {
                "travelled",
                impl});
   v.field("animation_speed", s.animation_speed, Range<float>{0.0f, 1e3f},
-          Meta{"playback speed of the glTF model's node animation", "renderer/scene/animation.cpp"});
+          Meta{"playback speed of the glTF model's animations", "renderer/scene/animation.cpp"});
+  v.field("animation_offset_s", s.animation_offset_s, Range<float>{-1e6f, 1e6f},
+          Meta{"animation time at frame 0: frame n plays offset + speed * n / fps",
+               "renderer/scene/animation.cpp"});
+  v.field("animations", s.animations,
+          Meta{"the glTF model's animations that play together, each a name or a decimal index; "
+               "empty: all of them",
+               "renderer/scene/build_scene.cpp"});
   const char* track = "renderer/script/tracks.cpp";
   v.field("track", s.track,
           Meta{"recorded transforms (.json: its movers[i] for this mover i; .csv: the whole "

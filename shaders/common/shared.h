@@ -22,6 +22,7 @@ using uint = uint32_t;
 #define GBUF_BINDING_FRAME 0
 #define GBUF_BINDING_INSTANCES 1
 #define GBUF_BINDING_TEXTURE 2
+#define GBUF_BINDING_PREV_POSITIONS 3  // deformed vertices' positions at frame - 1
 
 // Fragment outputs; a case allocates only the targets it needs and the rest are discarded.
 #define GBUF_OUT_COLOR 0
@@ -59,7 +60,9 @@ TAA_BLOCK(InstanceData) {
   mat4 model;
   mat4 prevModel;
   mat4 normalMatrix;  // inverse transpose of model, upper 3x3
-  uvec4 ids;          // x: object id (stable across frames), y: 1 for movers
+  uvec4 ids;          // x: object id (stable across frames), y: 1 for movers, z: 1 when
+                      // deformed (vertices from the deformed buffer, prevPositions by index),
+                      // w: 1 when the mesh has vertex colours
 };
 
 // The ids target packs mover flag (bit 31), object id (bits 16-30), material (0-15).

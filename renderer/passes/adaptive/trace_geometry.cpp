@@ -18,14 +18,15 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
   });
   for (const Draw& d : all) {
     const gpu::InstanceData& inst = draws.instances[d.instance];
-    if ((inst.ids.y != 0) != movers) continue;
+    if ((draws.dynamic[d.instance] != 0) != movers) continue;
     const scene::Primitive& prim = scene.meshes[d.mesh].primitives[d.primitive];
     const glm::mat3 normalMatrix(inst.normalMatrix);
+    // Skinned and morphed draws: this frame's deformed vertices.
+    const scene::Vertex* base = d.deformedVertex >= 0 ? &draws.deformed[size_t(d.deformedVertex)]
+                                                      : &scene.vertices[size_t(prim.vertexOffset)];
     for (uint32_t k = 0; k + 2 < prim.indexCount; k += 3) {
       const scene::Vertex* v[3];
-      for (int j = 0; j < 3; ++j)
-        v[j] = &scene.vertices[size_t(prim.vertexOffset) +
-                               scene.indices[prim.firstIndex + k + uint32_t(j)]];
+      for (int j = 0; j < 3; ++j) v[j] = &base[scene.indices[prim.firstIndex + k + uint32_t(j)]];
       auto world = [&](int j) { return glm::vec3(inst.model * glm::vec4(v[j]->position, 1.0f)); };
       triangles.push_back({world(0), world(1), world(2)});
       if (shading) {

@@ -1,6 +1,7 @@
 // The scene as the adaptive tracer sees it: world-space triangles in BVH leaf order,
 // their shading attributes and the BVH nodes, ready to upload. The static world is
-// built once; the movers' triangles are re-posed and their BVH rebuilt every frame
+// built once; moving triangles (movers, animated or deformed glTF nodes) are re-posed
+// and their BVH rebuilt every frame
 // (a few hundred triangles: cheaper than a second level of instancing in the shader).
 #pragma once
 
@@ -20,7 +21,8 @@ struct TraceGeometry {
   std::vector<gpu::TraceShading> shading;
 };
 
-// World-space triangles of the draws of movers (`movers` true) or of the static world,
+// World-space triangles of the draws whose geometry moves (`movers` true: movers, the
+// world's animated nodes, skinned and morphed meshes, see DrawList::dynamic) or of the rest,
 // in a fixed order (instance, mesh, primitive, index) whatever order the draws came in.
 // `shading` and `materials` (optional) receive what each triangle is shaded with.
 void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool movers,

@@ -295,3 +295,11 @@ if __name__ == "__main__":
     animated()
     alpha_modes()
     refused()
+    import make_assets_gltf as more  # the generators of the second file, same helpers
+    more.skinned_quad()
+    more.two_skins()
+    more.morphed_quad()
+    more.extensions()
+    more.texture_transform()
+    more.quantized_quad()
+    more.node_weights()

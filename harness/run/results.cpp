@@ -26,6 +26,10 @@ const char* toString(CaseStatus s) {
   return "?";
 }
 
+CaseStatus worse(CaseStatus a, CaseStatus b) {
+  return int(a) >= int(b) ? a : b;
+}
+
 namespace {
 
 template <class E>
@@ -87,7 +91,19 @@ nlohmann::json toJson(const RunResults& r) {
                          {"frame_ms", c.frameMs},
                          {"frame_stats", c.frameStats},
                          {"log", c.log},
+                         {"frame_sha256", c.frameSha256},
                          {"seconds", c.seconds}};
+    if (const auto& d = c.firstDifference; d.frame >= 0) {
+      nlohmann::json n = nlohmann::json::array();
+      for (const auto& g : d.goldenNeighbours)
+        n.push_back({{"frame", g.frame}, {"image", g.image}});
+      jc["first_difference"] = {{"frame", d.frame},
+                                {"detail", d.detail},
+                                {"actual_sha256", d.actualSha256},
+                                {"golden_sha256", d.goldenSha256},
+                                {"actual", d.actual},
+                                {"golden_neighbours", n}};
+    }
     for (const auto& f : c.frames) {
       const auto& i = f.images;
       jc["frames"].push_back({{"frame", f.frame},
@@ -139,6 +155,18 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.frameStats = jc.value("frame_stats", std::map<std::string, std::vector<double>>{});
     c.log = jc.value("log", std::vector<std::string>{});
     c.seconds = jc.value("seconds", 0.0);
+    c.frameSha256 = jc.value("frame_sha256", std::vector<std::string>{});
+    if (jc.contains("first_difference")) {
+      const auto& jd = jc["first_difference"];
+      auto& d = c.firstDifference;
+      d.frame = jd.value("frame", -1);
+      d.detail = jd.value("detail", "");
+      d.actualSha256 = jd.value("actual_sha256", "");
+      d.goldenSha256 = jd.value("golden_sha256", "");
+      d.actual = jd.value("actual", "");
+      for (const auto& n : jd.value("golden_neighbours", nlohmann::json::array()))
+        d.goldenNeighbours.push_back({n.value("frame", 0), n.value("image", "")});
+    }
     for (const auto& jf : jc.value("frames", nlohmann::json::array())) {
       FrameComparison f;
       f.frame = jf.value("frame", 0);

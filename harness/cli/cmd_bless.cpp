@@ -41,6 +41,8 @@ std::vector<std::string> failedCases(const fs::path& results) {
 }
 
 void printChanges(const run::CaseResult& r) {
+  if (r.firstDifference.frame >= 0)
+    std::cout << "  " << r.name << " sequence: " << r.firstDifference.detail << "\n";
   if (r.frames.empty()) return;
   for (const auto& f : r.frames) {
     std::cout << "  " << r.name << " frame " << f.frame << ": ";
@@ -121,8 +123,9 @@ int cmdBless(const Args& args) {
     if (fs::exists(root / loaded.spec.name / "manifest.json"))
       previous = golden::readManifest(root / loaded.spec.name / "manifest.json");
     const auto& frames = outcome.outputs.at(loaded.spec.name);
-    const auto manifest = golden::makeManifest(loaded, outcome.environment, frames, r.frameSha256,
-                                               reason, previous ? &*previous : nullptr);
+    const auto manifest = golden::makeManifest(loaded, outcome.environment, frames,
+                                               {r.frameSha256, r.frameSignatures}, reason,
+                                               previous ? &*previous : nullptr);
     std::vector<std::pair<golden::GoldenFrame, Image>> files;
     for (const auto& gf : manifest.frames) files.emplace_back(gf, frames.at(gf.frame));
     golden::replaceGoldens(root, manifest, files);

@@ -48,8 +48,9 @@ std::string rendererCommit() {
 }
 
 Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env,
-                      const std::map<int, Image>& frames, const std::vector<std::string>& sequence,
+                      const std::map<int, Image>& frames, const FrameDigests& digests,
                       const std::string& reason, const Manifest* previous) {
+  const auto& sequence = digests.sha256;
   Manifest m;
   m.caseName = loaded.spec.name;
   m.caseSha256 = loaded.sha256;
@@ -60,6 +61,7 @@ Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env,
     m.history.insert(m.history.end(), previous->history.begin(), previous->history.end());
   }
   m.sequence = sequence;
+  m.signatures = digests.signatures;
   for (const auto& [frame, image] : frames) {
     m.frames.push_back({frame, frameFile(frame), pixelSha256(image), image.width, image.height});
     if (size_t(frame) >= sequence.size() || sequence[size_t(frame)] != m.frames.back().sha256)

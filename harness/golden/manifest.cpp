@@ -30,7 +30,8 @@ nlohmann::json Manifest::toJson() const {
                       {"reason", bless.reason},
                       {"history", nlohmann::json::array()},
                       {"frames", nlohmann::json::array()},
-                      {"frame_sha256", sequence}};
+                      {"frame_sha256", sequence},
+                      {"frame_signatures", signatures}};
   for (const auto& h : history) j["history"].push_back(blessJson(h));
   for (const auto& f : frames)
     j["frames"].push_back(
@@ -53,10 +54,16 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
     // Absent in manifests blessed before every frame was hashed; the runner reports those.
     if (j.contains("frame_sha256"))
       m.sequence = j.at("frame_sha256").get<std::vector<std::string>>();
+    if (j.contains("frame_signatures"))
+      m.signatures = j.at("frame_signatures").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
     throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
                       restoreHint(where.parent_path()));
   }
+  if (!m.signatures.empty() && m.signatures.size() != m.sequence.size())
+    throw GoldenError(where.string() + ": frame_signatures lists " +
+                      std::to_string(m.signatures.size()) + " frames, frame_sha256 " +
+                      std::to_string(m.sequence.size()) + "; " + restoreHint(where.parent_path()));
   for (const auto& f : m.frames)
     if (!m.sequence.empty() && (f.frame < 0 || size_t(f.frame) >= m.sequence.size() ||
                                 m.sequence[size_t(f.frame)] != f.sha256))

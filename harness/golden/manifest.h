@@ -48,6 +48,9 @@ struct Manifest {
   // pixelSha256 of every rendered frame, index = frame number ("frame_sha256"): frames no EXR
   // covers are still checked bit for bit in the golden's environment.
   std::vector<std::string> sequence;
+  // golden::frameSignature of every rendered frame ("frame_signatures"): what each frame looks
+  // like, compared within tolerances in other environments, where the hashes differ.
+  std::vector<std::string> signatures;
 
   nlohmann::json toJson() const;
   static Manifest fromJson(const nlohmann::json& j, const std::filesystem::path& where);

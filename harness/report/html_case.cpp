@@ -7,6 +7,7 @@
 #include "report/html_parts.h"
 #include "report/svg_plot.h"
 #include "report/text_util.h"
+#include "run/console.h"
 
 namespace taa::report::detail {
 
@@ -228,6 +229,12 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
     s += "</dl>\n";
   }
   s += "<h3>Frames compared with goldens</h3>\n" + metricsTable(c, id);
+  if (const auto& q = c.sequenceCheck; !q.mode.empty())
+    s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
+         (q.mode == "exact" ? "pixel hashes, bit-exact (golden's environment)"
+                            : "quality signatures within tolerance (another environment)" +
+                                  escapeMarkup(run::sequenceWorst(q))) +
+         "</p>\n";
   s += firstDifference(c, id, dir);
   s += invariantsTable(c);
   s += curves(c);

@@ -13,6 +13,13 @@ std::string fmt(const char* f, double v) {
 }
 }  // namespace
 
+std::string sequenceWorst(const CaseResult::SequenceCheck& q) {
+  if (q.mode != "signature") return "";
+  return " (worst: cell " + std::to_string(q.worstCell) + "/255 at frame " +
+         std::to_string(q.worstCellFrame) + ", channel mean " + fmt("%.3g", q.worstMean) +
+         " at frame " + std::to_string(q.worstMeanFrame) + ")";
+}
+
 bool caseFailed(const CaseResult& c) {
   return c.status != CaseStatus::Pass && c.status != CaseStatus::NoGolden;
 }
@@ -33,6 +40,11 @@ void printCase(std::ostream& out, const CaseResult& c) {
     if (!ok && !f.images.diff.empty()) out << " (diff " << f.images.diff << ")";
     out << "\n";
   }
+  if (const auto& q = c.sequenceCheck; !q.mode.empty() && c.firstDifference.frame < 0)
+    out << "PASS " << c.name << " sequence: " << q.frames << " frames "
+        << (q.mode == "exact" ? "identical to the golden's"
+                              : "within signature tolerance of the golden's")
+        << sequenceWorst(q) << "\n";
   if (const auto& d = c.firstDifference; d.frame >= 0) {
     out << "FAIL " << c.name << " frame " << d.frame << " sequence: " << d.detail;
     if (!d.actual.empty()) out << " (actual " << d.actual;

@@ -6,6 +6,7 @@
 #include "compare/heatmap.h"
 #include "compare/tolerance.h"
 #include "core/image_io.h"
+#include "golden/signature.h"
 
 namespace taa::run {
 
@@ -73,23 +74,58 @@ GoldenCheck::GoldenCheck(const spec::CaseSpec& spec, const golden::Environment& 
   } catch (const golden::GoldenError& e) {
     problem_ = e.what();
   }
-  // Hashes are comparable only where lavapipe reproduces the golden's bytes.
-  compareSequence_ = goldens_ && goldens_->manifest.environment.fingerprint() == environment_ &&
-                     !goldens_->manifest.sequence.empty();
+  // Hashes are comparable only where lavapipe reproduces the golden's bytes; elsewhere every
+  // frame's signature is compared within tolerances.
+  if (!goldens_) return;
+  const auto& m = goldens_->manifest;
+  if (m.environment.fingerprint() == environment_)
+    mode_ = m.sequence.empty() ? Mode::None : Mode::Exact;
+  else
+    mode_ = m.signatures.empty() ? Mode::None : Mode::Signature;
 }
 
 void GoldenCheck::observe(const FrameRecord& r) {
   sequence_.push_back(r.colorSha256);
-  if (!compareSequence_ || firstDiff_ >= 0) return;
-  const auto& golden = goldens_->manifest.sequence;
-  if (size_t(r.frame) < golden.size() && golden[size_t(r.frame)] != r.colorSha256) {
+  signatures_.push_back(golden::frameSignature(r.color));
+  if (mode_ == Mode::None) return;
+  const auto f = size_t(r.frame);
+  std::string why;
+  if (mode_ == Mode::Exact) {
+    const auto& golden = goldens_->manifest.sequence;
+    if (f < golden.size() && golden[f] != r.colorSha256) why = "pixels";
+  } else if (const auto& golden = goldens_->manifest.signatures; f < golden.size()) {
+    const auto d = golden::signatureDistance(golden[f], signatures_.back());
+    auto& q = worst_;
+    if (d.cell > q.cell) q.cell = d.cell, q.cellFrame = r.frame;
+    if (d.mean > q.mean) q.mean = d.mean, q.meanFrame = r.frame;
+    if (!d.valid) why = "its golden signature is malformed";
+    if (d.cell > golden::kSignatureCellTolerance)
+      why = "the mean luma of cell (row " + std::to_string(d.cellIndex / golden::kSignatureGrid) +
+            ", column " + std::to_string(d.cellIndex % golden::kSignatureGrid) + " of " +
+            std::to_string(golden::kSignatureGrid) + "x" + std::to_string(golden::kSignatureGrid) +
+            ") differs by " + std::to_string(d.cell) + "/255 > " +
+            std::to_string(golden::kSignatureCellTolerance) + "/255";
+    if (d.mean > golden::kSignatureMeanTolerance)
+      why += (why.empty() ? "" : "; ") + std::string("a channel's frame mean differs by ") +
+             std::to_string(d.mean) + " > 1/255";
+  }
+  if (!why.empty() && firstDiff_ < 0) {
     firstDiff_ = r.frame;
+    firstDiffWhy_ = why;
     firstDiffImage_ = r.color;
   }
 }
 
 bool GoldenCheck::compareSequence(CaseResult& result) {
-  const auto& golden = goldens_->manifest.sequence;
+  const bool exact = mode_ == Mode::Exact;
+  const auto& golden = exact ? goldens_->manifest.sequence : goldens_->manifest.signatures;
+  auto& q = result.sequenceCheck;
+  q.mode = exact ? "exact" : "signature";
+  q.frames = int(std::min(golden.size(), sequence_.size()));
+  q.worstCell = worst_.cell;
+  q.worstCellFrame = worst_.cellFrame;
+  q.worstMean = worst_.mean;
+  q.worstMeanFrame = worst_.meanFrame;
   auto& d = result.firstDifference;
   if (firstDiff_ < 0) {
     if (golden.size() == sequence_.size()) return false;
@@ -97,17 +133,25 @@ bool GoldenCheck::compareSequence(CaseResult& result) {
     d.frame = int(common);
     d.detail = "the golden sequence has " + std::to_string(golden.size()) + " frames, this run " +
                std::to_string(sequence_.size()) + "; the first " + std::to_string(common) +
-               " are identical";
+               (exact ? " are identical" : " are within tolerance");
     return true;
   }
   const int f = firstDiff_;
   d.frame = f;
-  d.actualSha256 = sequence_.at(size_t(f));
-  d.goldenSha256 = golden.at(size_t(f));
-  d.detail = "frame " + std::to_string(f) +
-             " is the first whose pixels differ from the golden sequence (sha256 " +
-             shortSha(d.actualSha256) + " != " + shortSha(d.goldenSha256) + ")" +
-             (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are identical" : "");
+  if (exact) {
+    d.actualSha256 = sequence_.at(size_t(f));
+    d.goldenSha256 = golden.at(size_t(f));
+    d.detail = "frame " + std::to_string(f) +
+               " is the first whose pixels differ from the golden sequence (sha256 " +
+               shortSha(d.actualSha256) + " != " + shortSha(d.goldenSha256) + ")" +
+               (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are identical" : "");
+  } else {
+    d.detail = "frame " + std::to_string(f) +
+               " is the first whose signature is out of tolerance against the golden's (another "
+               "environment): " +
+               firstDiffWhy_ +
+               (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are within tolerance" : "");
+  }
   if (!options_.writeImages) return true;
   const fs::path caseDir = options_.outDir / spec_.name;
   const std::string base = frameBase(f);
@@ -135,6 +179,7 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
   const fs::path caseDir = options_.outDir / spec_.name;
   result.blessCommand = blessCommandFor(spec_);
   result.frameSha256 = sequence_;
+  result.frameSignatures = signatures_;
   if (!problem_.empty() || !goldens_) {
     // Unusable goldens are never compared with; missing ones are a skip outside CI.
     for (const auto& [frame, image] : outputs) {
@@ -212,7 +257,13 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
         "were checked; re-bless it");
     anyFailed = true;
   }
-  if (compareSequence_) anyFailed |= compareSequence(result);
+  if (!sameEnvironment && m.signatures.empty()) {
+    notes.push_back((dir_ / "manifest.json").string() +
+                    " has no frame_signatures (blessed before frames had signatures), so only the "
+                    "stored frames were checked in this environment; re-bless it");
+    anyFailed = true;
+  }
+  if (mode_ != Mode::None) anyFailed |= compareSequence(result);
   const bool stale = m.caseSha256 != caseSha;
   if (stale)
     notes.push_back(

@@ -53,9 +53,17 @@ class GoldenCheck {
   std::string environment_;    // this run's fingerprint
   std::optional<golden::GoldenSet> goldens_;
   std::string problem_;  // why the goldens cannot be used (GoldenError), empty when fine
-  bool compareSequence_ = false;
-  std::vector<std::string> sequence_;  // this run's hashes, frame by frame
+  // How every frame is compared: by hash in the golden's environment, by signature elsewhere.
+  enum class Mode { None, Exact, Signature } mode_ = Mode::None;
+  std::vector<std::string> sequence_;    // this run's hashes, frame by frame
+  std::vector<std::string> signatures_;  // and signatures
+  struct {
+    int cell = 0, cellFrame = -1;
+    double mean = 0.0;
+    int meanFrame = -1;
+  } worst_;
   int firstDiff_ = -1;
+  std::string firstDiffWhy_;
   Image firstDiffImage_;
 };
 

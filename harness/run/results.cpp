@@ -93,6 +93,13 @@ nlohmann::json toJson(const RunResults& r) {
                          {"log", c.log},
                          {"frame_sha256", c.frameSha256},
                          {"seconds", c.seconds}};
+    if (const auto& q = c.sequenceCheck; !q.mode.empty())
+      jc["sequence_check"] = {{"mode", q.mode},
+                              {"frames", q.frames},
+                              {"worst_cell", q.worstCell},
+                              {"worst_cell_frame", q.worstCellFrame},
+                              {"worst_mean", q.worstMean},
+                              {"worst_mean_frame", q.worstMeanFrame}};
     if (const auto& d = c.firstDifference; d.frame >= 0) {
       nlohmann::json n = nlohmann::json::array();
       for (const auto& g : d.goldenNeighbours)
@@ -156,6 +163,16 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.log = jc.value("log", std::vector<std::string>{});
     c.seconds = jc.value("seconds", 0.0);
     c.frameSha256 = jc.value("frame_sha256", std::vector<std::string>{});
+    if (jc.contains("sequence_check")) {
+      const auto& jq = jc["sequence_check"];
+      auto& q = c.sequenceCheck;
+      q.mode = jq.value("mode", "");
+      q.frames = jq.value("frames", 0);
+      q.worstCell = jq.value("worst_cell", 0);
+      q.worstCellFrame = jq.value("worst_cell_frame", -1);
+      q.worstMean = jq.value("worst_mean", 0.0);
+      q.worstMeanFrame = jq.value("worst_mean_frame", -1);
+    }
     if (jc.contains("first_difference")) {
       const auto& jd = jc["first_difference"];
       auto& d = c.firstDifference;

@@ -90,6 +90,18 @@ struct CaseResult {
   std::vector<FrameComparison> frames;
   FirstDifference firstDifference;
   std::vector<std::string> frameSha256;  // every rendered frame's pixel hash, when goldens apply
+  std::vector<std::string> frameSignatures;  // and golden::frameSignature (for bless; not in JSON)
+  // How every frame compared with the golden sequence: "exact" (hashes, golden's environment),
+  // "signature" (within tolerances, elsewhere) or "" (not compared); with the largest signature
+  // distances seen, so the tolerances can be judged against real runs.
+  struct SequenceCheck {
+    std::string mode;
+    int frames = 0;
+    int worstCell = 0;  // 8-bit steps of a cell's mean luma
+    int worstCellFrame = -1;
+    double worstMean = 0.0;  // a channel's frame mean, in [0, 1]
+    int worstMeanFrame = -1;
+  } sequenceCheck;
   std::vector<InvariantResult> invariants;
   std::vector<double> referenceRmse;  // per frame against the reference; empty without one
   std::vector<double> frameMs;        // per frame, all passes together

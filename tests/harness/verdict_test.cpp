@@ -94,6 +94,8 @@ TEST_F(Verdicts, ManifestHashesEveryFrameAndRunsRecordThem) {
   EXPECT_EQ(m["frame_sha256"][2], m["frames"][0]["sha256"]);
   EXPECT_EQ(m["frame_sha256"][5], m["frames"][1]["sha256"]);
   EXPECT_NE(m["frame_sha256"][3], m["frame_sha256"][4]);  // a moving camera: every frame differs
+  ASSERT_EQ(m["frame_signatures"].size(), 6u);
+  EXPECT_EQ(m["frame_signatures"][0].get<std::string>().size(), 140u);
   ASSERT_EQ(run("small").exitCode, 0);
   EXPECT_EQ(results()["cases"][0]["frame_sha256"], m["frame_sha256"]);
 }
@@ -143,6 +145,34 @@ TEST_F(Verdicts, ARealChangeBeforeACutIsCaughtThoughTheStoredFramesMatch) {
   EXPECT_NE(r.output.find("PASS cut frame 5 golden exact"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("FAIL cut frame 2 sequence"), std::string::npos) << r.output;
   EXPECT_EQ(results()["cases"][0]["status"], "stale");  // the case file changed: bless if intended
+}
+
+TEST_F(Verdicts, OnAnotherCpuLevelEveryFrameIsCheckedBySignature) {
+  const std::string sse = "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1";
+  const std::string cut = R"({
+    "scene": {"builtin": "checkerboard"}, "render": {"width": 64, "height": 36},
+    "camera": {"cuts": [{"frame": 4, "position": [0, 1, 4], "target": [0, 0, 0]}]},
+    "script": {"frames": 6}, "output": {"frames": [5]})";
+  writeCase("cut", cut + "}");
+  ASSERT_EQ(bless("cut").exitCode, 0);
+  auto r = run("cut", "", sse);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("PASS cut sequence: 6 frames within signature tolerance"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(results()["cases"][0]["sequence_check"]["mode"], "signature");
+  // Eight bright pixels in frame 2 only: the stored frame 5 is within tolerance, frame 2 is not.
+  writeCase("cut", cut + R"(, "inject": {"frames": [2], "value": "inf",
+      "pixels": [[10, 10], [11, 10], [12, 10], [13, 10], [10, 11], [11, 11], [12, 11], [13, 11]]}})");
+  r = run("cut", "", sse);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("PASS cut frame 5 golden tolerance"), std::string::npos) << r.output;
+  EXPECT_NE(
+      r.output.find(
+          "FAIL cut frame 2 sequence: frame 2 is the first whose signature is out of tolerance"),
+      std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("cell (row 2, column 1 of 8x8)"), std::string::npos) << r.output;
 }
 
 TEST_F(Verdicts, AnOverwrittenGoldenExrIsAFailureNamingTheFileAndTheFix) {

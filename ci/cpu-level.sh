@@ -5,7 +5,8 @@
 # signature. Any failure here is either a real regression or a tolerance too tight for another
 # machine; both must be fixed, never ignored.
 #
-#   ci/cpu-level.sh [BUILD_DIR]                  level: sse4.1
+#   ci/cpu-level.sh [BUILD_DIR]                  levels: sse4.1, and avx (AVX2 without AVX-512)
+#                                                when the CPU has AVX-512, which the goldens used
 #   TAA_CPU_LEVELS="sse4.1 ssse3" ci/cpu-level.sh  other levels Mesa's override knows
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,7 @@ build=${1:-build}
 harness=$build/harness/taa-harness
 [ -x "$harness" ] || { echo "cpu-level: $harness not built (ninja -C $build taa-harness)" >&2; exit 3; }
 levels=${TAA_CPU_LEVELS:-sse4.1}
+if [ -z "${TAA_CPU_LEVELS:-}" ] && grep -qw avx512f /proc/cpuinfo; then levels="$levels avx"; fi
 status=0
 for level in $levels; do
   echo "cpu-level: GALLIUM_OVERRIDE_CPU_CAPS=$level"

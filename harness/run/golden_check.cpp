@@ -107,7 +107,7 @@ void GoldenCheck::observe(const FrameRecord& r) {
             std::to_string(golden::kSignatureCellTolerance) + "/255";
     if (d.mean > golden::kSignatureMeanTolerance)
       why += (why.empty() ? "" : "; ") + std::string("a channel's frame mean differs by ") +
-             std::to_string(d.mean) + " > 1/255";
+             std::to_string(d.mean) + " > " + std::to_string(golden::kSignatureMeanTolerance);
   }
   if (!why.empty() && firstDiff_ < 0) {
     firstDiff_ = r.frame;

@@ -96,8 +96,14 @@ void GoldenCheck::observe(const FrameRecord& r) {
   } else if (const auto& golden = goldens_->manifest.signatures; f < golden.size()) {
     const auto d = golden::signatureDistance(golden[f], signatures_.back());
     auto& q = worst_;
-    if (d.cell > q.cell) q.cell = d.cell, q.cellFrame = r.frame;
-    if (d.mean > q.mean) q.mean = d.mean, q.meanFrame = r.frame;
+    if (d.cell > q.cell) {
+      q.cell = d.cell;
+      q.cellFrame = r.frame;
+    }
+    if (d.mean > q.mean) {
+      q.mean = d.mean;
+      q.meanFrame = r.frame;
+    }
     if (!d.valid) why = "its golden signature is malformed";
     if (d.cell > golden::kSignatureCellTolerance)
       why = "the mean luma of cell (row " + std::to_string(d.cellIndex / golden::kSignatureGrid) +

@@ -8,7 +8,8 @@
 #   git bisect run ci/bisect.sh cases/A.json --goldens /tmp/known-good-goldens
 #   git bisect run ci/bisect.sh cases/A.json --goldens /tmp/known-good-goldens --metric flip_mean --above 0.05
 #
-# Everything after the case is passed to `taa-harness run`.
+# Everything after the case is passed to `taa-harness run`. When the goldens' environment is
+# this machine's, every frame's hash is compared and the first differing frame is printed.
 set -u
 root=$(git rev-parse --show-toplevel) || exit 125
 build=${TAA_BISECT_BUILD:-$root/build-bisect}
@@ -22,8 +23,11 @@ fi
 if ! cmake --build "$build" --target taa-harness >>"$log" 2>&1; then
   echo "bisect: build failed (see $log): skip"; exit 125
 fi
-"$build/harness/taa-harness" run "$@" --out "$build/bisect-out"
-rc=$?
+run_log=$build/bisect-run.log
+"$build/harness/taa-harness" run "$@" --out "$build/bisect-out" 2>&1 | tee "$run_log"
+rc=${PIPESTATUS[0]}
+# Where the sequence starts to go wrong (a commit older than per-frame hashes prints nothing here).
+grep -E '^FAIL .* frame [0-9]+ sequence: ' "$run_log" | sed 's/^FAIL /bisect: first differing frame: /'
 case $rc in
   0) exit 0 ;;
   1) exit 1 ;;

@@ -37,12 +37,16 @@ Image readMask(vk::Context& ctx, vk::Image& mask, int width, int height) {
 
 }  // namespace
 
+void readFrameColor(vk::Context& ctx, const FrameSources& src, FrameRecord& record) {
+  record.color = readRegion(ctx, *src.output, src.outputSize.x, src.outputSize.y);
+  record.colorSha256 = pixelSha256(record.color);
+}
+
 void readFrameImages(vk::Context& ctx, const spec::CaseSpec& spec, const RenderOptions& o,
                      const FrameSources& src, FrameRecord& record) {
   const int w = src.renderSize.x, h = src.renderSize.y;
   record.hasImages = true;
-  record.color = readRegion(ctx, *src.output, src.outputSize.x, src.outputSize.y);
-  record.colorSha256 = pixelSha256(record.color);
+  readFrameColor(ctx, src, record);
   if (src.reference) {
     vk::Image& ref = src.reference->output();
     record.reference = readRegion(ctx, ref, int(ref.desc().width), int(ref.desc().height));

@@ -27,6 +27,9 @@ struct FrameSources {
   AdaptivePass* adaptive = nullptr;
 };
 
+// The output alone, with its hash (RenderOptions::hashEveryFrame); readFrameImages does this too.
+void readFrameColor(vk::Context& ctx, const FrameSources& src, FrameRecord& record);
+
 void readFrameImages(vk::Context& ctx, const spec::CaseSpec& spec, const RenderOptions& options,
                      const FrameSources& src, FrameRecord& record);
 

@@ -19,8 +19,10 @@ struct NamedImage {
 struct FrameRecord {
   int frame = 0;
   bool hasImages = false;  // colour and aux images are read back only for requested frames
-  Image color;             // the final output, linear HDR RGBA at output size
-  std::string colorSha256; // of the output's half-float pixel bytes (core/image_io.h)
+  // The final output, linear HDR RGBA at output size, and the SHA-256 of its half-float pixel
+  // bytes (core/image_io.h): with the images, or for every frame under hashEveryFrame.
+  Image color;
+  std::string colorSha256;
   std::vector<NamedImage> aux;
   bool hasReference = false;  // set when the run computes the supersampled ground truth
   Image reference;            // output size, float32 average of reference.samples renders

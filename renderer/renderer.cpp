@@ -248,7 +248,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.gpuMs = s.timer.read();
   if (s.tscmaa) record.stats = tscmaaCounters(s.tscmaa->counts());
   if (s.adaptive) record.stats = s.adaptive->stats();
-  if (readImages) {
+  if (readImages || s.options.hashEveryFrame) {
     FrameSources src;
     src.output = output;
     src.outputSize = outSize;
@@ -258,7 +258,10 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     src.tscmaa = s.tscmaa.get();
     src.reference = s.reference.get();
     src.adaptive = s.adaptive.get();
-    readFrameImages(s.ctx, s.spec, s.options, src, record);
+    if (readImages)
+      readFrameImages(s.ctx, s.spec, s.options, src, record);
+    else
+      readFrameColor(s.ctx, src, record);
   }
   return record;
 }

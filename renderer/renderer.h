@@ -32,6 +32,11 @@ struct RenderOptions {
   // TSCMAA only: read back the CMAA image ("cmaa") and the edge mask ("tscmaa_mask",
   // TSCMAA_EDGE_* and TSCMAA_TAA bits as floats), both at output size.
   bool captureTscmaa = false;
+  // Read back and hash the output of every frame, not only of those whose images are read:
+  // goldens record each frame's pixel hash, so a frame no golden image covers is still
+  // checked. Sets FrameRecord::color and colorSha256 for every frame; aux buffers, captures
+  // and the reference still come only with readImages.
+  bool hashEveryFrame = false;
 };
 
 class Renderer {

@@ -1,5 +1,6 @@
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/commands.h"
@@ -34,11 +35,14 @@ std::vector<std::string> failedCases(const fs::path& results) {
   }
   std::vector<std::string> files;
   for (const auto& c : run::runResultsFromJson(j).cases)
-    if (run::caseFailed(c) && c.status != run::CaseStatus::Error) files.push_back(c.file);
+    if (c.status != run::CaseStatus::Pass && c.status != run::CaseStatus::Error)
+      files.push_back(c.file);
   return files;
 }
 
 void printChanges(const run::CaseResult& r) {
+  if (r.firstDifference.frame >= 0)
+    std::cout << "  " << r.name << " sequence: " << r.firstDifference.detail << "\n";
   if (r.frames.empty()) return;
   for (const auto& f : r.frames) {
     std::cout << "  " << r.name << " frame " << f.frame << ": ";
@@ -75,9 +79,19 @@ int cmdBless(const Args& args) {
   options.run.outDir = a.value("--out", "out/bless");
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
+  for (const auto& c : batch.cases)
+    refuseOutputInGoldens(options.run.outDir, options.run.goldensRoot.empty()
+                                                  ? run::defaultGoldensRoot(c.spec.file)
+                                                  : options.run.goldensRoot);
   fs::create_directories(options.run.outDir);
   const auto outcome = runBatch(batch, options, nullptr, /*keepOutputs=*/true);
-  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
+  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) {
+    // A scene that does not load (or a broken environment): say which case and why.
+    for (const auto& r : outcome.results.cases)
+      if (r.status == run::CaseStatus::Error)
+        std::cerr << "error: " << r.name << ": " << r.message << "\n";
+    return outcome.exitCode;
+  }
 
   int exit = kPass;
   for (size_t k = 0; k < batch.cases.size(); ++k) {
@@ -99,13 +113,19 @@ int cmdBless(const Args& args) {
       exit = kRegression;
       continue;
     }
+    if (!r.message.empty()) std::cout << "NOTE " << r.name << ": " << r.message << "\n";
     printChanges(r);
     const fs::path root = options.run.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file)
                                                           : options.run.goldensRoot;
-    const auto old = golden::loadGoldens(root, loaded.spec.name);
+    // The previous record only (its history continues); a bless replaces the images anyway,
+    // so a set whose EXRs fail verification can be re-blessed, but not one whose manifest is lost.
+    std::optional<golden::Manifest> previous;
+    if (fs::exists(root / loaded.spec.name / "manifest.json"))
+      previous = golden::readManifest(root / loaded.spec.name / "manifest.json");
     const auto& frames = outcome.outputs.at(loaded.spec.name);
-    const auto manifest =
-        golden::makeManifest(loaded, outcome.environment, frames, reason, old ? &old->manifest : nullptr);
+    const auto manifest = golden::makeManifest(loaded, outcome.environment, frames,
+                                               {r.frameSha256, r.frameSignatures}, reason,
+                                               previous ? &*previous : nullptr);
     std::vector<std::pair<golden::GoldenFrame, Image>> files;
     for (const auto& gf : manifest.frames) files.emplace_back(gf, frames.at(gf.frame));
     golden::replaceGoldens(root, manifest, files);

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/run_cases.h"
 #include "cli/run_support.h"
 #include "core/image_io.h"
 #include "renderer.h"
@@ -35,6 +36,7 @@ int cmdRender(const Args& args) {
   if (a.positional.size() != 1 || !a.values.count("--out")) throw UsageError(std::string("usage: ") + kRenderUsage);
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
+  refuseOutputInGoldens(a.value("--out"), run::defaultGoldensRoot(spec.file));
   const fs::path dir = fs::path(a.value("--out")) / spec.name;
   fs::create_directories(dir);
 

@@ -66,6 +66,9 @@ int cmdRun(const Args& args) {
   }
   CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
   const fs::path out = a.value("--out", "out");
+  for (const auto& c : batch.cases)
+    refuseOutputInGoldens(out, a.has("--goldens") ? fs::path(a.value("--goldens"))
+                                                  : run::defaultGoldensRoot(c.spec.file));
   fs::create_directories(out);
   const auto start = std::chrono::steady_clock::now();
   BatchOptions options;
@@ -73,6 +76,7 @@ int cmdRun(const Args& args) {
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
   options.validate = a.has("--validate");
+  options.run.missingGoldenFails = runningInCi();
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/run_cases.h"
 #include "sweep/sweep.h"
 
 namespace taa::cli {
@@ -58,6 +59,7 @@ int cmdSweep(const Args& args) {
       std::cerr << "\r" << preset << " frame " << f + 1 << "/" << frames << "\033[K" << std::flush;
     };
   const fs::path out = a.value("--out", (fs::path("out/sweep") / caseFile.stem()).string());
+  refuseOutputInGoldens(out, run::defaultGoldensRoot(caseFile));
   vk::ContextOptions co;
   co.device = a.value("--device");
   co.shaderCacheDir = out / ".shader-cache";

@@ -8,6 +8,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
+#include "golden/manifest.h"
 #include "scene/scene_error.h"
 #include "script/track.h"
 #include "vk/check.h"
@@ -81,6 +82,9 @@ int dispatch(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
   } catch (const script::TrackError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const golden::GoldenError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
   } catch (const vk::EnvironmentError& e) {

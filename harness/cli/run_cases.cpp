@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -11,6 +13,7 @@
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "golden/environment.h"
+#include "run/console.h"
 #include "scene/scene_error.h"
 #include "vk/check.h"
 
@@ -58,6 +61,30 @@ std::function<void(int, int)> terminalProgress(const std::string& name, size_t i
 }
 
 }  // namespace
+
+bool runningInCi() {
+  const char* ci = std::getenv("CI");
+  if (!ci) return false;
+  std::string v = ci;
+  for (auto& ch : v) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return v == "true" || v == "1" || v == "yes";
+}
+
+void refuseOutputInGoldens(const fs::path& out, const fs::path& goldensRoot) {
+  // Symlinks resolved where the path exists, so "./goldens/../goldens/x" or a link is caught too.
+  auto resolved = [](const fs::path& p) {
+    std::error_code ec;
+    fs::path r = fs::weakly_canonical(fs::absolute(p), ec);
+    if (ec) r = fs::absolute(p).lexically_normal();
+    return r.has_filename() ? r : r.parent_path();
+  };
+  const fs::path rel =
+      resolved(out).lexically_relative(resolved(goldensRoot));  // "." itself, "../x" outside
+  if (!rel.empty() && *rel.begin() != "..")
+    throw UsageError(
+        "--out " + out.string() + " is inside the goldens folder " + goldensRoot.string() +
+        ": outputs there would overwrite goldens; pick another folder, e.g. --out out");
+}
 
 CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard) {
   CaseBatch batch;
@@ -128,7 +155,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       result.message = e.what();
       regression = true;
     }
-    regression |= result.status != run::CaseStatus::Pass;
+    regression |= run::caseFailed(result);
     if (onCase) onCase(result);
     out.results.cases.push_back(std::move(result));
   }

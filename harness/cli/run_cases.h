@@ -2,6 +2,7 @@
 // `run` and `bless`.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -21,6 +22,14 @@ struct CaseBatch {
 // Loads every file (directories expand to their *.json), reports every problem of
 // every file together (CaseError, exit 2), then keeps shard I of N ("I/N", 1-based).
 CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard);
+
+// Whether CI=true (or 1, yes) is set: a case without goldens then fails instead of skipping.
+bool runningInCi();
+
+// Throws UsageError (exit 2) when `out` is the goldens folder or lies inside it: `render`,
+// `run`, `sweep` and `bless` write frames there and would overwrite goldens.
+void refuseOutputInGoldens(const std::filesystem::path& out,
+                           const std::filesystem::path& goldensRoot);
 
 struct BatchOptions {
   run::RunOptions run;

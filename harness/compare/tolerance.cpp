@@ -1,18 +1,31 @@
 #include "compare/tolerance.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include "compare/flip.h"
 #include "compare/metrics.h"
+#include "core/image_io.h"
 
 namespace taa::compare {
+
+Image displayedPng(const Image& hdr) {
+  Image d = toDisplaySrgb(hdr);  // no NaN left: NaN pixels are magenta
+  // The same rounding as writePng's 8-bit quantization (core/image_io.cpp), expression for
+  // expression.
+  for (float& v : d.data) {
+    const float clamped = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+    v = float(std::lround(clamped * 255.0f)) / 255.0f;
+  }
+  return d;
+}
 
 Measured measureAgainstGolden(const Image& golden, const Image& actual, float pixelThreshold) {
   MetricOptions options;
   options.threshold = pixelThreshold;
   const Metrics lin = computeMetrics(golden, actual, options);
-  const FlipResult flip = flipLdrFromHdr(golden, actual);
+  const FlipResult flip = flipLdr(displayedPng(golden), displayedPng(actual));
   Measured out;
   out.metrics.maxAbs = lin.maxAbsError;
   out.metrics.rmse = lin.rmse;

@@ -16,8 +16,12 @@ struct Measured {
   Image errorMap;  // FLIP error per pixel, for the heatmap and the worst region
 };
 
-// Linear metrics on RGB with `pixelThreshold` as the per-pixel "over" bound; FLIP on
-// both images tonemapped as the PNGs show them.
+// What the report's PNG of a linear HDR frame holds (toDisplaySrgb, rounded to 8 bits as
+// writePng does), as 3-channel floats k / 255.
+Image displayedPng(const Image& hdr);
+
+// Linear metrics on RGB (PSNR with a fixed peak of 1.0) with `pixelThreshold` as the
+// per-pixel "over" bound; LDR-FLIP on exactly the 8-bit PNGs the report shows (displayedPng).
 Measured measureAgainstGolden(const Image& golden, const Image& actual, float pixelThreshold);
 
 // "rmse 0.021 > 0.01"-style lines, one per bound the metrics exceed.

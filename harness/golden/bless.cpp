@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdio>
 #include <ctime>
+#include <stdexcept>
 
 #include "core/image_io.h"
 
@@ -46,8 +47,10 @@ std::string rendererCommit() {
   return dirty.empty() ? head : head + "-dirty";
 }
 
-Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env, const std::map<int, Image>& frames,
+Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env,
+                      const std::map<int, Image>& frames, const FrameDigests& digests,
                       const std::string& reason, const Manifest* previous) {
+  const auto& sequence = digests.sha256;
   Manifest m;
   m.caseName = loaded.spec.name;
   m.caseSha256 = loaded.sha256;
@@ -57,8 +60,14 @@ Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env, c
     m.history.push_back(previous->bless);
     m.history.insert(m.history.end(), previous->history.begin(), previous->history.end());
   }
-  for (const auto& [frame, image] : frames)
+  m.sequence = sequence;
+  m.signatures = digests.signatures;
+  for (const auto& [frame, image] : frames) {
     m.frames.push_back({frame, frameFile(frame), pixelSha256(image), image.width, image.height});
+    if (size_t(frame) >= sequence.size() || sequence[size_t(frame)] != m.frames.back().sha256)
+      throw std::logic_error("bless: frame " + std::to_string(frame) + " of " + m.caseName +
+                             " hashes differently from the sequence rendered with it");
+  }
   return m;
 }
 

@@ -15,12 +15,29 @@ namespace taa::golden {
 
 namespace fs = std::filesystem;
 
-Image GoldenSet::load(const GoldenFrame& frame) const { return readExr(dir / frame.file); }
-
 std::optional<GoldenSet> loadGoldens(const fs::path& root, const std::string& caseName) {
   const fs::path dir = root / caseName;
-  if (!fs::exists(dir / "manifest.json")) return std::nullopt;
-  return GoldenSet{dir, readManifest(dir / "manifest.json")};
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec) || fs::is_empty(dir, ec)) return std::nullopt;
+  GoldenSet set{dir, readManifest(dir / "manifest.json"), {}};
+  for (const auto& f : set.manifest.frames) {
+    const fs::path file = dir / f.file;
+    if (!fs::exists(file, ec))
+      throw GoldenError(file.string() + ": missing (listed in manifest.json); " + restoreHint(dir));
+    Image image;
+    try {
+      image = readExr(file);
+    } catch (const ImageIoError& e) {
+      throw GoldenError(std::string(e.what()) + "; " + restoreHint(dir));
+    }
+    const std::string sha = pixelSha256(image);
+    if (sha != f.sha256)
+      throw GoldenError(file.string() + ": pixels (sha256 " + sha.substr(0, 12) +
+                        ") do not match manifest.json (" + f.sha256.substr(0, 12) +
+                        "): the file was overwritten or corrupted; " + restoreHint(dir));
+    set.images.emplace(f.frame, std::move(image));
+  }
+  return set;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -15,11 +16,14 @@ namespace taa::golden {
 struct GoldenSet {
   std::filesystem::path dir;
   Manifest manifest;
-  // Reads the frame's EXR; throws ImageIoError naming the file.
-  Image load(const GoldenFrame& frame) const;
+  std::map<int, Image> images;  // every frame of manifest.frames, verified against its hash
+  const Image& load(const GoldenFrame& frame) const { return images.at(frame.frame); }
 };
 
-// The case's goldens, or nullopt when it has none yet.
+// The case's goldens, or nullopt when it has no folder (or an empty one) yet. Verified
+// before use: a missing or unparsable manifest, a missing or unreadable EXR, or an EXR
+// whose pixels do not hash to the manifest's sha256 throws GoldenError naming the file
+// and how to restore it; an overwritten golden is never compared with.
 std::optional<GoldenSet> loadGoldens(const std::filesystem::path& root, const std::string& caseName);
 
 // Writes `frames` and `manifest` into a hidden sibling folder, then exchanges it with

@@ -6,6 +6,14 @@
 
 namespace taa::golden {
 
+std::string restoreHint(const std::filesystem::path& dir) {
+  std::error_code ec;
+  const auto rel = std::filesystem::relative(dir, std::filesystem::current_path(ec), ec);
+  const bool below = !ec && !rel.empty() && *rel.begin() != "..";
+  return "restore it with `git checkout -- " + (below ? rel : dir).string() +
+         "` (or re-bless the case with a reason)";
+}
+
 namespace {
 nlohmann::json blessJson(const BlessRecord& b) { return {{"date", b.date}, {"commit", b.commit}, {"reason", b.reason}}; }
 BlessRecord blessFrom(const nlohmann::json& j) {
@@ -21,7 +29,9 @@ nlohmann::json Manifest::toJson() const {
                       {"renderer_commit", bless.commit},
                       {"reason", bless.reason},
                       {"history", nlohmann::json::array()},
-                      {"frames", nlohmann::json::array()}};
+                      {"frames", nlohmann::json::array()},
+                      {"frame_sha256", sequence},
+                      {"frame_signatures", signatures}};
   for (const auto& h : history) j["history"].push_back(blessJson(h));
   for (const auto& f : frames)
     j["frames"].push_back(
@@ -30,8 +40,8 @@ nlohmann::json Manifest::toJson() const {
 }
 
 Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path& where) {
+  Manifest m;
   try {
-    Manifest m;
     m.caseName = j.at("case").get<std::string>();
     m.caseSha256 = j.at("case_sha256").get<std::string>();
     m.environment = Environment::fromJson(j.at("environment"));
@@ -41,11 +51,26 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
     for (const auto& f : j.at("frames"))
       m.frames.push_back({f.at("frame").get<int>(), f.at("file").get<std::string>(), f.at("sha256").get<std::string>(),
                           f.at("width").get<int>(), f.at("height").get<int>()});
-    return m;
+    // Absent in manifests blessed before every frame was hashed; the runner reports those.
+    if (j.contains("frame_sha256"))
+      m.sequence = j.at("frame_sha256").get<std::vector<std::string>>();
+    if (j.contains("frame_signatures"))
+      m.signatures = j.at("frame_signatures").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(where.string() + ": malformed golden manifest (" + e.what() +
-                             "); restore it from git or re-bless the case");
+    throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
+                      restoreHint(where.parent_path()));
   }
+  if (!m.signatures.empty() && m.signatures.size() != m.sequence.size())
+    throw GoldenError(where.string() + ": frame_signatures lists " +
+                      std::to_string(m.signatures.size()) + " frames, frame_sha256 " +
+                      std::to_string(m.sequence.size()) + "; " + restoreHint(where.parent_path()));
+  for (const auto& f : m.frames)
+    if (!m.sequence.empty() && (f.frame < 0 || size_t(f.frame) >= m.sequence.size() ||
+                                m.sequence[size_t(f.frame)] != f.sha256))
+      throw GoldenError(where.string() + ": frame " + std::to_string(f.frame) +
+                        "'s sha256 disagrees with frame_sha256 (the list of every frame's hash); " +
+                        restoreHint(where.parent_path()));
+  return m;
 }
 
 const GoldenFrame* Manifest::find(int frame) const {
@@ -56,14 +81,17 @@ const GoldenFrame* Manifest::find(int frame) const {
 
 Manifest readManifest(const std::filesystem::path& file) {
   std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read the golden manifest");
+  if (!in)
+    throw GoldenError(file.string() + ": cannot read the golden manifest; " +
+                      restoreHint(file.parent_path()));
   std::stringstream text;
   text << in.rdbuf();
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text.str());
   } catch (const nlohmann::json::parse_error& e) {
-    throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + "); restore it from git or re-bless");
+    throw GoldenError(file.string() + ": not valid JSON (" + e.what() + "); " +
+                      restoreHint(file.parent_path()));
   }
   return Manifest::fromJson(j, file);
 }

@@ -7,6 +7,7 @@
 #include "report/html_parts.h"
 #include "report/svg_plot.h"
 #include "report/text_util.h"
+#include "run/console.h"
 
 namespace taa::report::detail {
 
@@ -72,7 +73,42 @@ std::string metricsTable(const run::CaseResult& c, const std::string& id) {
     }
     s += "</tr>\n";
   }
-  return s + "</table>\n";
+  s += "</table>\n";
+  // What each number is computed on, so nobody has to guess from the column title.
+  return s +
+         "<p class=\"muted metric-notes\">max abs, RMSE, PSNR and share over: on the linear "
+         "half-float "
+         "frames (RGB). PSNR = 10 log10(peak\xC2\xB2 / MSE) with a fixed peak of 1.0 (nominal "
+         "white), "
+         "not the image maximum, so HDR values above 1 can make it negative. FLIP: LDR-FLIP on "
+         "exactly the 8-bit sRGB PNGs shown here (Reinhard c / (1 + c), sRGB curve, rounded to 8 "
+         "bits), at 67 pixels per degree.</p>\n";
+}
+
+// Where the sequence starts to go wrong: the first frame whose hash differs from the golden's,
+// beside the stored golden frames nearest to it.
+std::string firstDifference(const run::CaseResult& c, const std::string& id, const fs::path& dir) {
+  const auto& d = c.firstDifference;
+  if (d.frame < 0) return "";
+  std::string s = "<h3>First differing frame</h3>\n<div class=\"first-diff\" id=\"" + id +
+                  "-first\" data-frame=\"" + std::to_string(d.frame) +
+                  "\"><ul class=\"failures\"><li>" + escapeMarkup(d.detail) +
+                  "</li></ul>\n<div class=\"row\">";
+  auto figure = [&](const std::string& rel, const std::string& caption) {
+    s += "<figure><figcaption>" + escapeMarkup(caption) + "</figcaption>" +
+         imageOrPlaceholder(dir, rel, caption, "") + "</figure>";
+  };
+  for (const auto& n : d.goldenNeighbours)
+    if (n.frame < d.frame) figure(n.image, "golden frame " + std::to_string(n.frame) + " (stored)");
+  if (!d.actual.empty()) figure(d.actual, "actual frame " + std::to_string(d.frame));
+  for (const auto& n : d.goldenNeighbours)
+    if (n.frame >= d.frame)
+      figure(n.image, "golden frame " + std::to_string(n.frame) + " (stored)");
+  s += "</div>\n";
+  if (!d.actualSha256.empty())
+    s += "<dl class=\"kv\"><dt>actual sha256</dt><dd>" + escapeMarkup(d.actualSha256) +
+         "</dd><dt>golden sha256</dt><dd>" + escapeMarkup(d.goldenSha256) + "</dd></dl>\n";
+  return s + "</div>\n";
 }
 
 std::string invariantsTable(const run::CaseResult& c) {
@@ -193,6 +229,13 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
     s += "</dl>\n";
   }
   s += "<h3>Frames compared with goldens</h3>\n" + metricsTable(c, id);
+  if (const auto& q = c.sequenceCheck; !q.mode.empty())
+    s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
+         (q.mode == "exact" ? "pixel hashes, bit-exact (golden's environment)"
+                            : "quality signatures within tolerance (another environment)" +
+                                  escapeMarkup(run::sequenceWorst(q))) +
+         "</p>\n";
+  s += firstDifference(c, id, dir);
   s += invariantsTable(c);
   s += curves(c);
   for (const auto& f : c.frames) s += renderFrame(f, id + "-f" + std::to_string(f.frame), dir);

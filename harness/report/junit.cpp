@@ -11,6 +11,9 @@ namespace {
 // Everything a person needs to see why the case failed, one finding per line.
 std::vector<std::string> failureLines(const run::CaseResult& c) {
   std::vector<std::string> lines;
+  if (c.firstDifference.frame >= 0)
+    lines.push_back("frame " + std::to_string(c.firstDifference.frame) + ": " +
+                    c.firstDifference.detail);
   for (const auto& f : c.frames)
     for (const auto& why : f.failures)
       lines.push_back("frame " + std::to_string(f.frame) + ": " + why);
@@ -55,7 +58,9 @@ std::string renderJUnit(const run::RunResults& r) {
         break;
       case run::CaseStatus::Fail:
       case run::CaseStatus::Stale: {
-        const auto lines = failureLines(c);
+        auto lines = failureLines(c);
+        // A case-level reason (unusable goldens, no goldens under CI) heads the list.
+        if (!c.message.empty()) lines.insert(lines.begin(), c.message);
         const bool stale = c.status == run::CaseStatus::Stale;
         const std::string summary = !firstLine.empty() ? firstLine
                                     : lines.empty()

@@ -20,6 +20,9 @@ struct RunOptions {
   std::filesystem::path outDir;       // case outputs go to outDir/NAME/
   std::filesystem::path goldensRoot;  // empty: the folder goldens/ beside the case's folder
   bool writeImages = true;            // PNG/EXR of checked frames, diffs and crops
+  // A case without goldens fails (CI, where it means a golden was never committed) instead
+  // of being a skip (a new case on a developer's machine).
+  bool missingGoldenFails = false;
   // Called before each frame with (frame, frame count); for terminal progress.
   std::function<void(int, int)> progress;
 };

@@ -26,6 +26,10 @@ const char* toString(CaseStatus s) {
   return "?";
 }
 
+CaseStatus worse(CaseStatus a, CaseStatus b) {
+  return int(a) >= int(b) ? a : b;
+}
+
 namespace {
 
 template <class E>
@@ -87,7 +91,26 @@ nlohmann::json toJson(const RunResults& r) {
                          {"frame_ms", c.frameMs},
                          {"frame_stats", c.frameStats},
                          {"log", c.log},
+                         {"frame_sha256", c.frameSha256},
                          {"seconds", c.seconds}};
+    if (const auto& q = c.sequenceCheck; !q.mode.empty())
+      jc["sequence_check"] = {{"mode", q.mode},
+                              {"frames", q.frames},
+                              {"worst_cell", q.worstCell},
+                              {"worst_cell_frame", q.worstCellFrame},
+                              {"worst_mean", q.worstMean},
+                              {"worst_mean_frame", q.worstMeanFrame}};
+    if (const auto& d = c.firstDifference; d.frame >= 0) {
+      nlohmann::json n = nlohmann::json::array();
+      for (const auto& g : d.goldenNeighbours)
+        n.push_back({{"frame", g.frame}, {"image", g.image}});
+      jc["first_difference"] = {{"frame", d.frame},
+                                {"detail", d.detail},
+                                {"actual_sha256", d.actualSha256},
+                                {"golden_sha256", d.goldenSha256},
+                                {"actual", d.actual},
+                                {"golden_neighbours", n}};
+    }
     for (const auto& f : c.frames) {
       const auto& i = f.images;
       jc["frames"].push_back({{"frame", f.frame},
@@ -139,6 +162,28 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.frameStats = jc.value("frame_stats", std::map<std::string, std::vector<double>>{});
     c.log = jc.value("log", std::vector<std::string>{});
     c.seconds = jc.value("seconds", 0.0);
+    c.frameSha256 = jc.value("frame_sha256", std::vector<std::string>{});
+    if (jc.contains("sequence_check")) {
+      const auto& jq = jc["sequence_check"];
+      auto& q = c.sequenceCheck;
+      q.mode = jq.value("mode", "");
+      q.frames = jq.value("frames", 0);
+      q.worstCell = jq.value("worst_cell", 0);
+      q.worstCellFrame = jq.value("worst_cell_frame", -1);
+      q.worstMean = jq.value("worst_mean", 0.0);
+      q.worstMeanFrame = jq.value("worst_mean_frame", -1);
+    }
+    if (jc.contains("first_difference")) {
+      const auto& jd = jc["first_difference"];
+      auto& d = c.firstDifference;
+      d.frame = jd.value("frame", -1);
+      d.detail = jd.value("detail", "");
+      d.actualSha256 = jd.value("actual_sha256", "");
+      d.goldenSha256 = jd.value("golden_sha256", "");
+      d.actual = jd.value("actual", "");
+      for (const auto& n : jd.value("golden_neighbours", nlohmann::json::array()))
+        d.goldenNeighbours.push_back({n.value("frame", 0), n.value("image", "")});
+    }
     for (const auto& jf : jc.value("frames", nlohmann::json::array())) {
       FrameComparison f;
       f.frame = jf.value("frame", 0);

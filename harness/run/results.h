@@ -50,7 +50,27 @@ struct InvariantResult {
   std::vector<std::pair<std::string, double>> values;
 };
 
-enum class CaseStatus { Pass, Fail, Stale, NoGolden, Error };
+// In order of severity: a case's status is the worst of its checks (worse()). NoGolden is a
+// skip: a case without goldens whose other checks pass (outside CI; under CI=true it is Fail).
+enum class CaseStatus { Pass, NoGolden, Stale, Fail, Error };
+
+CaseStatus worse(CaseStatus a, CaseStatus b);
+
+// The first frame whose pixels differ from the golden's frame_sha256, in the golden's own
+// environment (where any changed bit is a regression). frame -1: none differs or the
+// sequence was not compared.
+struct FirstDifference {
+  int frame = -1;
+  std::string detail;  // one sentence: which frame, which hashes, what matched before it
+  std::string actualSha256;
+  std::string goldenSha256;
+  std::string actual;  // PNG of this run's frame (relative to the report)
+  struct Neighbour {
+    int frame = 0;
+    std::string image;  // PNG of the stored golden frame
+  };
+  std::vector<Neighbour> goldenNeighbours;  // the stored golden frames nearest before and after
+};
 
 struct PassTiming {
   std::string pass;
@@ -68,6 +88,20 @@ struct CaseResult {
   std::string fingerprint;    // this run's environment
   std::string goldenFingerprint;
   std::vector<FrameComparison> frames;
+  FirstDifference firstDifference;
+  std::vector<std::string> frameSha256;  // every rendered frame's pixel hash, when goldens apply
+  std::vector<std::string> frameSignatures;  // and golden::frameSignature (for bless; not in JSON)
+  // How every frame compared with the golden sequence: "exact" (hashes, golden's environment),
+  // "signature" (within tolerances, elsewhere) or "" (not compared); with the largest signature
+  // distances seen, so the tolerances can be judged against real runs.
+  struct SequenceCheck {
+    std::string mode;
+    int frames = 0;
+    int worstCell = 0;  // 8-bit steps of a cell's mean luma
+    int worstCellFrame = -1;
+    double worstMean = 0.0;  // a channel's frame mean, in [0, 1]
+    int worstMeanFrame = -1;
+  } sequenceCheck;
   std::vector<InvariantResult> invariants;
   std::vector<double> referenceRmse;  // per frame against the reference; empty without one
   std::vector<double> frameMs;        // per frame, all passes together

@@ -29,7 +29,8 @@ void fields(V& v, ToleranceSpec& s) {
   const char* impl = "harness/compare/tolerance.cpp";
   v.field("max_abs", s.max_abs, Range<float>{0.0f, 1e6f}, Meta{"largest per-channel absolute error (linear)", impl});
   v.field("rmse", s.rmse, Range<float>{0.0f, 1e6f}, Meta{"root-mean-square error over RGB (linear)", impl});
-  v.field("psnr_min", s.psnr_min, Range<float>{0.0f, 1000.0f}, Meta{"lowest PSNR in dB (peak 1.0)", impl});
+  v.field("psnr_min", s.psnr_min, Range<float>{-1000.0f, 1000.0f},
+          Meta{"lowest PSNR in dB (peak 1.0; below 0 for HDR frames far above 1)", impl});
   v.field("pixel_threshold", s.pixel_threshold, Range<float>{0.0f, 1e6f},
           Meta{"per-pixel error above which a pixel counts as differing", impl});
   v.field("pixels_over", s.pixels_over, Range<float>{0.0f, 1.0f},

@@ -31,7 +31,7 @@ TEST(EffectAlpha, AlphaOneReproducesTheCurrentFrameExactly) {
 
 // Rectification off, so what the output holds is the plain exponential average of the jittered
 // frames (a clip would pull it back toward the current frame).
-const char* kStatic = R"({
+const char* kAlphaStatic = R"({
   "scene": {"builtin": "checkerboard"},
   "render": {"width": 128, "height": 72},
   "script": {"frames": 48},
@@ -44,9 +44,9 @@ TEST(EffectAlpha, LowerAlphaConvergesCloserToTheReferenceOnAStaticScene) {
   const std::vector<int> last = {40, 41, 42, 43, 44, 45, 46, 47};
   RenderOptions o;
   o.reference = true;
-  const auto& a005 = renderOnce(kStatic, R"({"taa": {"alpha": 0.05}})", last, o);
-  const auto& a03 = renderOnce(kStatic, R"({"taa": {"alpha": 0.3}})", last);
-  const auto& a1 = renderOnce(kStatic, R"({"taa": {"alpha": 1.0}})", last);
+  const auto& a005 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 0.05}})", last, o);
+  const auto& a03 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 0.3}})", last);
+  const auto& a1 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 1.0}})", last);
   auto meanError = [&](const test::EffectRun& run) {
     double sum = 0.0;
     for (int f : last) sum += test::rmse(run[f].color, a005[f].reference);

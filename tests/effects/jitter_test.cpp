@@ -14,7 +14,7 @@ using test::renderOnce;
 using test::report;
 
 // A static checkerboard with boxes: many edges that only sub-pixel samples resolve.
-const char* kStatic = R"({
+const char* kJitterStatic = R"({
   "scene": {"builtin": "checkerboard"},
   "render": {"width": 128, "height": 72},
   "script": {"frames": 24},
@@ -24,8 +24,8 @@ const char* kStatic = R"({
 TEST(EffectJitter, HaltonConvergesCloserToTheReferenceThanNoJitter) {
   RenderOptions o;
   o.reference = true;
-  const auto& halton = renderOnce(kStatic, R"({"jitter": {"pattern": "halton"}})", {23}, o);
-  const auto& none = renderOnce(kStatic, R"({"jitter": {"pattern": "none"}})", {23});
+  const auto& halton = renderOnce(kJitterStatic, R"({"jitter": {"pattern": "halton"}})", {23}, o);
+  const auto& none = renderOnce(kJitterStatic, R"({"jitter": {"pattern": "none"}})", {23});
   const Image& ref = halton[23].reference;  // static scene: the same truth for both runs
   const double eHalton = test::rmse(halton[23].color, ref), eNone = test::rmse(none[23].color, ref);
   report("rmse vs reference, halton x8, frame 23", eHalton);

@@ -13,12 +13,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Manifest manifestFor(const std::string& reason, const std::vector<int>& frames) {
+// A manifest whose frames are 4x3 images of `value` everywhere, as filesFor writes them.
+Manifest manifestFor(const std::string& reason, const std::vector<int>& frames, float value) {
   Manifest m;
   m.caseName = "c";
   m.caseSha256 = std::string(64, 'a');
   m.bless = {"2026-11-22", "abc", reason};
-  for (int f : frames) m.frames.push_back({f, "frame_" + std::to_string(f) + ".exr", "", 4, 3});
+  const std::string sha = pixelSha256(Image(4, 3, 4, value));
+  m.sequence.assign(10, std::string(64, 'b'));
+  for (int f : frames) {
+    m.frames.push_back({f, "frame_" + std::to_string(f) + ".exr", sha, 4, 3});
+    m.sequence[size_t(f)] = sha;
+  }
   return m;
 }
 
@@ -37,9 +43,9 @@ fs::path freshRoot(const char* name) {
 
 TEST(GoldenStore, ReplaceWritesAndSwapsTheWholeSet) {
   const fs::path root = freshRoot("swap");
-  const auto first = manifestFor("first", {1, 2});
+  const auto first = manifestFor("first", {1, 2}, 0.25f);
   replaceGoldens(root, first, filesFor(first, 0.25f));
-  const auto second = manifestFor("second", {3});
+  const auto second = manifestFor("second", {3}, 0.5f);
   replaceGoldens(root, second, filesFor(second, 0.5f));
   const auto loaded = loadGoldens(root, "c");
   ASSERT_TRUE(loaded);
@@ -52,9 +58,9 @@ TEST(GoldenStore, ReplaceWritesAndSwapsTheWholeSet) {
 
 TEST(GoldenStore, FailurePartWayLeavesTheOldSetWhole) {
   const fs::path root = freshRoot("failure");
-  const auto good = manifestFor("good", {1, 2});
+  const auto good = manifestFor("good", {1, 2}, 0.25f);
   replaceGoldens(root, good, filesFor(good, 0.25f));
-  const auto bad = manifestFor("bad", {1, 2});
+  const auto bad = manifestFor("bad", {1, 2}, 0.75f);
   auto files = filesFor(bad, 0.75f);
   files[1].second = Image();  // the second frame cannot be written
   EXPECT_ANY_THROW(replaceGoldens(root, bad, files));
@@ -67,13 +73,13 @@ TEST(GoldenStore, FailurePartWayLeavesTheOldSetWhole) {
 
 TEST(GoldenStore, LeftoversOfAKilledBlessAreIgnoredThenCleaned) {
   const fs::path root = freshRoot("killed");
-  const auto good = manifestFor("good", {1});
+  const auto good = manifestFor("good", {1}, 0.25f);
   replaceGoldens(root, good, filesFor(good, 0.25f));
   // What a bless killed before its exchange leaves: a hidden, half-written folder.
   fs::create_directories(root / ".c.bless-999999");
   std::ofstream(root / ".c.bless-999999" / "frame_1.exr") << "partial";
   EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "good");
-  const auto next = manifestFor("next", {1});
+  const auto next = manifestFor("next", {1}, 0.5f);
   replaceGoldens(root, next, filesFor(next, 0.5f));
   EXPECT_FALSE(fs::exists(root / ".c.bless-999999"));
   EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "next");
@@ -86,13 +92,58 @@ TEST(GoldenStore, MalformedManifestNamesTheFile) {
   try {
     loadGoldens(root, "c");
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
+  } catch (const GoldenError& e) {
     EXPECT_NE(std::string(e.what()).find("manifest.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("git checkout -- "), std::string::npos) << e.what();
   }
 }
 
+// What `loadGoldens` must refuse before anything is compared with the set.
+std::string loadError(const fs::path& root) {
+  try {
+    loadGoldens(root, "c");
+  } catch (const GoldenError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GoldenStore, AnExrWhosePixelsDoNotMatchItsHashIsRefused) {
+  const fs::path root = freshRoot("overwritten");
+  const auto m = manifestFor("good", {1, 2}, 0.25f);
+  replaceGoldens(root, m, filesFor(m, 0.25f));
+  writeExr(root / "c" / "frame_2.exr", Image(4, 3, 4, 0.26f));  // what `render --out goldens` did
+  const std::string e = loadError(root);
+  EXPECT_NE(e.find("frame_2.exr: pixels"), std::string::npos) << e;
+  EXPECT_NE(e.find("do not match manifest.json"), std::string::npos) << e;
+}
+
+TEST(GoldenStore, AMissingOrUnreadableExrIsRefused) {
+  const fs::path root = freshRoot("missing");
+  const auto m = manifestFor("good", {1, 2}, 0.25f);
+  replaceGoldens(root, m, filesFor(m, 0.25f));
+  std::ofstream(root / "c" / "frame_1.exr") << "not an exr";
+  EXPECT_NE(loadError(root).find("frame_1.exr"), std::string::npos) << loadError(root);
+  fs::remove(root / "c" / "frame_1.exr");
+  EXPECT_NE(loadError(root).find("frame_1.exr: missing"), std::string::npos) << loadError(root);
+}
+
+TEST(GoldenStore, AManifestWhoseFrameHashDisagreesWithItsSequenceIsRefused) {
+  const fs::path root = freshRoot("sequence");
+  auto m = manifestFor("good", {1}, 0.25f);
+  replaceGoldens(root, m, filesFor(m, 0.25f));
+  m.sequence[1] = std::string(64, 'c');
+  std::ofstream(root / "c" / "manifest.json") << m.toJson().dump(2);
+  EXPECT_NE(loadError(root).find("disagrees with frame_sha256"), std::string::npos)
+      << loadError(root);
+  // Images without a manifest are no set at all, not an absent one.
+  fs::remove(root / "c" / "manifest.json");
+  EXPECT_NE(loadError(root).find("cannot read the golden manifest"), std::string::npos)
+      << loadError(root);
+}
+
 TEST(GoldenStore, ManifestRoundTripKeepsEveryField) {
-  auto m = manifestFor("why", {7});
+  auto m = manifestFor("why", {7}, 0.25f);
   m.environment = {"llvmpipe (LLVM 15.0.6, 256 bits)", "llvmpipe", "Mesa 22.3.6", "1.3.230", "x86-64-v3"};
   m.history.push_back({"2026-01-01", "def", "older"});
   const auto back = Manifest::fromJson(m.toJson(), "m.json");

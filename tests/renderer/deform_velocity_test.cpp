@@ -13,12 +13,6 @@
 namespace taa {
 namespace {
 
-const Image& aux(const FrameRecord& r, const std::string& name) {
-  for (const auto& a : r.aux)
-    if (a.name == name) return a.image;
-  throw std::runtime_error("no aux " + name);
-}
-
 struct Checked {
   int pixels = 0;        // mover pixels compared
   double worst = 0.0;    // largest |measured - analytic| in pixels
@@ -29,9 +23,9 @@ constexpr double kRate = 0.8;  // units of rise per second at x = +0.5
 
 Checked checkBend(const spec::CaseSpec& spec, const FrameRecord& r) {
   const auto s = script::frameState(spec, r.frame);
-  const Image& depth = aux(r, "depth");
-  const Image& velocity = aux(r, "velocity");
-  const Image& ids = aux(r, "material_id");
+  const Image& depth = test::auxImage(r, "depth");
+  const Image& velocity = test::auxImage(r, "velocity");
+  const Image& ids = test::auxImage(r, "material_id");
   const glm::dmat4 inv = glm::inverse(glm::dmat4(s.camera.viewProjection));
   const glm::dmat4 prevVp(s.prevCamera.viewProjection);
   const glm::dvec2 size(s.renderSize);

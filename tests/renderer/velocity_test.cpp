@@ -13,12 +13,6 @@
 namespace taa {
 namespace {
 
-const Image& auxVelocity(const FrameRecord& r, const std::string& name) {
-  for (const auto& a : r.aux)
-    if (a.name == name) return a.image;
-  throw std::runtime_error("no auxVelocity " + name);
-}
-
 struct Checked {
   int pixels = 0;
   double worst = 0.0;      // largest |measured - analytic| in pixels
@@ -29,9 +23,9 @@ struct Checked {
 // view direction alone (rotation only).
 Checked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
   const auto s = script::frameState(spec, r.frame);
-  const Image& depth = auxVelocity(r, "depth");
-  const Image& velocity = auxVelocity(r, "velocity");
-  const Image& ids = auxVelocity(r, "material_id");
+  const Image& depth = test::auxImage(r, "depth");
+  const Image& velocity = test::auxImage(r, "velocity");
+  const Image& ids = test::auxImage(r, "material_id");
   const glm::dmat4 inv = glm::inverse(glm::dmat4(s.camera.viewProjection));
   const glm::dmat4 prevVp(s.prevCamera.viewProjection);
   const glm::dvec2 size(s.renderSize);
@@ -118,7 +112,7 @@ TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
                      "rotation_speed_deg": 5, "rotation_axis": [0, 1, 0]}])");
   const auto frames = test::renderCase(spec);
   // The cube must actually be on screen and moving, or the test proves nothing.
-  const Image& ids = auxVelocity(frames[3], "material_id");
+  const Image& ids = test::auxImage(frames[3], "material_id");
   int moverPixels = 0;
   for (int y = 0; y < ids.height; ++y)
     for (int x = 0; x < ids.width; ++x) moverPixels += ids.at(x, y, 2) > 0.5f;
@@ -131,7 +125,7 @@ TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
 TEST(Velocity, IsZeroForAStaticCameraAndScene) {
   const auto spec = makeCase(R"("camera": {})");
   const auto frames = test::renderCase(spec);
-  const Image& v = auxVelocity(frames[3], "velocity");
+  const Image& v = test::auxImage(frames[3], "velocity");
   // Rounding of the two (identical) projections may differ by an ulp once fused.
   for (float value : v.data) ASSERT_LT(std::fabs(value), 1e-4f);
 }

@@ -13,7 +13,7 @@ glm::vec3 origin(const glm::mat4& m) {
   return glm::vec3(m[3]);
 }
 
-void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
+void expectNearAnimation(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, eps);
   EXPECT_NEAR(a.y, b.y, eps);
   EXPECT_NEAR(a.z, b.z, eps);
@@ -36,10 +36,10 @@ struct AnimatedFixture : ::testing::Test {
 TEST_F(AnimatedFixture, LinearTranslationAndSlerpRotation) {
   const auto d = at(0.5);
   ASSERT_EQ(d.size(), 2u);
-  expectNear(origin(d[0].transform), {1, 0, 0});
+  expectNearAnimation(origin(d[0].transform), {1, 0, 0});
   EXPECT_NEAR(yawDegrees(d[0].transform), 22.5f, 1e-3f);  // a quarter of the way to 90
   const auto e = at(1.5);
-  expectNear(origin(e[0].transform), {2, 1, 0});
+  expectNearAnimation(origin(e[0].transform), {2, 1, 0});
   EXPECT_NEAR(yawDegrees(e[0].transform), 67.5f, 1e-3f);
 }
 
@@ -56,7 +56,7 @@ TEST_F(AnimatedFixture, CubicSplineFollowsHermiteWithScaledTangents) {
   const auto d = poseModel(s, 0, 1.0);
   const glm::mat4 parent = d[0].transform;
   const glm::vec3 local = glm::vec3(glm::inverse(parent) * glm::vec4(origin(d[1].transform), 1.0f));
-  expectNear(local, {0, 1.25f, 0});
+  expectNearAnimation(local, {0, 1.25f, 0});
   EXPECT_NEAR(glm::length(glm::vec3(d[1].transform[0])), 0.25f * 2.0f, 1e-5f)
       << "child scale times parent's";
 }
@@ -73,8 +73,8 @@ TEST_F(AnimatedFixture, LoopsModuloDuration) {
 TEST_F(AnimatedFixture, BoundsAtRest) {
   glm::vec3 lo, hi;
   modelBounds(scene, 0, lo, hi);
-  expectNear(lo, glm::vec3(-0.5f));
-  expectNear(hi, glm::vec3(0.5f));
+  expectNearAnimation(lo, glm::vec3(-0.5f));
+  expectNearAnimation(hi, glm::vec3(0.5f));
 }
 
 // A hand-built model to test sampling rules in isolation.
@@ -109,8 +109,8 @@ TEST(AnimationSampling, ClampsBeforeFirstKey) {
   ch.times = {1.0f, 2.0f};
   ch.values = {{5, 0, 0, 0}, {7, 0, 0, 0}};
   const Scene s = oneNode(ch);
-  expectNear(origin(poseModel(s, 0, 0.5)[0].transform), {5, 0, 0});
-  expectNear(origin(poseModel(s, 0, 1.5)[0].transform), {6, 0, 0});
+  expectNearAnimation(origin(poseModel(s, 0, 0.5)[0].transform), {5, 0, 0});
+  expectNearAnimation(origin(poseModel(s, 0, 1.5)[0].transform), {6, 0, 0});
 }
 
 TEST(AnimationSampling, CubicRotationIsNormalised) {
@@ -135,7 +135,7 @@ TEST(AnimationSampling, NoAnimationIsRest) {
   Model m = flatModel(s, "m", {b.finish()});
   m.nodes[0].translation = {1, 2, 3};
   s.models.push_back(m);
-  expectNear(origin(poseModel(s, 0, 123.0)[0].transform), {1, 2, 3});
+  expectNearAnimation(origin(poseModel(s, 0, 123.0)[0].transform), {1, 2, 3});
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ Scene loadGltfDeform(const std::string& name) {
   return s;
 }
 
-void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
+void expectNearGltfDeform(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, eps);
   EXPECT_NEAR(a.y, b.y, eps);
   EXPECT_NEAR(a.z, b.z, eps);
@@ -47,7 +47,7 @@ TEST(GltfDeform, SkinnedAndMorphedQuadsBendByTheAnalyticOffset) {
       for (size_t i = 0; i < v.size(); ++i) {
         const glm::vec3 rest = s.vertices[mesh.firstVertex + i].position;
         const glm::vec3 moved = glm::vec3(draws[0].transform * glm::vec4(v[i].position, 1.0f));
-        expectNear(moved, rest + glm::vec3(0.0f, (rest.x + 0.5f) * 0.8f * float(t), 0.0f));
+        expectNearGltfDeform(moved, rest + glm::vec3(0.0f, (rest.x + 0.5f) * 0.8f * float(t), 0.0f));
       }
     }
   }
@@ -66,9 +66,9 @@ TEST(GltfDeform, SeveralSkinsEachPoseTheirOwnDraw) {
   for (size_t i = 0; i < mesh.vertexCount; ++i) {
     const glm::vec3 rest = s.vertices[mesh.firstVertex + i].position;
     const float bend = rest.x + 0.5f;
-    expectNear(first[i].position, rest + glm::vec3(0.0f, bend * 0.8f * float(t), 0.0f));
+    expectNearGltfDeform(first[i].position, rest + glm::vec3(0.0f, bend * 0.8f * float(t), 0.0f));
     // The second skin's joints both ride the slider (x += t); the lifter sinks 0.4 t.
-    expectNear(second[i].position, rest + glm::vec3(float(t), -bend * 0.4f * float(t), 0.0f));
+    expectNearGltfDeform(second[i].position, rest + glm::vec3(float(t), -bend * 0.4f * float(t), 0.0f));
   }
 }
 
@@ -82,8 +82,8 @@ TEST(GltfDeform, NodeWeightsOverrideTheMeshDefault) {
   const std::vector<Vertex> a = deformVertices(s, draws[0]), b = deformVertices(s, draws[1]);
   for (size_t i = 0; i < mesh.vertexCount; ++i) {
     const glm::vec3 rest = s.vertices[mesh.firstVertex + i].position;
-    expectNear(a[i].position, rest + glm::vec3(0.0f, 0.75f, 0.0f));
-    expectNear(b[i].position, rest + glm::vec3(0.0f, 0.25f, 0.0f));
+    expectNearGltfDeform(a[i].position, rest + glm::vec3(0.0f, 0.75f, 0.0f));
+    expectNearGltfDeform(b[i].position, rest + glm::vec3(0.0f, 0.25f, 0.0f));
   }
 }
 
@@ -117,7 +117,7 @@ TEST(GltfKhronos, SimpleMorphRestsAtItsDefaultWeights) {
   ASSERT_EQ(rest.weights, (std::vector<float>{0.5f, 0.5f}));
   const std::vector<Vertex> v = deformVertices(still, rest);
   for (size_t i = 0; i < v.size(); ++i)
-    expectNear(v[i].position, s.vertices[i].position + 0.5f * mesh.targets[0].position[i] +
+    expectNearGltfDeform(v[i].position, s.vertices[i].position + 0.5f * mesh.targets[0].position[i] +
                                   0.5f * mesh.targets[1].position[i]);
   // The weights animation (keys (0, 0), (0, 1), (1, 1), (1, 0), (0, 0) at 0..4 s).
   const MeshDraw at1 = poseModel(s, 0, 1.0)[0], at25 = poseModel(s, 0, 2.5)[0];
@@ -135,7 +135,7 @@ TEST(GltfKhronos, SimpleSkinBendsWithItsJointAnimation) {
   const std::vector<Vertex> rest = at(0.0), bent = at(1.5);
   float topShift = 0.0f, bottomShift = 0.0f;
   for (size_t i = 0; i < rest.size(); ++i) {
-    expectNear(rest[i].position, s.vertices[i].position);  // the first key is the bind pose
+    expectNearGltfDeform(rest[i].position, s.vertices[i].position);  // the first key is the bind pose
     const float dx = std::fabs(bent[i].position.x - rest[i].position.x);
     if (rest[i].position.y >= 1.99f) topShift = std::max(topShift, dx);
     if (rest[i].position.y <= 0.01f) bottomShift = std::max(bottomShift, dx);
@@ -264,7 +264,7 @@ TEST(GltfExtensions, QuantizedAttributesLoad) {
   EXPECT_EQ(s.vertices[0].uv, glm::vec2(0.0f, 1.0f));
   EXPECT_EQ(s.vertices[2].uv, glm::vec2(1.0f, 0.0f));
   const glm::mat4 m = poseModel(s, 0, 0.0)[0].transform;  // the node's 0.001 scale
-  expectNear(glm::vec3(m * glm::vec4(s.vertices[2].position, 1.0f)), glm::vec3(0.5f, 0.5f, 0.0f));
+  expectNearGltfDeform(glm::vec3(m * glm::vec4(s.vertices[2].position, 1.0f)), glm::vec3(0.5f, 0.5f, 0.0f));
   EXPECT_TRUE(s.notes.empty());
 }
 

@@ -1,0 +1,283 @@
+#include "run/golden_check.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "compare/heatmap.h"
+#include "compare/tolerance.h"
+#include "core/image_io.h"
+#include "golden/signature.h"
+
+namespace taa::run {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string frameBase(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "frame_%04d", frame);
+  return buf;
+}
+
+std::string blessCommandFor(const spec::CaseSpec& spec) {
+  return "taa-harness bless " + spec.file.string() + " --reason \"<why the image changed>\"";
+}
+
+std::string shortSha(const std::string& sha) {
+  return sha.substr(0, 12);
+}
+
+}  // namespace
+
+void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComparison& fc,
+                      const Image& actual, const Image* golden, const Image* errorMap) {
+  const std::string base = frameBase(fc.frame);
+  writeExr(caseDir / (base + ".exr"), actual);
+  writePng(caseDir / (base + ".png"), actual);
+  fc.images.actual = rel + "/" + base + ".png";
+  if (!golden) return;
+  writePng(caseDir / (base + ".golden.png"), *golden);
+  fc.images.golden = rel + "/" + base + ".golden.png";
+  if (!errorMap) return;
+  writePngLinear8(caseDir / (base + ".diff.png"), compare::heatmap(*errorMap));
+  fc.images.diff = rel + "/" + base + ".diff.png";
+  // The worst tenth of the frame, magnified so single pixels are visible.
+  const int w = std::max(1, std::min(actual.width, std::max(8, actual.width / 10)));
+  const int h = std::max(1, std::min(actual.height, std::max(8, actual.height / 10)));
+  const auto region = compare::worstRegion(*errorMap, w, h);
+  const int zoom = std::max(1, 256 / w);
+  auto zoomed = [&](const Image& img) {
+    return compare::upscaleNearest(
+        compare::crop(img, region.x, region.y, region.width, region.height), zoom);
+  };
+  writePng(caseDir / (base + ".zoom_golden.png"), zoomed(*golden));
+  writePng(caseDir / (base + ".zoom_actual.png"), zoomed(actual));
+  writePngLinear8(caseDir / (base + ".zoom_diff.png"), zoomed(compare::heatmap(*errorMap)));
+  fc.images.zoomGolden = rel + "/" + base + ".zoom_golden.png";
+  fc.images.zoomActual = rel + "/" + base + ".zoom_actual.png";
+  fc.images.zoomDiff = rel + "/" + base + ".zoom_diff.png";
+  fc.images.zoomX = region.x;
+  fc.images.zoomY = region.y;
+  fc.images.zoomW = region.width;
+  fc.images.zoomH = region.height;
+}
+
+GoldenCheck::GoldenCheck(const spec::CaseSpec& spec, const golden::Environment& env,
+                         const RunOptions& options)
+    : spec_(spec), options_(options), environment_(env.fingerprint()) {
+  const fs::path root =
+      options.goldensRoot.empty() ? defaultGoldensRoot(spec.file) : options.goldensRoot;
+  dir_ = root / spec.name;
+  try {
+    goldens_ = golden::loadGoldens(root, spec.name);
+  } catch (const golden::GoldenError& e) {
+    problem_ = e.what();
+  }
+  // Hashes are comparable only where lavapipe reproduces the golden's bytes; elsewhere every
+  // frame's signature is compared within tolerances.
+  if (!goldens_) return;
+  const auto& m = goldens_->manifest;
+  if (m.environment.fingerprint() == environment_)
+    mode_ = m.sequence.empty() ? Mode::None : Mode::Exact;
+  else
+    mode_ = m.signatures.empty() ? Mode::None : Mode::Signature;
+}
+
+void GoldenCheck::observe(const FrameRecord& r) {
+  sequence_.push_back(r.colorSha256);
+  signatures_.push_back(golden::frameSignature(r.color));
+  if (mode_ == Mode::None) return;
+  const auto f = size_t(r.frame);
+  std::string why;
+  if (mode_ == Mode::Exact) {
+    const auto& golden = goldens_->manifest.sequence;
+    if (f < golden.size() && golden[f] != r.colorSha256) why = "pixels";
+  } else if (const auto& golden = goldens_->manifest.signatures; f < golden.size()) {
+    const auto d = golden::signatureDistance(golden[f], signatures_.back());
+    auto& q = worst_;
+    if (d.cell > q.cell) {
+      q.cell = d.cell;
+      q.cellFrame = r.frame;
+    }
+    if (d.mean > q.mean) {
+      q.mean = d.mean;
+      q.meanFrame = r.frame;
+    }
+    if (!d.valid) why = "its golden signature is malformed";
+    if (d.cell > golden::kSignatureCellTolerance)
+      why = "the mean luma of cell (row " + std::to_string(d.cellIndex / golden::kSignatureGrid) +
+            ", column " + std::to_string(d.cellIndex % golden::kSignatureGrid) + " of " +
+            std::to_string(golden::kSignatureGrid) + "x" + std::to_string(golden::kSignatureGrid) +
+            ") differs by " + std::to_string(d.cell) + "/255 > " +
+            std::to_string(golden::kSignatureCellTolerance) + "/255";
+    if (d.mean > golden::kSignatureMeanTolerance)
+      why += (why.empty() ? "" : "; ") + std::string("a channel's frame mean differs by ") +
+             std::to_string(d.mean) + " > " + std::to_string(golden::kSignatureMeanTolerance);
+  }
+  if (!why.empty() && firstDiff_ < 0) {
+    firstDiff_ = r.frame;
+    firstDiffWhy_ = why;
+    firstDiffImage_ = r.color;
+  }
+}
+
+bool GoldenCheck::compareSequence(CaseResult& result) {
+  const bool exact = mode_ == Mode::Exact;
+  const auto& golden = exact ? goldens_->manifest.sequence : goldens_->manifest.signatures;
+  auto& q = result.sequenceCheck;
+  q.mode = exact ? "exact" : "signature";
+  q.frames = int(std::min(golden.size(), sequence_.size()));
+  q.worstCell = worst_.cell;
+  q.worstCellFrame = worst_.cellFrame;
+  q.worstMean = worst_.mean;
+  q.worstMeanFrame = worst_.meanFrame;
+  auto& d = result.firstDifference;
+  if (firstDiff_ < 0) {
+    if (golden.size() == sequence_.size()) return false;
+    const size_t common = std::min(golden.size(), sequence_.size());
+    d.frame = int(common);
+    d.detail = "the golden sequence has " + std::to_string(golden.size()) + " frames, this run " +
+               std::to_string(sequence_.size()) + "; the first " + std::to_string(common) +
+               (exact ? " are identical" : " are within tolerance");
+    return true;
+  }
+  const int f = firstDiff_;
+  d.frame = f;
+  if (exact) {
+    d.actualSha256 = sequence_.at(size_t(f));
+    d.goldenSha256 = golden.at(size_t(f));
+    d.detail = "frame " + std::to_string(f) +
+               " is the first whose pixels differ from the golden sequence (sha256 " +
+               shortSha(d.actualSha256) + " != " + shortSha(d.goldenSha256) + ")" +
+               (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are identical" : "");
+  } else {
+    d.detail = "frame " + std::to_string(f) +
+               " is the first whose signature is out of tolerance against the golden's (another "
+               "environment): " +
+               firstDiffWhy_ +
+               (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are within tolerance" : "");
+  }
+  if (!options_.writeImages) return true;
+  const fs::path caseDir = options_.outDir / spec_.name;
+  const std::string base = frameBase(f);
+  writeExr(caseDir / (base + ".exr"), firstDiffImage_);
+  writePng(caseDir / (base + ".png"), firstDiffImage_);
+  d.actual = spec_.name + "/" + base + ".png";
+  // The stored golden frames around it: what the sequence looked like where it was right.
+  const golden::GoldenFrame* before = nullptr;
+  const golden::GoldenFrame* after = nullptr;
+  for (const auto& gf : goldens_->manifest.frames) {
+    if (gf.frame <= f && (!before || gf.frame > before->frame)) before = &gf;
+    if (gf.frame >= f && (!after || gf.frame < after->frame)) after = &gf;
+  }
+  for (const auto* gf : {before, after}) {
+    if (!gf || (gf == after && after == before)) continue;
+    const std::string name = frameBase(gf->frame) + ".golden.png";
+    writePng(caseDir / name, goldens_->load(*gf));
+    d.goldenNeighbours.push_back({gf->frame, spec_.name + "/" + name});
+  }
+  return true;
+}
+
+CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::string& caseSha,
+                               CaseResult& result) {
+  const fs::path caseDir = options_.outDir / spec_.name;
+  result.blessCommand = blessCommandFor(spec_);
+  result.frameSha256 = sequence_;
+  result.frameSignatures = signatures_;
+  if (!problem_.empty() || !goldens_) {
+    // Unusable goldens are never compared with; missing ones are a skip outside CI.
+    for (const auto& [frame, image] : outputs) {
+      FrameComparison fc;
+      fc.frame = frame;
+      fc.status = FrameStatus::MissingGolden;
+      fc.actualSha256 = sequence_.at(size_t(frame));
+      if (options_.writeImages) writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr);
+      result.frames.push_back(std::move(fc));
+    }
+    if (!problem_.empty()) {
+      result.message = "goldens cannot be used: " + problem_;
+      return CaseStatus::Fail;
+    }
+    result.message = "no goldens in " + dir_.string() + "; look at the frames, then bless them";
+    if (!options_.missingGoldenFails) return CaseStatus::NoGolden;
+    result.message += " (CI=true: a case without goldens fails in CI)";
+    return CaseStatus::Fail;
+  }
+  const auto& m = goldens_->manifest;
+  result.goldenFingerprint = m.environment.fingerprint();
+  const bool sameEnvironment = result.goldenFingerprint == environment_;
+  bool anyFailed = false;
+  std::vector<std::string> notes;
+  for (const auto& [frame, image] : outputs) {
+    FrameComparison fc;
+    fc.frame = frame;
+    fc.actualSha256 = sequence_.at(size_t(frame));
+    fc.toleranceMode = !sameEnvironment;
+    const golden::GoldenFrame* gf = m.find(frame);
+    if (!gf) {
+      fc.status = FrameStatus::MissingGolden;
+      fc.failures.push_back("frame " + std::to_string(frame) + " is checked but was never blessed");
+      anyFailed = true;
+      if (options_.writeImages) writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr);
+      result.frames.push_back(std::move(fc));
+      continue;
+    }
+    fc.goldenSha256 = gf->sha256;
+    const bool exact = fc.actualSha256 == gf->sha256;
+    const Image& goldenImage = goldens_->load(*gf);
+    if (!goldenImage.sameShape(image)) {
+      fc.status = FrameStatus::Failed;
+      fc.failures.push_back("size " + std::to_string(image.width) + "x" +
+                            std::to_string(image.height) + " differs from the golden's " +
+                            std::to_string(goldenImage.width) + "x" +
+                            std::to_string(goldenImage.height));
+      anyFailed = true;
+      result.frames.push_back(std::move(fc));
+      continue;
+    }
+    const auto measured =
+        compare::measureAgainstGolden(goldenImage, image, spec_.checks.tolerance.pixel_threshold);
+    fc.metrics = measured.metrics;
+    if (exact) {
+      fc.status = FrameStatus::Exact;
+    } else if (sameEnvironment) {
+      // Same driver and CPU level: lavapipe reproduces bytes, so any change is real.
+      fc.status = FrameStatus::Failed;
+      fc.failures.push_back("pixels differ from the golden in the same environment (sha256 " +
+                            shortSha(fc.actualSha256) + " != " + shortSha(gf->sha256) + ")");
+    } else {
+      fc.failures = compare::toleranceViolations(fc.metrics, spec_.checks.tolerance);
+      fc.status = fc.failures.empty() ? FrameStatus::WithinTolerance : FrameStatus::Failed;
+    }
+    anyFailed |= fc.status == FrameStatus::Failed;
+    if (options_.writeImages)
+      writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap);
+    result.frames.push_back(std::move(fc));
+  }
+  if (sameEnvironment && m.sequence.empty()) {
+    notes.push_back(
+        (dir_ / "manifest.json").string() +
+        " has no frame_sha256 (blessed before every frame was hashed), so only the stored frames "
+        "were checked; re-bless it");
+    anyFailed = true;
+  }
+  if (!sameEnvironment && m.signatures.empty()) {
+    notes.push_back((dir_ / "manifest.json").string() +
+                    " has no frame_signatures (blessed before frames had signatures), so only the "
+                    "stored frames were checked in this environment; re-bless it");
+    anyFailed = true;
+  }
+  if (mode_ != Mode::None) anyFailed |= compareSequence(result);
+  const bool stale = m.caseSha256 != caseSha;
+  if (stale)
+    notes.push_back(
+        "the case file (or a file it references) changed since its goldens were blessed (" +
+        m.bless.date + ", \"" + m.bless.reason + "\")");
+  for (const auto& n : notes) result.message += (result.message.empty() ? "" : "; ") + n;
+  if (!anyFailed) return CaseStatus::Pass;
+  return stale ? CaseStatus::Stale : CaseStatus::Fail;
+}
+
+}  // namespace taa::run

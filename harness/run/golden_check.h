@@ -1,0 +1,70 @@
+// A case's golden verdict: the goldens verified before use, every frame's hash against the
+// golden sequence (in the golden's environment), the checked frames' images against the
+// stored EXRs (bit-exact there, with tolerances elsewhere), and staleness.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "frame_record.h"
+#include "golden/environment.h"
+#include "golden/golden_store.h"
+#include "run/case_runner.h"
+#include "run/results.h"
+#include "spec/case_spec.h"
+
+namespace taa::run {
+
+// The images of checked frame `fc.frame` beside the report (actual; golden, diff heatmap and
+// magnified worst region when there is a golden), with their paths recorded in `fc`.
+void writeFrameImages(const std::filesystem::path& caseDir, const std::string& rel,
+                      FrameComparison& fc, const Image& actual, const Image* golden,
+                      const Image* errorMap);
+
+class GoldenCheck {
+ public:
+  // Loads and verifies the case's goldens; a set that fails verification is remembered and
+  // reported by finish(), so the case still renders and runs its invariants.
+  GoldenCheck(const spec::CaseSpec& spec, const golden::Environment& env,
+              const RunOptions& options);
+
+  // Every rendered frame, in order, with its colour and hash: keeps the first frame whose
+  // hash differs from the golden sequence (only in the golden's environment).
+  void observe(const FrameRecord& r);
+
+  // The verdict, with result.frames, message, blessCommand, goldenFingerprint and
+  // firstDifference filled in: Pass, NoGolden (or Fail when options.missingGoldenFails),
+  // Stale (changed pixels of a case edited since its bless) or Fail.
+  CaseStatus finish(const std::map<int, Image>& outputs, const std::string& caseSha,
+                    CaseResult& result);
+
+ private:
+  // Fills result.firstDifference (and writes its images) when the sequence differs from
+  // the golden's; returns whether it does.
+  bool compareSequence(CaseResult& result);
+
+  const spec::CaseSpec& spec_;
+  const RunOptions& options_;
+  std::filesystem::path dir_;  // goldens/NAME
+  std::string environment_;    // this run's fingerprint
+  std::optional<golden::GoldenSet> goldens_;
+  std::string problem_;  // why the goldens cannot be used (GoldenError), empty when fine
+  // How every frame is compared: by hash in the golden's environment, by signature elsewhere.
+  enum class Mode { None, Exact, Signature } mode_ = Mode::None;
+  std::vector<std::string> sequence_;    // this run's hashes, frame by frame
+  std::vector<std::string> signatures_;  // and signatures
+  struct {
+    int cell = 0, cellFrame = -1;
+    double mean = 0.0;
+    int meanFrame = -1;
+  } worst_;
+  int firstDiff_ = -1;
+  std::string firstDiffWhy_;
+  Image firstDiffImage_;
+};
+
+}  // namespace taa::run

@@ -25,7 +25,7 @@ RenderOptions currentHistoryReset() {
 }
 
 bool outputIsInput(const FrameRecord& r) {
-  return test::rgbIdentical(r.color, test::auxImage(r, "currentHistoryReset"));
+  return test::rgbIdentical(r.color, test::auxImage(r, "current"));
 }
 
 TEST(EffectHistoryReset, ScriptedResetFrameOutputsTheCurrentFrame) {

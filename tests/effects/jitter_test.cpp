@@ -101,7 +101,7 @@ RenderOptions currentJitter() {
 }
 
 const Image& raw(const test::EffectRun& run, int f) {
-  return test::auxImage(run[f], "currentJitter");
+  return test::auxImage(run[f], "current");
 }
 
 TEST(EffectJitter, LockPinsOneStepOfTheSequence) {

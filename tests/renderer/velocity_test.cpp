@@ -77,7 +77,7 @@ const char* kBase = R"({
   "jitter": {"pattern": "none"},
   "taa": {"mode": "off"},
   "script": {"frames": 4},
-  "output": {"frames": [3], "auxVelocity": ["depth", "velocity", "material_id"]},
+  "output": {"frames": [3], "aux": ["depth", "velocity", "material_id"]},
   %s
 })";
 

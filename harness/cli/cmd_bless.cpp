@@ -1,4 +1,3 @@
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -6,6 +5,9 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
+#include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
 #include "run/console.h"
@@ -22,13 +24,17 @@ const char* kUsage =
     "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
 
 std::vector<std::string> failedCases(const fs::path& results) {
-  std::ifstream in(results);
-  if (!in) throw UsageError(results.string() + ": cannot read; pass the results.json of a previous run");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = readInputFile(results, kMaxTrackFileBytes);
+  } catch (const InputFileError& e) {
+    throw UsageError(std::string(e.what()) + "; pass the results.json of a previous run");
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw UsageError(results.string() + ": " + problem);
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
   }
@@ -75,7 +81,7 @@ int cmdBless(const Args& args) {
   options.run.outDir = a.value("--out", "out/bless");
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
-  fs::create_directories(options.run.outDir);
+  createOutputDirectory(options.run.outDir);
   const auto outcome = runBatch(batch, options, nullptr, /*keepOutputs=*/true);
   if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
 
@@ -102,6 +108,7 @@ int cmdBless(const Args& args) {
     printChanges(r);
     const fs::path root = options.run.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file)
                                                           : options.run.goldensRoot;
+    const golden::GoldensLock lock(root);  // the old manifest stays current until the swap
     const auto old = golden::loadGoldens(root, loaded.spec.name);
     const auto& frames = outcome.outputs.at(loaded.spec.name);
     const auto manifest =

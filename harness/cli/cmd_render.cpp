@@ -1,6 +1,5 @@
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +9,7 @@
 #include "cli/options.h"
 #include "cli/run_support.h"
 #include "core/image_io.h"
+#include "core/output_file.h"
 #include "renderer.h"
 
 namespace taa::cli {
@@ -36,16 +36,17 @@ int cmdRender(const Args& args) {
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
   const fs::path dir = fs::path(a.value("--out")) / spec.name;
-  fs::create_directories(dir);
+  createOutputDirectory(dir);
 
   RenderOptions options;
   options.reference = a.has("--reference");
-  RunContext run(spec, dir, a.value("--device"), a.has("--validate"), options);
-  std::ofstream log(dir / "run.log");
+  RunContext run(spec, a.value("--device"), a.has("--validate"), options);
+  std::string log;
   for (const auto& line : run.renderer().log()) {
-    log << line << "\n";
+    log += line + "\n";
     std::cerr << spec.name << ": " << line << "\n";
   }
+  writeFileAtomically(dir / "run.log", log);
   auto records = nlohmann::json::array();
   renderSequence(run.renderer(), spec, [&](FrameRecord& r) {
     nlohmann::json j = {{"frame", r.frame}, {"render_size", {r.renderSize.x, r.renderSize.y}},
@@ -70,7 +71,7 @@ int cmdRender(const Args& args) {
     }
     records.push_back(std::move(j));
   }, run.progress());
-  std::ofstream(dir / "records.json") << records.dump(1) << "\n";
+  writeFileAtomically(dir / "records.json", records.dump(1) + "\n");
   return run.finish();
 }
 

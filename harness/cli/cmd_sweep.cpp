@@ -8,6 +8,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "sweep/sweep.h"
+#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
@@ -60,8 +61,7 @@ int cmdSweep(const Args& args) {
   const fs::path out = a.value("--out", (fs::path("out/sweep") / caseFile.stem()).string());
   vk::ContextOptions co;
   co.device = a.value("--device");
-  co.shaderCacheDir = out / ".shader-cache";
-  fs::create_directories(co.shaderCacheDir);
+  co.shaderCacheDir = vk::shaderCacheDir();
   vk::Context ctx(co);
   const auto result = sweep::runSweep(ctx, caseFile, presets, names, options);
   if (options.progress) std::cerr << "\r\033[K";

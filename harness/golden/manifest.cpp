@@ -1,8 +1,10 @@
 #include "golden/manifest.h"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/input_file.h"
+#include "core/json_guard.h"
 
 namespace taa::golden {
 
@@ -55,13 +57,17 @@ const GoldenFrame* Manifest::find(int frame) const {
 }
 
 Manifest readManifest(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read the golden manifest");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileError& e) {
+    throw std::runtime_error(std::string(e.what()) + " (the golden manifest); restore it from git or re-bless");
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw std::runtime_error(file.string() + ": " + problem + "; restore it from git or re-bless");
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + "); restore it from git or re-bless");
   }

@@ -53,6 +53,15 @@ def textured(image: bytes, view: dict, texture=None):
     return json.dumps(doc).encode()
 
 
+def glb_bin_past_end():
+    body = b'{"asset": {"version": "2.0"}, "buffers": [{"byteLength": 24}]}'
+    body += b" " * (-len(body) % 4)
+    data = b"\0" * 16
+    total = 12 + 8 + len(body) + 8 + len(data)
+    return (b"glTF" + struct.pack("<II", 2, total) + struct.pack("<I", len(body)) + b"JSON" + body
+            + struct.pack("<I", len(data) + 8) + b"BIN\0" + data)
+
+
 def main():
     g = {
         "accessor_count_wraps.gltf": gltf([vec3(1537228672809129302)], VIEW),
@@ -71,6 +80,7 @@ def main():
         "extras_nested_deep.gltf": b'{"asset": {"version": "2.0", "extras": ' + b"[" * 5000 + b"]" * 5000 + b"}}",
         "duplicate_key.gltf": b'{"asset": {"version": "2.0"}, "nodes": [], "nodes": [{}]}',
         "node_cycle.gltf": b'{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"children": [0]}]}',
+        "glb_bin_chunk_past_end.glb": glb_bin_past_end(),
         "glb_chunk_length_huge.glb": b"glTF" + struct.pack("<II", 2, 40) + struct.pack("<I", 0xFFFFFFF0) + b"JSON" + b"{}" + b" " * 18,
     }
     c = {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene/gltf_images.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_error.h"
 #include "support/text.h"
@@ -161,6 +162,42 @@ TEST(GltfHostile, ImagesAreCheckedBeforeTheDecoder) {
   EXPECT_TRUE(refused(writeTextured(dir, jpeg + std::string(16, '\0'),
                                     R"({"buffer": 0, "byteOffset": 36, "byteLength": 28})"),
                       "is 32767 x 32767"));
+}
+
+// tinygltf checks a BIN chunk's length without its 8-byte header.
+TEST(GltfHostile, GlbBinChunkPastTheEnd) {
+  const fs::path dir = scratch();
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 24}]})";
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  const std::string data(16, '\0');
+  const uint32_t total = uint32_t(12 + 8 + json.size() + 8 + data.size());
+  std::ofstream(dir / "over.glb", std::ios::binary)
+      << "glTF" << u32(2) << u32(total) << u32(uint32_t(json.size())) << "JSON" << json
+      << u32(uint32_t(data.size() + 8)) << "BIN" << '\0' << data;
+  EXPECT_TRUE(refused(dir / "over.glb", "BIN chunk runs past the end"));
+  std::ofstream(dir / "long.glb", std::ios::binary)
+      << "glTF" << u32(2) << u32(total + 100) << u32(uint32_t(json.size())) << "JSON" << json;
+  EXPECT_TRUE(refused(dir / "long.glb", "total length of"));
+}
+
+TEST(GltfHostile, ImageHeadersGiveTheDecodedSizeBeforeDecoding) {
+  std::string png = pngHeader(100, 50);
+  auto bytes = [](const std::string& s) {
+    return reinterpret_cast<const unsigned char*>(s.data());
+  };
+  ImageHeader h = readImageHeader(bytes(png), png.size());
+  EXPECT_EQ(h.problem, "");
+  EXPECT_EQ(h.decodedBytes, 100u * 50u * 4u);
+  png[24] = 16;  // bit depth: tinygltf keeps 16-bit samples
+  EXPECT_EQ(readImageHeader(bytes(png), png.size()).decodedBytes, 100u * 50u * 8u);
+  EXPECT_NE(readImageHeader(bytes(png), 20).problem, "") << "a truncated header";
+  const std::string jpeg("\xFF\xD8\xFF\xE0\x00\x04\x00\x00\xFF\xC2\x00\x11\x08\x00\x30\x00\x40\x03",
+                         18);
+  h = readImageHeader(bytes(jpeg), jpeg.size());
+  EXPECT_EQ(h.problem, "");
+  EXPECT_EQ(h.decodedBytes, 64u * 48u * 4u)
+      << "skips the APP0 segment to the progressive frame header";
 }
 
 TEST(GltfHostile, TextureSourceAndSamplerOutOfRange) {

@@ -35,7 +35,7 @@ std::vector<std::string> failedCases(const fs::path& results) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
     throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
   }
   std::vector<std::string> files;

@@ -68,7 +68,7 @@ Manifest readManifest(const std::filesystem::path& file) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + "); restore it from git or re-bless");
   }
   return Manifest::fromJson(j, file);

@@ -31,7 +31,7 @@ nlohmann::json readJson(const fs::path& file) {
     throw cases::CaseError({file.string() + ": " + problem});
   try {
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
     throw cases::CaseError({file.string() + ": not valid JSON (" + std::string(e.what()) + ")"});
   }
 }

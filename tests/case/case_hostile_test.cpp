@@ -56,6 +56,12 @@ TEST(CaseHostile, DeepNestingIsRefusedBeforeParsing) {
       has(problems([&] { parseCase(text, "cases/deep.json"); }), "cases/deep.json: line 1"));
 }
 
+// Found by fuzz_case: nlohmann throws out_of_range, not parse_error, for 1e999.
+TEST(CaseHostile, NumberOverflowingADoubleIsBadInput) {
+  EXPECT_TRUE(has(problems([] { parseCase(R"({"render": {"width": 1e999}})", "cases/big.json"); }),
+                  "cases/big.json: a number is too large for a double"));
+}
+
 TEST(CaseHostile, CaseFileThatIsNotARegularFile) {
   const fs::path dir = scratch();
   ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);

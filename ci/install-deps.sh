@@ -6,6 +6,8 @@ export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential
   clang
+  # libFuzzer and the ASan/UBSan runtimes for ci/sanitize.sh and ci/fuzz.sh.
+  libclang-rt-14-dev
   cmake
   ninja-build
   pkg-config

@@ -1,13 +1,14 @@
 #include "case/case_loader.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "case/case_error.h"
 #include "case/case_validate.h"
 #include "case/json_reader.h"
 #include "case/json_writer.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
 #include "core/sha256.h"
 
 namespace taa::cases {
@@ -27,22 +28,28 @@ std::string formatNumber(double value) {
 namespace {
 
 // The case file's bytes, then each file it references (scene, mover models, tracks) by
-// its relative path and bytes: editing any of them makes blessed goldens stale.
+// its relative path and bytes: editing any of them makes blessed goldens stale. Each is
+// read as an input file: inside the case's folder after resolving links, regular, bounded.
 std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
-  std::vector<std::string> refs;
-  if (!spec.scene.gltf.empty()) refs.push_back(spec.scene.gltf);
-  if (!spec.camera.track.empty()) refs.push_back(spec.camera.track);
-  for (const auto& m : spec.movers) {
-    if (!m.gltf.empty()) refs.push_back(m.gltf);
-    if (!m.track.empty()) refs.push_back(m.track);
+  std::vector<std::pair<std::string, std::string>> refs;  // (key, relative path)
+  if (!spec.scene.gltf.empty()) refs.emplace_back("scene.gltf", spec.scene.gltf);
+  if (!spec.camera.track.empty()) refs.emplace_back("camera.track", spec.camera.track);
+  for (size_t i = 0; i < spec.movers.size(); ++i) {
+    const std::string at = "movers[" + std::to_string(i) + "].";
+    if (!spec.movers[i].gltf.empty()) refs.emplace_back(at + "gltf", spec.movers[i].gltf);
+    if (!spec.movers[i].track.empty()) refs.emplace_back(at + "track", spec.movers[i].track);
   }
   Sha256 h;
   h.update(text.data(), text.size());
-  for (const auto& ref : refs) {
-    std::ifstream in(spec.file.parent_path() / ref, std::ios::binary);
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    const std::string b = bytes.str();
+  for (const auto& [key, ref] : refs) {
+    std::string b;
+    try {
+      const auto dir = spec.file.parent_path();
+      containedRealPath(dir, dir / ref, key);
+      b = readInputFile(dir / ref, kMaxSceneFileBytes);
+    } catch (const InputFileError& e) {
+      throw CaseError({spec.file.string() + ": " + key + ": " + e.what()});
+    }
     h.update("\0", 1);
     h.update(ref.data(), ref.size());
     h.update("\0", 1);
@@ -56,6 +63,8 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
 
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file) {
   const std::string where = file.string();
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw CaseError({where + ": " + problem});
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
@@ -73,6 +82,8 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
     }
     throw CaseError({where + ":" + std::to_string(line) + ":" + std::to_string(column) +
                      ": not valid JSON (" + e.what() + "); fix the syntax at that position"});
+  } catch (const nlohmann::json::exception&) {  // found by fuzz_case: 1e999 overflows a double
+    throw CaseError({where + ": a number is too large for a double (over about 1.8e308); fix the number"});
   }
   if (!root.is_object()) throw CaseError({where + ": the case must be a JSON object {...}"});
 
@@ -91,11 +102,11 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
 }
 
 LoadedCase loadCase(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw CaseError({file.string() + ": cannot open the case file; check the path"});
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseCase(buffer.str(), file);
+  try {
+    return parseCase(readInputFile(file, kMaxCaseFileBytes), file);
+  } catch (const InputFileError& e) {
+    throw CaseError({std::string(e.what())});
+  }
 }
 
 nlohmann::json resolvedJson(const spec::CaseSpec& spec) {

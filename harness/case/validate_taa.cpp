@@ -64,6 +64,11 @@ void tscmaaRules(Rules& r, const CaseSpec& s) {
     r.add("output.aux",
           "tscmaa.eyes 2 renders the G-buffer once per eye and writes the eyes side by side; the "
           "aux buffers exist per eye only: remove output.aux or render one eye");
+  // The eyes are written side by side, so the image is twice render.width wide.
+  if (s.tscmaa.eyes == 2 && s.render.width > 4096)
+    r.add("tscmaa.eyes", "2 writes the eyes side by side, an image of 2 x render.width = " +
+                             std::to_string(2 * s.render.width) +
+                             " pixels, over the limit of 8192; set render.width to 4096 or less");
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/output_file.h"
 #include "script/track_bake.h"
 
 namespace taa::cli {
@@ -33,15 +33,8 @@ int cmdBake(const Args& args) {
   const std::string text = script::bakeTrackJson(spec, description);
 
   const fs::path out = a.value("--out");
-  if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  // Written beside the target and renamed, so a reader never sees half a track.
-  const fs::path partial = fs::path(out.string() + ".partial");
-  {
-    std::ofstream file(partial, std::ios::binary);
-    file << text;
-    if (!file.flush()) throw UsageError("cannot write " + partial.string());
-  }
-  fs::rename(partial, out);
+  if (out.has_parent_path()) createOutputDirectory(out.parent_path());
+  writeFileAtomically(out, text);  // a reader never sees half a track
   std::cout << "wrote " << out.string() << ": camera and " << spec.movers.size() << " mover(s), "
             << spec.script.frames << " frames at " << spec.script.fps << " fps\n"
             << "replay: set \"camera\": {\"track\": \"<path relative to the case>\"} and each "

@@ -1,4 +1,3 @@
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -7,6 +6,9 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
+#include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
 #include "run/console.h"
@@ -23,14 +25,18 @@ const char* kBlessUsage =
     "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
 
 std::vector<std::string> failedCases(const fs::path& results) {
-  std::ifstream in(results);
-  if (!in) throw UsageError(results.string() + ": cannot read; pass the results.json of a previous run");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = readInputFile(results, kMaxTrackFileBytes);
+  } catch (const InputFileError& e) {
+    throw UsageError(std::string(e.what()) + "; pass the results.json of a previous run");
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw UsageError(results.string() + ": " + problem);
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
     throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
   }
   std::vector<std::string> files;
@@ -83,7 +89,7 @@ int cmdBless(const Args& args) {
     refuseOutputInGoldens(options.run.outDir, options.run.goldensRoot.empty()
                                                   ? run::defaultGoldensRoot(c.spec.file)
                                                   : options.run.goldensRoot);
-  fs::create_directories(options.run.outDir);
+  createOutputDirectory(options.run.outDir);
   const auto outcome = runBatch(batch, options, nullptr, /*keepOutputs=*/true);
   if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) {
     // A scene that does not load (or a broken environment): say which case and why.
@@ -117,6 +123,7 @@ int cmdBless(const Args& args) {
     printChanges(r);
     const fs::path root = options.run.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file)
                                                           : options.run.goldensRoot;
+    const golden::GoldensLock lock(root);  // the old manifest stays current until the swap
     // The previous record only (its history continues); a bless replaces the images anyway,
     // so a set whose EXRs fail verification can be re-blessed, but not one whose manifest is lost.
     std::optional<golden::Manifest> previous;

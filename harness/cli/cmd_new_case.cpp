@@ -1,6 +1,5 @@
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -9,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/output_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
@@ -79,7 +79,7 @@ int cmdNewCase(const Args& args) {
       {"output", {{"frames", {frames - 1}}}}};
   const std::string text = j.dump(2) + "\n";
   cases::parseCase(text, out);  // what we write must validate
-  std::ofstream(out) << text;
+  writeFileAtomically(out, text);
   std::cout << "wrote " << out.string() << "\nnext: taa-harness render " << out.string()
             << " --out out/preview   (look at the PNGs), then taa-harness bless " << out.string()
             << " --reason \"new scene\"\n";

@@ -1,6 +1,5 @@
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -11,6 +10,7 @@
 #include "cli/run_cases.h"
 #include "cli/run_support.h"
 #include "core/image_io.h"
+#include "core/output_file.h"
 #include "renderer.h"
 
 namespace taa::cli {
@@ -38,16 +38,17 @@ int cmdRender(const Args& args) {
   const auto& spec = loaded.spec;
   refuseOutputInGoldens(a.value("--out"), run::defaultGoldensRoot(spec.file));
   const fs::path dir = fs::path(a.value("--out")) / spec.name;
-  fs::create_directories(dir);
+  createOutputDirectory(dir);
 
   RenderOptions options;
   options.reference = a.has("--reference");
-  RunContext run(spec, dir, a.value("--device"), a.has("--validate"), options);
-  std::ofstream log(dir / "run.log");
+  RunContext run(spec, a.value("--device"), a.has("--validate"), options);
+  std::string log;
   for (const auto& line : run.renderer().log()) {
-    log << line << "\n";
+    log += line + "\n";
     std::cerr << spec.name << ": " << line << "\n";
   }
+  writeFileAtomically(dir / "run.log", log);
   auto records = nlohmann::json::array();
   renderSequence(run.renderer(), spec, [&](FrameRecord& r) {
     nlohmann::json j = {{"frame", r.frame}, {"render_size", {r.renderSize.x, r.renderSize.y}},
@@ -72,7 +73,7 @@ int cmdRender(const Args& args) {
     }
     records.push_back(std::move(j));
   }, run.progress());
-  std::ofstream(dir / "records.json") << records.dump(1) << "\n";
+  writeFileAtomically(dir / "records.json", records.dump(1) + "\n");
   return run.finish();
 }
 

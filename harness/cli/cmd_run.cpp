@@ -1,7 +1,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 
 #include "case/case_loader.h"
@@ -10,6 +9,7 @@
 #include "cli/options.h"
 #include "cli/run_cases.h"
 #include "compare/tolerance.h"
+#include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/junit.h"
 #include "run/console.h"
@@ -69,7 +69,7 @@ int cmdRun(const Args& args) {
   for (const auto& c : batch.cases)
     refuseOutputInGoldens(out, a.has("--goldens") ? fs::path(a.value("--goldens"))
                                                   : run::defaultGoldensRoot(c.spec.file));
-  fs::create_directories(out);
+  createOutputDirectory(out);
   const auto start = std::chrono::steady_clock::now();
   BatchOptions options;
   options.run.outDir = out;
@@ -80,7 +80,7 @@ int cmdRun(const Args& args) {
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::ofstream(out / "results.json") << run::toJson(outcome.results).dump(1) << "\n";
+  writeFileAtomically(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");
   report::writeJUnit(out / "junit.xml", outcome.results);
   report::writeHtmlReport(out / "report.html", outcome.results);
   run::printSummary(std::cout, outcome.results, seconds);

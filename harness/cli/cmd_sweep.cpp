@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "cli/run_cases.h"
 #include "sweep/sweep.h"
+#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
@@ -62,8 +63,7 @@ int cmdSweep(const Args& args) {
   refuseOutputInGoldens(out, run::defaultGoldensRoot(caseFile));
   vk::ContextOptions co;
   co.device = a.value("--device");
-  co.shaderCacheDir = out / ".shader-cache";
-  fs::create_directories(co.shaderCacheDir);
+  co.shaderCacheDir = vk::shaderCacheDir();
   vk::Context ctx(co);
   const auto result = sweep::runSweep(ctx, caseFile, presets, names, options);
   if (options.progress) std::cerr << "\r\033[K";

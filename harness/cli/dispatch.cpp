@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "golden/manifest.h"
+#include "core/output_file.h"
 #include "scene/scene_error.h"
 #include "script/track.h"
 #include "vk/check.h"
@@ -88,6 +89,12 @@ int dispatch(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
   } catch (const vk::EnvironmentError& e) {
+    std::cerr << "environment: " << e.what() << "\n";
+    return kEnvironment;
+  } catch (const ImageWriteError& e) {
+    std::cerr << "environment: " << e.what() << "\n";
+    return kEnvironment;
+  } catch (const OutputError& e) {
     std::cerr << "environment: " << e.what() << "\n";
     return kEnvironment;
   } catch (const ImageIoError& e) {

@@ -12,10 +12,12 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
+#include "core/output_file.h"
 #include "golden/environment.h"
 #include "run/console.h"
 #include "scene/scene_error.h"
 #include "vk/check.h"
+#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
@@ -114,8 +116,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   vk::ContextOptions co;
   co.device = options.device;
   co.validate = options.validate;
-  co.shaderCacheDir = options.run.outDir / ".shader-cache";
-  fs::create_directories(co.shaderCacheDir);
+  co.shaderCacheDir = vk::shaderCacheDir();
   vk::Context ctx(co);
   out.results.device = ctx.info().name;
   out.environment = golden::currentEnvironment(ctx.info());
@@ -141,6 +142,12 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       result.status = run::CaseStatus::Error;
       result.message = e.what();
       badInput = true;
+    } catch (const ImageWriteError&) {
+      throw;  // the disk, not the case: exit 3, not a regression
+    } catch (const OutputError&) {
+      throw;
+    } catch (const fs::filesystem_error&) {
+      throw;
     } catch (const ImageIoError& e) {
       result.name = loaded.spec.name;
       result.file = loaded.spec.file.string();

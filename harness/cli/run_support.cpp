@@ -6,17 +6,17 @@
 
 #include "cli/exit_codes.h"
 #include "scene/build_scene.h"
+#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
-RunContext::RunContext(const spec::CaseSpec& spec, const std::filesystem::path& outDir, const std::string& device,
-                       bool validate, RenderOptions renderOptions)
+RunContext::RunContext(const spec::CaseSpec& spec, const std::string& device, bool validate,
+                       RenderOptions renderOptions)
     : spec_(spec), validate_(validate) {
   vk::ContextOptions options;
   options.device = device;
   options.validate = validate;
-  options.shaderCacheDir = outDir / ".shader-cache";
-  std::filesystem::create_directories(options.shaderCacheDir);
+  options.shaderCacheDir = vk::shaderCacheDir();
   scene_ = scene::buildScene(spec);
   ctx_ = std::make_unique<vk::Context>(options);
   renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_, renderOptions);

@@ -16,8 +16,7 @@ namespace taa::cli {
 
 class RunContext {
  public:
-  RunContext(const spec::CaseSpec& spec, const std::filesystem::path& outDir, const std::string& device,
-             bool validate, RenderOptions options = {});
+  RunContext(const spec::CaseSpec& spec, const std::string& device, bool validate, RenderOptions options = {});
   ~RunContext();
 
   vk::Context& context() { return *ctx_; }

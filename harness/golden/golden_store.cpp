@@ -1,15 +1,16 @@
 #include "golden/golden_store.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <stdio.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include "core/image_io.h"
+#include "core/output_file.h"
 
 namespace taa::golden {
 
@@ -40,14 +41,25 @@ std::optional<GoldenSet> loadGoldens(const fs::path& root, const std::string& ca
   return set;
 }
 
-namespace {
-
-void writeText(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  out.flush();
-  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+GoldensLock::GoldensLock(const fs::path& root) {
+  createOutputDirectory(root);
+  fd_ = ::open(root.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw OutputError(root, std::string("cannot open the folder to lock it: ") + std::strerror(errno));
+  int rc;
+  do rc = ::flock(fd_, LOCK_EX);  // waits while another bless holds it
+  while (rc != 0 && errno == EINTR);
+  if (rc != 0) {
+    const int err = errno;
+    ::close(fd_);
+    throw OutputError(root, std::string("cannot lock the folder: ") + std::strerror(err));
+  }
 }
+
+GoldensLock::~GoldensLock() {
+  ::close(fd_);  // releases the lock
+}
+
+namespace {
 
 // Leftovers of a bless that was killed before its exchange: never part of a set.
 void removeStale(const fs::path& root, const std::string& caseName) {
@@ -60,14 +72,15 @@ void removeStale(const fs::path& root, const std::string& caseName) {
 
 void replaceGoldens(const fs::path& root, const Manifest& manifest,
                     const std::vector<std::pair<GoldenFrame, Image>>& frames) {
-  fs::create_directories(root);
+  createOutputDirectory(root);
   removeStale(root, manifest.caseName);
   const fs::path target = root / manifest.caseName;
   const fs::path staging = root / ("." + manifest.caseName + ".bless-" + std::to_string(getpid()));
   fs::create_directories(staging);
   try {
     for (const auto& [frame, image] : frames) writeExr(staging / frame.file, image);
-    writeText(staging / "manifest.json", manifest.toJson().dump(2) + "\n");
+    writeFileAtomically(staging / "manifest.json", manifest.toJson().dump(2) + "\n");
+    syncDirectory(staging);  // the new set's entries are on disk before it takes the name
   } catch (...) {
     fs::remove_all(staging);
     throw;
@@ -76,11 +89,13 @@ void replaceGoldens(const fs::path& root, const Manifest& manifest,
     if (renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {
       const std::string why = std::strerror(errno);
       fs::remove_all(staging);
-      throw std::runtime_error("cannot swap " + staging.string() + " with " + target.string() + ": " + why);
+      throw OutputError(target, "cannot swap in " + staging.string() + ": " + why);
     }
+    syncDirectory(root);
     fs::remove_all(staging);  // now holds the previous set
   } else {
     fs::rename(staging, target);
+    syncDirectory(root);
   }
 }
 

@@ -26,9 +26,26 @@ struct GoldenSet {
 // and how to restore it; an overwritten golden is never compared with.
 std::optional<GoldenSet> loadGoldens(const std::filesystem::path& root, const std::string& caseName);
 
-// Writes `frames` and `manifest` into a hidden sibling folder, then exchanges it with
-// goldens/NAME in one rename (renameat2 RENAME_EXCHANGE), then deletes the old set.
-// Any failure before the exchange removes the new folder and leaves the old set.
+// An exclusive lock on a goldens folder (flock on the folder itself, so no lock file is
+// left behind), held from reading the old manifest to the exchange: concurrent blesses of
+// one folder run one after the other, and each sees the history the previous one wrote.
+// Creates the folder. Throws OutputError when it cannot be created or locked.
+class GoldensLock {
+ public:
+  explicit GoldensLock(const std::filesystem::path& root);
+  ~GoldensLock();
+  GoldensLock(const GoldensLock&) = delete;
+  GoldensLock& operator=(const GoldensLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// Writes `frames` and `manifest` into a hidden sibling folder, flushes every file and the
+// folder to disk, then exchanges it with goldens/NAME in one rename (renameat2
+// RENAME_EXCHANGE), flushes the goldens folder and deletes the old set. Any failure before
+// the exchange removes the new folder and leaves the old set. Hold a GoldensLock on `root`
+// when another process may bless into it.
 void replaceGoldens(const std::filesystem::path& root, const Manifest& manifest,
                     const std::vector<std::pair<GoldenFrame, Image>>& frames);
 

@@ -1,8 +1,10 @@
 #include "golden/manifest.h"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/input_file.h"
+#include "core/json_guard.h"
 
 namespace taa::golden {
 
@@ -80,18 +82,20 @@ const GoldenFrame* Manifest::find(int frame) const {
 }
 
 Manifest readManifest(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in)
-    throw GoldenError(file.string() + ": cannot read the golden manifest; " +
-                      restoreHint(file.parent_path()));
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string hint = restoreHint(file.parent_path());
+  std::string text;
+  try {
+    text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileError& e) {
+    throw GoldenError(std::string(e.what()) + " (the golden manifest); " + hint);
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw GoldenError(file.string() + ": " + problem + "; " + hint);
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw GoldenError(file.string() + ": not valid JSON (" + e.what() + "); " +
-                      restoreHint(file.parent_path()));
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw GoldenError(file.string() + ": not valid JSON (" + e.what() + "); " + hint);
   }
   return Manifest::fromJson(j, file);
 }

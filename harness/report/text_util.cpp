@@ -1,18 +1,10 @@
 #include "report/text_util.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <array>
-#include <atomic>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
 
 namespace taa::report {
-
-namespace fs = std::filesystem;
 
 std::string escapeMarkup(std::string_view text) {
   std::string out;
@@ -91,33 +83,6 @@ std::string formatFixed(double value, int decimals) {
   std::string s(buf.data(), r.ptr);
   if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);
   return s;
-}
-
-void writeFileAtomically(const fs::path& file, std::string_view content) {
-  static std::atomic<unsigned> counter{0};
-  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  const fs::path tmp = dir / ("." + file.filename().string() + ".tmp-" +
-                              std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  auto fail = [&](const std::string& why) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw std::runtime_error("cannot write " + file.string() + ": " + why);
-  };
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) fail("cannot create " + tmp.string());
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) fail("write failed");
-  }
-  // Flushed to disk before the rename so a crash cannot leave the name pointing at lost data.
-  if (const int fd = ::open(tmp.c_str(), O_RDONLY); fd >= 0) {
-    ::fsync(fd);
-    ::close(fd);
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) fail("rename failed: " + ec.message());
 }
 
 }  // namespace taa::report

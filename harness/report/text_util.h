@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/output_file.h"
+
 namespace taa::report {
 
 // Escapes &, <, >, " and ' for element text and attribute values alike (HTML and XML). Control
@@ -25,9 +27,8 @@ std::string formatNumber(double value, int significant = 4);
 // Exactly `decimals` digits after the point; non-finite values as in formatNumber.
 std::string formatFixed(double value, int decimals);
 
-// Writes `content` to a hidden temporary file beside `file`, flushes it and renames it over
-// `file`, so readers never see a half-written report. Throws std::runtime_error on failure and
-// leaves an existing `file` untouched.
-void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
+// Reports are written with taa::writeFileAtomically (core/output_file.h): readers never see
+// a half-written file, and a failure is an OutputError naming it.
+using taa::writeFileAtomically;
 
 }  // namespace taa::report

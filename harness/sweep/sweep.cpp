@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "case/case_error.h"
 #include "compare/flip.h"
 #include "compare/metrics.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
 #include "invariants/invariant_support.h"
 #include "renderer.h"
 #include "run/timing.h"
@@ -21,13 +21,17 @@ namespace fs = std::filesystem;
 namespace {
 
 nlohmann::json readJson(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw cases::CaseError({file.string() + ": cannot read"});
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
   try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+    text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileError& e) {
+    throw cases::CaseError({e.what()});
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw cases::CaseError({file.string() + ": " + problem});
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
     throw cases::CaseError({file.string() + ": not valid JSON (" + std::string(e.what()) + ")"});
   }
 }

@@ -1,6 +1,6 @@
 #include <cstdio>
-#include <fstream>
 
+#include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/svg_plot.h"
 #include "sweep/sweep.h"
@@ -29,9 +29,7 @@ std::vector<size_t> front(const SweepResult& r) {
 bool onFront(const std::vector<size_t>& f, size_t i) { return std::find(f.begin(), f.end(), i) != f.end(); }
 
 void writeText(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  writeFileAtomically(file, text);
 }
 
 std::string plot(const SweepResult& r, bool standalone) {
@@ -76,7 +74,7 @@ std::string markdownTable(const SweepResult& r) {
 }
 
 void writeSweep(const fs::path& dir, const SweepResult& r) {
-  fs::create_directories(dir);
+  createOutputDirectory(dir);
   std::string csv = "preset,flip_mean,rmse,flicker,reference_flicker,taa_ms,frame_ms,pareto,patch\n";
   const auto f = front(r);
   for (size_t i = 0; i < r.presets.size(); ++i) {

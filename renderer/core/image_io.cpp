@@ -13,6 +13,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/output_file.h"
 #include "core/sha256.h"
 
 namespace taa {
@@ -108,15 +109,6 @@ fs::path temporaryPathFor(const fs::path& path) {
                 std::to_string(counter.fetch_add(1)));
 }
 
-// Flushes the temporary file to disk before the rename so a crash cannot leave the new name
-// pointing at a file whose data never arrived.
-void syncFile(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 // Writes `pixels` (already in `type`) through OpenImageIO into a temporary file and renames it
 // into place. Any failure removes the temporary file and throws, leaving `path` as it was.
 void writeAtomically(const fs::path& path, const char* format, const OIIO::ImageSpec& spec,
@@ -125,7 +117,7 @@ void writeAtomically(const fs::path& path, const char* format, const OIIO::Image
   auto fail = [&](const std::string& message) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
-    throw ImageIoError(path, message);
+    throw ImageWriteError(path, message);
   };
   {
     auto out = OIIO::ImageOutput::create(format);
@@ -138,7 +130,13 @@ void writeAtomically(const fs::path& path, const char* format, const OIIO::Image
     }
     if (!out->close()) fail(out->geterror());
   }
-  syncFile(tmp);
+  // Flushed before the rename so a crash cannot leave the new name pointing at a file whose
+  // data never arrived; a full disk often shows only here.
+  try {
+    syncFile(tmp);
+  } catch (const OutputError& e) {
+    fail(e.what());
+  }
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) fail("cannot move the written file into place: " + ec.message());

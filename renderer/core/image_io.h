@@ -32,6 +32,13 @@ class ImageIoError : public std::runtime_error {
   std::filesystem::path path_;
 };
 
+// A write that failed in the file system (full disk, read-only or missing folder): an
+// environment problem, where the other ImageIoErrors may be bad input.
+class ImageWriteError : public ImageIoError {
+ public:
+  using ImageIoError::ImageIoError;
+};
+
 // Writes every channel (1 to 4; named R, G, B, A in that order) as half-float OpenEXR with
 // lossless ZIP compression. Values are rounded with floatToHalfBits, so a later readExr gives
 // back exactly halfRound() of each sample. Atomic: the data goes to a temporary file in the same

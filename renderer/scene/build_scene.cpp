@@ -1,5 +1,6 @@
 #include "scene/build_scene.h"
 
+#include "core/input_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural.h"
 #include "scene/scene_error.h"
@@ -20,6 +21,12 @@ std::filesystem::path resolve(const spec::CaseSpec& spec, const std::string& key
     throw SceneError(spec.file, key + ": '" + path +
                                     "' is not a relative path inside the case's folder; move the "
                                     "asset under the case's folder and give its relative path");
+  // The lexical rule above gives the clearer message; this one also sees symbolic links.
+  try {
+    containedRealPath(spec.file.parent_path(), spec.file.parent_path() / p, key);
+  } catch (const InputFileError& e) {
+    throw SceneError(spec.file, e.what());
+  }
   return spec.file.parent_path() / p;
 }
 

@@ -59,6 +59,57 @@ float component(const uint8_t* p, int type, bool normalized) {
   }
 }
 
+// Where an accessor's elements lie, after checking with overflow-free arithmetic that
+// every byte it reads is inside its buffer. base is null for an accessor without a view.
+struct AccessorSpan {
+  const uint8_t* base = nullptr;
+  size_t stride = 0;
+  size_t count = 0;
+};
+
+AccessorSpan checkSpan(const fs::path& file, const tinygltf::Model& model,
+                       const tinygltf::Accessor& a, const std::string& name, int comps) {
+  AccessorSpan span;
+  span.count = a.count;
+  if (a.bufferView < 0) {
+    // Nothing in the file backs the zeros, so the count alone must be sane.
+    if (a.count > kMaxUnbackedElements)
+      fail(file, name + " has count " + std::to_string(a.count) +
+                     " without a bufferView (all zeros); at most " +
+                     std::to_string(kMaxUnbackedElements) + " are accepted, the file is corrupt");
+    return span;
+  }
+  const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+  if (csize <= 0) fail(file, name + " has an invalid component type");
+  if (size_t(a.bufferView) >= model.bufferViews.size() ||
+      size_t(model.bufferViews[size_t(a.bufferView)].buffer) >= model.buffers.size())
+    fail(file, name + " refers to a missing buffer view or buffer; the file is corrupt");
+  const tinygltf::BufferView& v = model.bufferViews[size_t(a.bufferView)];
+  const size_t have = model.buffers[size_t(v.buffer)].data.size();
+  const std::string corrupt = "; the file is truncated or corrupt, re-export it";
+  if (v.byteOffset > have || v.byteLength > have - v.byteOffset)
+    fail(file, name + " uses bufferViews[" + std::to_string(a.bufferView) + "] (byteOffset " +
+                   std::to_string(v.byteOffset) + ", byteLength " + std::to_string(v.byteLength) +
+                   "), which ends past its buffer of " + std::to_string(have) + " bytes" + corrupt);
+  const size_t elem = size_t(csize) * size_t(comps);
+  const size_t stride = v.byteStride ? v.byteStride : elem;
+  if (stride < elem)
+    fail(file, name + " has a byteStride of " + std::to_string(stride) +
+                   ", smaller than its element of " + std::to_string(elem) + " bytes" + corrupt);
+  if (a.count == 0) return span;
+  // byteOffset + stride * (count - 1) + elem <= byteLength, rearranged so nothing overflows.
+  const bool fits = a.byteOffset <= v.byteLength && elem <= v.byteLength - a.byteOffset &&
+                    a.count - 1 <= (v.byteLength - a.byteOffset - elem) / stride;
+  if (!fits)
+    fail(file, name + " (count " + std::to_string(a.count) + ", byteOffset " +
+                   std::to_string(a.byteOffset) + ") reads past the end of bufferViews[" +
+                   std::to_string(a.bufferView) + "] of " + std::to_string(v.byteLength) +
+                   " bytes" + corrupt);
+  span.base = model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset;
+  span.stride = stride;
+  return span;
+}
+
 }  // namespace
 
 std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model& model, int index,
@@ -73,24 +124,13 @@ std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model&
          name + " has " + std::to_string(comps) + " components, expected " + std::to_string(want));
   if (a.sparse.isSparse)
     fail(file, name + " is sparse, which is not supported; re-export without sparse accessors");
-  std::vector<float> out(a.count * size_t(comps), 0.0f);
-  if (a.bufferView < 0) return out;  // all zeros, as the spec defines
+  const AccessorSpan span = checkSpan(file, model, a, name, comps);
+  std::vector<float> out(span.count * size_t(comps), 0.0f);
+  if (!span.base) return out;  // no buffer view: all zeros, as the spec defines
   const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-  if (csize <= 0) fail(file, name + " has an invalid component type");
-  if (size_t(a.bufferView) >= model.bufferViews.size() ||
-      size_t(model.bufferViews[size_t(a.bufferView)].buffer) >= model.buffers.size())
-    fail(file, name + " refers to a missing buffer view or buffer; the file is corrupt");
-  const tinygltf::BufferView& v = model.bufferViews[size_t(a.bufferView)];
-  const tinygltf::Buffer& b = model.buffers[size_t(v.buffer)];
-  const size_t elem = size_t(csize) * size_t(comps);
-  const size_t stride = v.byteStride ? v.byteStride : elem;
-  if (a.count > 0 && (a.byteOffset + stride * (a.count - 1) + elem > v.byteLength ||
-                      v.byteOffset + v.byteLength > b.data.size()))
-    fail(
-        file,
-        name + " reads past the end of its buffer; the file is truncated or corrupt, re-export it");
-  const uint8_t* base = b.data.data() + v.byteOffset + a.byteOffset;
-  for (size_t i = 0; i < a.count; ++i)
+  const uint8_t* base = span.base;
+  const size_t stride = span.stride;
+  for (size_t i = 0; i < span.count; ++i)
     for (int c = 0; c < comps; ++c)
       out[i * size_t(comps) + size_t(c)] =
           component(base + i * stride + size_t(c) * size_t(csize), a.componentType, a.normalized);
@@ -110,11 +150,9 @@ std::vector<uint32_t> readGltfIndices(const fs::path& file, const tinygltf::Mode
   // Floats hold integers exactly only up to 2^24; read 32-bit indices directly.
   std::vector<uint32_t> out(f.size());
   if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && a.bufferView >= 0) {
-    // readGltfAccessor has checked the view, the buffer and the bounds.
-    const tinygltf::BufferView& v = model.bufferViews[size_t(a.bufferView)];
-    const uint8_t* base = model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset;
-    const size_t stride = v.byteStride ? v.byteStride : 4;
-    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], base + i * stride, 4);
+    // readGltfAccessor has checked the view, the buffer and the bounds already.
+    const AccessorSpan span = checkSpan(file, model, a, what + " indices", 1);
+    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], span.base + i * span.stride, 4);
   } else {
     for (size_t i = 0; i < out.size(); ++i) out[i] = uint32_t(f[i]);
   }

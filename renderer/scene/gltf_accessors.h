@@ -11,6 +11,10 @@
 
 namespace taa::scene {
 
+// Elements an accessor without a bufferView (all zeros) may declare: nothing in the file
+// backs them, so without a bound 3 bytes of JSON could ask for gigabytes.
+inline constexpr size_t kMaxUnbackedElements = size_t(1) << 24;
+
 // Reads accessor `index` as floats, `components` per element (integer components are
 // normalised when the accessor says so). Throws SceneError naming `file` and `what`
 // when the accessor is missing, has another shape, is sparse or overruns its buffer.

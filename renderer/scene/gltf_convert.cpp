@@ -33,7 +33,8 @@ class Converter {
   int texture(int index, const std::string& what);
   int material(int index);
   int mesh(int index);
-  void addNode(int index, int parent, Model& model, std::vector<int>& visiting);
+  void addNode(int root, Model& model);
+  void addOneNode(int index, int parent, Model& model);
   void addAnimation(const tinygltf::Animation& a, size_t index, Model& model);
 
   const fs::path& file_;
@@ -49,7 +50,15 @@ int Converter::texture(int index, const std::string& what) {
   if (index < 0 || size_t(index) >= g_.textures.size()) fail(what + " refers to a missing texture");
   const tinygltf::Texture& t = g_.textures[size_t(index)];
   if (t.source < 0) return textures_[index] = -1;  // only an extension's image (e.g. KTX2)
-  const tinygltf::Image& img = g_.images.at(size_t(t.source));
+  const std::string tex = "textures[" + std::to_string(index) + "]";
+  if (size_t(t.source) >= g_.images.size())
+    fail(tex + ".source " + std::to_string(t.source) + " refers to a missing image (the file has " +
+         std::to_string(g_.images.size()) + "); the file is corrupt, re-export it");
+  if (t.sampler >= 0 && size_t(t.sampler) >= g_.samplers.size())
+    fail(tex + ".sampler " + std::to_string(t.sampler) +
+         " refers to a missing sampler (the file has " + std::to_string(g_.samplers.size()) +
+         "); the file is corrupt, re-export it");
+  const tinygltf::Image& img = g_.images[size_t(t.source)];
   const std::string name =
       "images[" + std::to_string(t.source) + "]" + (img.uri.empty() ? "" : " '" + img.uri + "'");
   if (img.image.empty() || img.width <= 0 || img.height <= 0)
@@ -59,6 +68,8 @@ int Converter::texture(int index, const std::string& what) {
     fail(name + " decoded to " + std::to_string(img.component) + " channels of " +
          std::to_string(img.bits) + " bits; convert it to an 8-bit RGB(A) PNG");
   const size_t texels = size_t(img.width) * size_t(img.height) * 4;
+  if (img.image.size() < texels * size_t(img.bits / 8))
+    fail(name + " decoded to fewer bytes than its size needs; the image is corrupt");
   std::vector<uint8_t> rgba(texels);
   if (img.bits == 8) {
     std::copy_n(img.image.begin(), texels, rgba.begin());
@@ -71,7 +82,7 @@ int Converter::texture(int index, const std::string& what) {
   }
   bool repeat = true;
   if (t.sampler >= 0) {
-    const tinygltf::Sampler& sm = g_.samplers.at(size_t(t.sampler));
+    const tinygltf::Sampler& sm = g_.samplers[size_t(t.sampler)];
     // One wrap mode per texture: clamp only when both axes clamp; mirrored repeat repeats.
     repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
                sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
@@ -134,7 +145,7 @@ std::vector<uint32_t> triangleList(int mode, std::vector<uint32_t> idx) {
 
 int Converter::mesh(int index) {
   if (auto it = meshes_.find(index); it != meshes_.end()) return it->second;
-  const tinygltf::Mesh& gm = g_.meshes.at(size_t(index));
+  const tinygltf::Mesh& gm = g_.meshes[size_t(index)];  // the caller checked the index
   Mesh out;
   out.name = gm.name.empty() ? "mesh" + std::to_string(index) : gm.name;
   out.firstVertex = uint32_t(s_.vertices.size());
@@ -251,10 +262,25 @@ int Converter::mesh(int index) {
 
 namespace {
 
-void Converter::addNode(int index, int parent, Model& model, std::vector<int>& visiting) {
+// Depth-first with an explicit stack, parents before children in file order: a chain of
+// 100,000 nodes must not exhaust the call stack.
+void Converter::addNode(int root, Model& model) {
+  std::vector<std::pair<int, int>> pending{{root, -1}};  // (glTF index, parent's model index)
+  while (!pending.empty()) {
+    const auto [index, parent] = pending.back();
+    pending.pop_back();
+    addOneNode(index, parent, model);
+    const std::vector<int>& children = g_.nodes[size_t(index)].children;
+    const int self = int(model.nodes.size()) - 1;
+    for (auto c = children.rbegin(); c != children.rend(); ++c) pending.emplace_back(*c, self);
+  }
+}
+
+void Converter::addOneNode(int index, int parent, Model& model) {
   if (index < 0 || size_t(index) >= g_.nodes.size())
     fail("a scene or node refers to missing nodes[" + std::to_string(index) + "]");
-  if (std::find(visiting.begin(), visiting.end(), index) != visiting.end() || nodes_.count(index))
+  // A node is recorded before its children are visited, so a cycle meets it again too.
+  if (nodes_.count(index))
     fail("nodes[" + std::to_string(index) +
          "] is reached twice (a cycle or shared child); the hierarchy must be a tree");
   const tinygltf::Node& gn = g_.nodes[size_t(index)];
@@ -287,12 +313,8 @@ void Converter::addNode(int index, int parent, Model& model, std::vector<int>& v
       fail("nodes[" + std::to_string(index) + "] refers to a missing camera");
     n.camera = gn.camera;
   }
-  const int self = int(model.nodes.size());
-  nodes_[index] = self;
+  nodes_[index] = int(model.nodes.size());
   model.nodes.push_back(std::move(n));
-  visiting.push_back(index);
-  for (int child : gn.children) addNode(child, self, model, visiting);
-  visiting.pop_back();
 }
 
 void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& model) {
@@ -386,8 +408,7 @@ Model Converter::run() {
     }
     model.cameras.push_back(cam);
   }
-  std::vector<int> visiting;
-  for (int r : roots) addNode(r, -1, model, visiting);
+  for (int r : roots) addNode(r, model);
   if (model.nodes.empty())
     fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
   model.skins = readGltfSkins(file_, g_, nodes_);

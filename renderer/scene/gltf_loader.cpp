@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <fstream>
 
+#include "core/input_file.h"
+#include "core/json_guard.h"
 #include "scene/gltf_convert.h"
+#include "scene/gltf_images.h"
 #include "scene/scene_error.h"
 
 namespace taa::scene {
@@ -38,20 +41,11 @@ struct Jail {
   }
 };
 
-// Whole-file read by size: istreambuf_iterator trips GCC 12's -Wnull-dereference.
-bool slurp(const fs::path& path, std::vector<uint8_t>& out) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return false;
-  const std::streamoff size = in.tellg();
-  if (size < 0) return false;
-  out.resize(size_t(size));
-  in.seekg(0);
-  return size == 0 || bool(in.read(reinterpret_cast<char*>(out.data()), size));
-}
-
+// Anything that exists counts, so a FIFO or directory reaches jailRead and its refusal
+// names what it is instead of "not found".
 bool jailExists(const std::string& path, void* user) {
   std::error_code ec;
-  return static_cast<Jail*>(user)->contains(path) && fs::is_regular_file(path, ec);
+  return static_cast<Jail*>(user)->contains(path) && fs::exists(path, ec);
 }
 
 std::string jailExpand(const std::string& path, void*) {
@@ -64,8 +58,10 @@ bool jailRead(std::vector<unsigned char>* out, std::string* err, const std::stri
     if (err) *err += "refused to read '" + path + "': outside the glTF's folder\n";
     return false;
   }
-  if (!slurp(path, *out)) {
-    if (err) *err += "cannot read '" + path + "'\n";
+  try {
+    *out = readInputBytes(path, kMaxSceneFileBytes);
+  } catch (const InputFileError& e) {
+    if (err) *err += std::string(e.what()) + "\n";
     return false;
   }
   return true;
@@ -78,13 +74,11 @@ bool jailWrite(std::string* err, const std::string& path, const std::vector<unsi
 }
 
 std::vector<uint8_t> readFile(const fs::path& file) {
-  std::vector<uint8_t> bytes;
-  if (!slurp(file, bytes))
-    throw SceneError(
-        file,
-        "cannot read the glTF file; check that it exists and that the path is relative "
-        "to the case file");
-  return bytes;
+  try {
+    return readInputBytes(file, kMaxSceneFileBytes);
+  } catch (const InputFileError& e) {
+    throw SceneError(e.what());
+  }
 }
 
 std::string trimmed(std::string s) {
@@ -102,6 +96,8 @@ Model loadGltf(const fs::path& file, Scene& scene) {
       bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
   std::string json =
       binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
+  if (const std::string problem = jsonStructureProblem(json); !problem.empty())
+    throw SceneError(file, problem);
   checkGltfUris(file, json);
   const std::string note = checkGltfExtensions(file, json);
   if (!note.empty() && std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
@@ -115,6 +111,8 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&jailExists, &jailExpand, &jailRead, &jailWrite, &jail});
   tinygltf::Model gltf;
+  ImageLoadState images{&gltf, 0};
+  loader.SetImageLoader(&loadCheckedImage, &images);
   std::string err, warn;
   const std::string base = jail.root.string();
   const bool ok = binary

@@ -92,6 +92,15 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
   const uint32_t length = readU32(bytes, 12);
   if (readU32(bytes, 16) != 0x4E4F534Au || size_t(length) + 20 > bytes.size())  // "JSON"
     throw SceneError(file, "GLB's first chunk is not a complete JSON chunk" + fix);
+  // tinygltf 2.7 checks the BIN chunk's length without its 8-byte header and would read
+  // up to 8 bytes past the file; check the whole layout here (all in 64 bits).
+  const uint64_t total = readU32(bytes, 8), binAt = 20 + uint64_t(length);
+  if (total > bytes.size() || total < binAt)
+    throw SceneError(file, "GLB header gives a total length of " + std::to_string(total) +
+                               " bytes, but the file has " + std::to_string(bytes.size()) +
+                               " and its JSON chunk ends at byte " + std::to_string(binAt) + fix);
+  if (binAt < total && (binAt + 8 > total || binAt + 8 + readU32(bytes, size_t(binAt)) > total))
+    throw SceneError(file, "GLB's BIN chunk runs past the end of the file" + fix);
   return std::string(reinterpret_cast<const char*>(bytes.data() + 20), length);
 }
 

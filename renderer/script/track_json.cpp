@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/json_guard.h"
+
 namespace taa::script {
 
 namespace {
@@ -198,6 +200,8 @@ std::string framesText(const RawTrack& track, bool timed, const std::string& ind
 }  // namespace
 
 TrackFile parseJsonTrack(const std::string& text, const std::string& file) {
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw TrackError(file + ": " + problem);
   Json root;
   try {
     root = Json::parse(text);

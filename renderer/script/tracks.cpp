@@ -4,10 +4,9 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "core/input_file.h"
 #include "script/timing.h"
 #include "script/track_csv.h"
 #include "script/track_gltf.h"
@@ -29,6 +28,12 @@ fs::path resolve(const spec::CaseSpec& spec, const std::string& path) {
     throw TrackError("'" + path +
                      "' is not a relative path inside the case's folder; move the track under "
                      "the case's folder and give its relative path");
+  // The lexical rule above gives the clearer message; this one also sees symbolic links.
+  try {
+    containedRealPath(spec.file.parent_path(), spec.file.parent_path() / p, "the track");
+  } catch (const InputFileError& e) {
+    throw TrackError(e.what());
+  }
   return spec.file.parent_path() / p;
 }
 
@@ -39,14 +44,11 @@ std::string extension(const fs::path& p) {
 }
 
 std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw TrackError(file.string() +
-                     ": cannot read the track file; check that it exists and "
-                     "that the path is relative to the case file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  try {
+    return readInputFile(file, kMaxTrackFileBytes);
+  } catch (const InputFileError& e) {
+    throw TrackError(e.what());
+  }
 }
 
 // JSON files parsed once per load, though the camera and several movers may share one.

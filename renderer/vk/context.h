@@ -15,7 +15,7 @@ struct ContextOptions {
   // Case-insensitive substring of the device name; empty: $TAA_DEVICE, else lavapipe.
   std::string device;
   bool validate = false;  // Khronos validation layer; messages are counted and printed
-  // Mesa's shader cache goes here so results never depend on ~/.cache; empty disables it.
+  // Mesa's shader cache folder (see shaderCacheDir() in vk/shader_cache.h); empty disables it.
   std::filesystem::path shaderCacheDir;
 };
 

@@ -192,7 +192,7 @@ TEST(TrackBake, CommandWritesTheTrackAndRejectsBadCases) {
   const auto bad = test::runHarness("bake " + (dir / "bad.json").string() + " --out " +
                                     (dir / "bad.track.json").string());
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
-  EXPECT_TRUE(test::contains(bad.output, "nothing.csv: cannot read the track file"));
+  EXPECT_TRUE(test::contains(bad.output, "nothing.csv: the track does not exist"));
   EXPECT_EQ(test::runHarness("bake " + (dir / "busy.json").string()).exitCode, 2);
 }
 

@@ -61,7 +61,7 @@ TEST(TrackCase, PathsStayInsideTheCaseFolder) {
   EXPECT_TRUE(contains(problemsOf(R"({"movers": [{"track": "tracks/camera_anim.gltf"}]})"),
                        "movers[0].track: 'tracks/camera_anim.gltf' is not a track file"));
   EXPECT_TRUE(contains(problemsOf(R"({"camera": {"track": "tracks/missing.csv"}})"),
-                       "missing.csv: cannot read the track file"));
+                       "missing.csv: the track does not exist"));
 }
 
 TEST(TrackCase, UnloadedTracksAreALogicErrorNotASilentScript) {

@@ -1,0 +1,40 @@
+// The one way the harness reads a file an input names (a case, a track, a glTF scene and
+// the buffers and images it refers to): a regular file of bounded size, opened once, and,
+// when a root folder is given, found inside that folder after every symbolic link is
+// resolved. A FIFO, device or directory is refused before a byte is read, so such a path
+// can neither hang the harness nor feed it endless data. Messages name the file and never
+// quote its content.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace taa {
+
+// Size limits, documented in docs/trust.md.
+inline constexpr uint64_t kMaxCaseFileBytes = uint64_t(4) << 20;     // 4 MiB
+inline constexpr uint64_t kMaxTrackFileBytes = uint64_t(256) << 20;  // 256 MiB
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(1)
+                                               << 30;  // 1 GiB (.gltf, .glb, .bin, images)
+
+// Refusal of an input file. what() starts with the file's path and ends with the fix.
+class InputFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The real path of `file` (symbolic links resolved) after checking that it lies inside the
+// real path of `root`. Throws InputFileError when it does not exist or leads outside; `what`
+// says which input it is ("the case's scene.gltf") for the message.
+std::filesystem::path containedRealPath(const std::filesystem::path& root,
+                                        const std::filesystem::path& file, const std::string& what);
+
+// The whole content of `file`, which must be a regular file of at most `maxBytes` bytes.
+// Throws InputFileError otherwise (missing, unreadable, FIFO, device, directory, too big).
+std::string readInputFile(const std::filesystem::path& file, uint64_t maxBytes);
+std::vector<uint8_t> readInputBytes(const std::filesystem::path& file, uint64_t maxBytes);
+
+}  // namespace taa

@@ -1,0 +1,80 @@
+#include "core/output_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+void syncPath(const fs::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0)
+    throw OutputError(path, std::string("cannot open it to flush: ") + std::strerror(errno));
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0)
+    throw OutputError(path, std::string("flushing to disk failed: ") + std::strerror(err));
+}
+
+}  // namespace
+
+void syncFile(const fs::path& file) {
+  syncPath(file, O_RDONLY);
+}
+
+void syncDirectory(const fs::path& dir) {
+  syncPath(dir.empty() ? fs::path(".") : dir, O_RDONLY | O_DIRECTORY);
+}
+
+void writeFileAtomically(const fs::path& file, std::string_view content) {
+  static std::atomic<unsigned> counter{0};
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  const fs::path tmp = dir / ("." + file.filename().string() + ".tmp-" +
+                              std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  auto fail = [&](const std::string& why) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw OutputError(file, why);
+  };
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0)
+    fail(std::string("cannot create a file in ") + dir.string() + ": " + std::strerror(errno));
+  size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      fail(std::strerror(err));
+    }
+    done += size_t(n);
+  }
+  // Flushed before the rename, so a crash cannot leave the name pointing at lost data.
+  const int synced = ::fsync(fd), syncErr = errno;
+  const int closed = ::close(fd), closeErr = errno;
+  if (synced != 0) fail(std::string("flushing to disk failed: ") + std::strerror(syncErr));
+  if (closed != 0) fail(std::strerror(closeErr));
+  struct stat st {};
+  if (::stat(tmp.c_str(), &st) != 0 || uint64_t(st.st_size) != content.size())
+    fail("the written file does not have the " + std::to_string(content.size()) + " bytes written");
+  std::error_code ec;
+  fs::rename(tmp, file, ec);
+  if (ec) fail("cannot move the written file into place: " + ec.message());
+}
+
+void createOutputDirectory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw OutputError(dir, "cannot create the folder: " + ec.message());
+}
+
+}  // namespace taa

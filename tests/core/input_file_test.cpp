@@ -1,0 +1,117 @@
+#include "core/input_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/json_guard.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(TAA_TEST_OUT) / "input_file" / info->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string refusal(const fs::path& file, uint64_t limit = kMaxCaseFileBytes) {
+  try {
+    readInputFile(file, limit);
+  } catch (const InputFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputFile, ReadsARegularFileWhole) {
+  const fs::path f = scratch() / "a.json";
+  std::ofstream(f, std::ios::binary) << std::string("{\"x\": 1}\n\0tail", 14);
+  EXPECT_EQ(readInputFile(f, 100), std::string("{\"x\": 1}\n\0tail", 14));
+}
+
+TEST(InputFile, RefusesWhatIsNotARegularFileWithoutReadingIt) {
+  const fs::path dir = scratch();
+  ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir / "zero.json");
+  fs::create_directories(dir / "folder.gltf");
+  // Each would hang, never end or fail with bad_alloc if it were read.
+  EXPECT_NE(refusal(dir / "fifo.json").find("fifo.json: is a FIFO"), std::string::npos);
+  EXPECT_NE(refusal(dir / "zero.json").find("zero.json: is a device"), std::string::npos);
+  EXPECT_NE(refusal(dir / "folder.gltf").find("folder.gltf: is a directory"), std::string::npos);
+  EXPECT_NE(refusal(dir / "missing.json").find("missing.json: does not exist"), std::string::npos);
+}
+
+TEST(InputFile, RefusesAFileOverItsLimitBeforeReading) {
+  const fs::path f = scratch() / "big.csv";
+  std::ofstream(f) << std::string(1000, 'x');
+  EXPECT_NE(refusal(f, 999).find("big.csv: is 1000 bytes, over the limit"), std::string::npos);
+  EXPECT_EQ(readInputFile(f, 1000).size(), 1000u);
+}
+
+TEST(InputFile, ContainmentSeesThroughSymbolicLinks) {
+  const fs::path dir = scratch();
+  fs::create_directories(dir / "case" / "sub");
+  std::ofstream(dir / "outside.json") << "secret";
+  std::ofstream(dir / "case" / "sub" / "inside.json") << "{}";
+  fs::create_symlink("../outside.json", dir / "case" / "escape.json");
+  fs::create_symlink("sub/inside.json", dir / "case" / "alias.json");
+  fs::create_symlink(dir, dir / "case" / "up");
+  fs::create_symlink("/etc/passwd", dir / "case" / "passwd.json");
+  EXPECT_EQ(containedRealPath(dir / "case", dir / "case" / "alias.json", "the track"),
+            fs::canonical(dir / "case" / "sub" / "inside.json"));
+  for (const char* name : {"escape.json", "up/outside.json", "passwd.json"}) {
+    SCOPED_TRACE(name);
+    try {
+      containedRealPath(dir / "case", dir / "case" / name, "the track");
+      ADD_FAILURE() << "accepted";
+    } catch (const InputFileError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(name), std::string::npos) << msg;
+      EXPECT_NE(msg.find("outside"), std::string::npos) << msg;
+      EXPECT_EQ(msg.find("root:"), std::string::npos) << "content echoed: " << msg;
+      EXPECT_EQ(msg.find("secret"), std::string::npos) << "content echoed: " << msg;
+    }
+  }
+}
+
+TEST(JsonGuard, AcceptsOrdinaryJson) {
+  EXPECT_EQ(jsonStructureProblem(R"({"a": {"a": [1, {"a": 2}]}, "b": "{\"a\": 1, \"a\": 2}"})"),
+            "");
+  EXPECT_EQ(jsonStructureProblem("[[[[1]]]]", 4), "");
+}
+
+TEST(JsonGuard, DuplicateKeysNameBothPlaces) {
+  const std::string p =
+      jsonStructureProblem("{\n  \"render\": {\"width\": 64},\n  \"render\": {}\n}");
+  EXPECT_NE(p.find("line 3, column 3: key \"render\" appears twice"), std::string::npos) << p;
+  EXPECT_NE(p.find("first at line 2, column 3"), std::string::npos) << p;
+  // Escapes spell the same key: the parser would merge them too.
+  EXPECT_NE(jsonStructureProblem(R"({"ab": 1, "\u0061b": 2})").find("\"ab\" appears twice"),
+            std::string::npos);
+  EXPECT_NE(jsonStructureProblem(R"([{"x": [{}], "y": {"z": 1, "z": 2}}])").find("\"z\""),
+            std::string::npos);
+}
+
+TEST(JsonGuard, BoundsNestingWithoutRecursion) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const std::string p = jsonStructureProblem(deep);
+  EXPECT_NE(p.find("nested more than 256 levels"), std::string::npos) << p;
+  EXPECT_EQ(jsonStructureProblem(std::string(256, '[') + std::string(256, ']')), "");
+  // Brackets inside strings are text, not nesting.
+  EXPECT_EQ(jsonStructureProblem("[\"" + std::string(1000, '[') + "\"]"), "");
+}
+
+TEST(JsonGuard, MalformedTextEndsTheScanWithoutAProblem) {
+  for (const char* text : {"{\"a", "{\"a\\", "\"\\u12", "}}]]", "{\"a\": 1,,, \"a\"", ""})
+    EXPECT_NO_THROW(jsonStructureProblem(text)) << text;
+}
+
+}  // namespace
+}  // namespace taa

@@ -1,0 +1,65 @@
+// One fuzz input through each reader, shared by the libFuzzer targets (fuzz_*.cpp) and by
+// fuzz_regressions_test.cpp, which replays the checked-in corpus in every build. An input
+// must be read or refused with the reader's own error (bad input, exit 2); any other
+// exception, a crash, a hang or a sanitizer report is a bug.
+#pragma once
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "case/case_error.h"
+#include "case/case_loader.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene.h"
+#include "scene/scene_error.h"
+#include "script/track.h"
+#include "script/track_csv.h"
+#include "script/track_json.h"
+
+namespace taa::fuzz {
+
+// The case reader. The folder does not exist, so references to scenes and tracks are
+// refused as missing instead of reading whatever the input names.
+inline void readCase(const std::string& text) {
+  try {
+    cases::parseCase(text, "/nonexistent-taa-fuzz/case.json");
+  } catch (const cases::CaseError&) {
+  }
+}
+
+// The JSON track reader for input starting with '{', else the CSV one.
+inline void readTrack(const std::string& text) {
+  try {
+    if (!text.empty() && text[0] == '{') {
+      script::parseJsonTrack(text, "fuzz.track.json");
+    } else {
+      script::checkTrack(script::parseCsvTrack(text, "fuzz.csv", script::TrackSubject::Camera));
+    }
+  } catch (const script::TrackError&) {
+  }
+}
+
+// The glTF loader (.glb when the input has the GLB magic), posed at t = 0.5 s. The loader
+// reads files, so the input goes to a private folder first.
+inline void readGltf(const std::string& bytes) {
+  static const std::filesystem::path dir = [] {
+    const auto d =
+        std::filesystem::temp_directory_path() / ("taa-fuzz-gltf-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  const bool glb = bytes.rfind("glTF", 0) == 0;
+  const std::filesystem::path file = dir / (glb ? "in.glb" : "in.gltf");
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  scene::Scene s;
+  try {
+    s.models.push_back(scene::loadGltf(file, s));
+    scene::poseModel(s, 0, 0.5);
+  } catch (const scene::SceneError&) {
+  }
+}
+
+}  // namespace taa::fuzz

@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Writes the hand-made hostile inputs of corpus/ (run from anywhere; rewrites them).
+
+Each file states one defect that once crashed, hung or over-allocated a reader
+(issue 14): overflowing accessor counts and offsets, buffer views past their buffer,
+lying image headers, out-of-range references, deep nesting, duplicate keys. Inputs a
+fuzzer finds are copied into corpus/ as they are, next to these.
+"""
+import base64
+import json
+import pathlib
+import struct
+
+HERE = pathlib.Path(__file__).resolve().parent / "corpus"
+
+
+def data_uri(raw: bytes) -> str:
+    return "data:application/octet-stream;base64," + base64.b64encode(raw).decode()
+
+
+TRIANGLE = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+PNG_HEADER = lambda w, h: (b"\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR" + struct.pack(">II", w, h)
+                           + b"\x08\x06\x00\x00\x00" + b"\x00" * 4)
+
+
+def gltf(accessors, views, extra_bin=b"", **extra):
+    doc = {
+        "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "buffers": [{"uri": data_uri(TRIANGLE + extra_bin), "byteLength": len(TRIANGLE) + len(extra_bin)}],
+        "bufferViews": views,
+        "accessors": accessors,
+    }
+    doc.update(extra)
+    return json.dumps(doc).encode()
+
+
+def vec3(count, offset=0, view=0):
+    return {"bufferView": view, "byteOffset": offset, "componentType": 5126, "type": "VEC3", "count": count}
+
+
+VIEW = [{"buffer": 0, "byteLength": 36}]
+
+
+def textured(image: bytes, view: dict, texture=None):
+    doc = json.loads(gltf([vec3(3)], VIEW + [view], image))
+    doc["meshes"][0]["primitives"][0]["material"] = 0
+    doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    doc["textures"] = [texture or {"source": 0}]
+    doc["images"] = [{"bufferView": 1, "mimeType": "image/png"}]
+    return json.dumps(doc).encode()
+
+
+def glb_bin_past_end():
+    body = b'{"asset": {"version": "2.0"}, "buffers": [{"byteLength": 24}]}'
+    body += b" " * (-len(body) % 4)
+    data = b"\0" * 16
+    total = 12 + 8 + len(body) + 8 + len(data)
+    return (b"glTF" + struct.pack("<II", 2, total) + struct.pack("<I", len(body)) + b"JSON" + body
+            + struct.pack("<I", len(data) + 8) + b"BIN\0" + data)
+
+
+def main():
+    g = {
+        "accessor_count_wraps.gltf": gltf([vec3(1537228672809129302)], VIEW),
+        "accessor_offset_wraps.gltf": gltf([vec3(3, 18446744073709551600)], VIEW),
+        "accessor_count_2_32.gltf": gltf([vec3(4294967296)], VIEW),
+        "view_offset_plus_length_wraps.gltf": gltf(
+            [vec3(3)], [{"buffer": 0, "byteOffset": 9223372036854775808, "byteLength": 9223372036854775808}]),
+        "unbacked_count_2_31.gltf": gltf([{"componentType": 5126, "type": "VEC3", "count": 2147483648}], VIEW),
+        "stride_below_element.gltf": gltf([vec3(3)], [{"buffer": 0, "byteLength": 36, "byteStride": 4}]),
+        "image_view_past_buffer.gltf": textured(PNG_HEADER(4, 4), {"buffer": 0, "byteOffset": 36, "byteLength": 100000}),
+        "image_header_huge.gltf": textured(PNG_HEADER(100000, 100000), {"buffer": 0, "byteOffset": 36, "byteLength": 33}),
+        "texture_source_missing.gltf": textured(PNG_HEADER(4, 4), {"buffer": 0, "byteOffset": 36, "byteLength": 33},
+                                                {"source": 9}),
+        "texture_sampler_missing.gltf": textured(PNG_HEADER(4, 4), {"buffer": 0, "byteOffset": 36, "byteLength": 33},
+                                                 {"source": 0, "sampler": 4}),
+        "extras_nested_deep.gltf": b'{"asset": {"version": "2.0", "extras": ' + b"[" * 5000 + b"]" * 5000 + b"}}",
+        "duplicate_key.gltf": b'{"asset": {"version": "2.0"}, "nodes": [], "nodes": [{}]}',
+        "node_cycle.gltf": b'{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"children": [0]}]}',
+        "glb_bin_chunk_past_end.glb": glb_bin_past_end(),
+        "glb_chunk_length_huge.glb": b"glTF" + struct.pack("<II", 2, 40) + struct.pack("<I", 0xFFFFFFF0) + b"JSON" + b"{}" + b" " * 18,
+    }
+    c = {
+        "duplicate_key.json": b'{"render": {"width": 64, "width": 128}}',
+        "nested_deep.json": b'{"description": ' + b"[" * 5000 + b"]" * 5000 + b"}",
+        "stereo_too_wide.json": b'{"taa": {"mode": "tscmaa"}, "tscmaa": {"eyes": 2}, "render": {"width": 8192}}',
+        "scene_outside.json": b'{"scene": {"gltf": "../../etc/passwd"}}',
+        "frames_huge.json": b'{"script": {"frames": 18446744073709551615}}',
+    }
+    t = {
+        "duplicate_key.json": b'{"format": "taa-track", "version": 1, "fps": 30, "fps": 60}',
+        "nested_deep.json": b'{"camera": ' + b"[" * 5000 + b"]" * 5000 + b"}",
+        "huge_numbers.csv": b"time,px,py,pz,qx,qy,qz,qw\n1e308,1e308,0,0,0,0,0,1\n1e309,0,0,0,0,0,0,1\n",
+        "ragged.csv": b"time,px,py,pz,qx,qy,qz,qw\n0,0,0\n,,,,,,,,,,,,\n",
+    }
+    for sub, files in (("gltf", g), ("case", c), ("track", t)):
+        (HERE / sub).mkdir(parents=True, exist_ok=True)
+        for name, data in files.items():
+            (HERE / sub / name).write_bytes(data)
+
+
+if __name__ == "__main__":
+    main()

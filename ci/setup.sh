@@ -4,6 +4,11 @@
 # cases/, with results.json, junit.xml and report.html under out/).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# Under sudo, hand build/ and out/ back to the user who asked, so README's second command
+# (ctest, which writes into build/) runs without sudo; also when the main job fails.
+if [ -n "${SUDO_USER:-}" ] && [ "$SUDO_USER" != root ]; then
+  trap 'chown -R "$SUDO_USER": "$root/build" "$root/out" 2>/dev/null || true' EXIT
+fi
 if [ "$(id -u)" = 0 ]; then
   bash "$root/ci/install-deps.sh"
 else

@@ -58,16 +58,16 @@ std::string renderJUnit(const run::RunResults& r) {
         break;
       case run::CaseStatus::Fail:
       case run::CaseStatus::Stale: {
-        auto lines = failureLines(c);
+        const auto lines = failureLines(c);
         // A case-level reason (unusable goldens, no goldens under CI) heads the list.
-        if (!c.message.empty()) lines.insert(lines.begin(), c.message);
+        const std::string body = (c.message.empty() ? std::string() : c.message + "\n") + join(lines);
         const bool stale = c.status == run::CaseStatus::Stale;
         const std::string summary = !firstLine.empty() ? firstLine
                                     : lines.empty()
                                         ? std::string(stale ? "golden is stale" : "failed")
                                         : std::to_string(lines.size()) + " failed checks";
         s += "<failure type=\"" + std::string(stale ? "stale" : "golden") + "\" message=\"" +
-             escapeMarkup(summary) + "\">" + escapeMarkup(join(lines)) + "</failure>\n";
+             escapeMarkup(summary) + "\">" + escapeMarkup(body) + "</failure>\n";
         break;
       }
       case run::CaseStatus::Error:

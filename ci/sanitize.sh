@@ -7,8 +7,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
 bash ci/asan-build.sh taa_tests
-# Suites of test files that render, with the helper headers they include.
-gpu='support/(gpu|effects|gpu_resolve|process)\.h|post_test_util\.h|tscmaa_test_util\.h|TAA_HARNESS_BIN|chromium'
+# Suites of test files that render or run the harness, by the helper headers they include.
+gpu='support/(gpu|effects|gpu_resolve|process)\.h|post_test_util\.h|cli_fixture\.h|tscmaa_test_util\.h|TAA_HARNESS_BIN|chromium'
 exclude=$(grep -rlE "$gpu" --include='*_test.cpp' tests |
   xargs grep -hoE '^TEST(_F|_P)?\(\s*[A-Za-z0-9_]+' | sed -E 's/^TEST(_F|_P)?\(\s*//' | sort -u |
   sed -E 's|(.*)|\1.*:*/\1.*|' | paste -sd: -)

@@ -21,6 +21,41 @@ nlohmann::json blessJson(const BlessRecord& b) { return {{"date", b.date}, {"com
 BlessRecord blessFrom(const nlohmann::json& j) {
   return {j.value("date", ""), j.value("commit", ""), j.value("reason", "")};
 }
+
+// A long static case renders thousands of identical frames; a run of equal entries is stored once
+// as {"repeat": value, "frames": n} so a 10,000-frame golden stays a few kilobytes.
+constexpr size_t kMinManifestRun = 3;
+constexpr size_t kMaxManifestFrames = size_t(1) << 24;
+
+nlohmann::json runLengthJson(const std::vector<std::string>& values) {
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t i = 0; i < values.size();) {
+    size_t end = i + 1;
+    while (end < values.size() && values[end] == values[i]) ++end;
+    if (end - i >= kMinManifestRun)
+      out.push_back({{"repeat", values[i]}, {"frames", end - i}});
+    else
+      for (size_t k = i; k < end; ++k) out.push_back(values[k]);
+    i = end;
+  }
+  return out;
+}
+
+std::vector<std::string> runLengthValues(const nlohmann::json& list, const char* key) {
+  std::vector<std::string> values;
+  for (const auto& entry : list) {
+    if (entry.is_string()) {
+      values.push_back(entry.get<std::string>());
+    } else {
+      const auto frames = entry.at("frames").get<uint64_t>();
+      if (frames == 0 || frames > kMaxManifestFrames - values.size())
+        throw std::out_of_range(std::string(key) + ": a repeat of " + std::to_string(frames) +
+                                " frames is outside 1.." + std::to_string(kMaxManifestFrames) + " in all");
+      values.insert(values.end(), size_t(frames), entry.at("repeat").get<std::string>());
+    }
+  }
+  return values;
+}
 }  // namespace
 
 nlohmann::json Manifest::toJson() const {
@@ -32,8 +67,8 @@ nlohmann::json Manifest::toJson() const {
                       {"reason", bless.reason},
                       {"history", nlohmann::json::array()},
                       {"frames", nlohmann::json::array()},
-                      {"frame_sha256", sequence},
-                      {"frame_signatures", signatures}};
+                      {"frame_sha256", runLengthJson(sequence)},
+                      {"frame_signatures", runLengthJson(signatures)}};
   for (const auto& h : history) j["history"].push_back(blessJson(h));
   for (const auto& f : frames)
     j["frames"].push_back(
@@ -55,10 +90,13 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
                           f.at("width").get<int>(), f.at("height").get<int>()});
     // Absent in manifests blessed before every frame was hashed; the runner reports those.
     if (j.contains("frame_sha256"))
-      m.sequence = j.at("frame_sha256").get<std::vector<std::string>>();
+      m.sequence = runLengthValues(j.at("frame_sha256"), "frame_sha256");
     if (j.contains("frame_signatures"))
-      m.signatures = j.at("frame_signatures").get<std::vector<std::string>>();
+      m.signatures = runLengthValues(j.at("frame_signatures"), "frame_signatures");
   } catch (const nlohmann::json::exception& e) {
+    throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
+                      restoreHint(where.parent_path()));
+  } catch (const std::out_of_range& e) {
     throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
                       restoreHint(where.parent_path()));
   }

@@ -152,5 +152,31 @@ TEST(GoldenStore, ManifestRoundTripKeepsEveryField) {
   EXPECT_EQ(back.environment.fingerprint(), m.environment.fingerprint());
 }
 
+TEST(GoldenStore, RunsOfEqualFrameHashesAreStoredOnceAndExpandExactly) {
+  auto m = manifestFor("runs", {7}, 0.25f);  // frames 0-6 'b', 7 the image, 8-9 'b'
+  m.signatures.assign(m.sequence.size(), "s");
+  m.signatures[9] = "t";
+  const auto j = m.toJson();
+  ASSERT_EQ(j["frame_sha256"].size(), 4u) << j["frame_sha256"];  // run of 7, frame 7, frames 8 and 9
+  EXPECT_EQ(j["frame_sha256"][0]["frames"], 7);
+  EXPECT_EQ(j["frame_sha256"][2], std::string(64, 'b'));  // a run of two stays two strings
+  const auto back = Manifest::fromJson(j, "m.json");
+  EXPECT_EQ(back.sequence, m.sequence);
+  EXPECT_EQ(back.signatures, m.signatures);
+}
+
+TEST(GoldenStore, AHostileRepeatCountIsRefusedByName) {
+  auto j = manifestFor("runs", {7}, 0.25f).toJson();
+  for (const auto& frames : {nlohmann::json(0), nlohmann::json(uint64_t(1) << 40), nlohmann::json(-3)}) {
+    j["frame_sha256"][0]["frames"] = frames;
+    try {
+      Manifest::fromJson(j, "m.json");
+      FAIL() << "accepted a repeat of " << frames;
+    } catch (const GoldenError& e) {
+      EXPECT_NE(std::string(e.what()).find("m.json: malformed golden manifest"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace taa::golden

@@ -120,6 +120,9 @@ int Converter::material(int index) {
       fail(name + ".alphaMode '" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
     m.alphaCutoff = float(gm.alphaCutoff);
     m.doubleSided = gm.doubleSided;
+    std::string note;
+    m.emissive = gltfEmissive(file_, gm, name, note);
+    if (!note.empty()) s_.notes.push_back(file_.string() + ": " + note);
   }
   s_.materials.push_back(m);
   return materials_[index] = int(s_.materials.size()) - 1;

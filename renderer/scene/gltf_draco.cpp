@@ -119,20 +119,18 @@ std::unique_ptr<draco::Mesh> decodeDracoStream(const fs::path& file, const tinyg
     throw SceneError(file, what + ": bufferViews[" + std::to_string(viewIndex) +
                                "] lies outside its buffer; the file is truncated or corrupt");
   draco::DecoderBuffer buffer;
-  buffer.Init(reinterpret_cast<const char*>(g.buffers[size_t(view.buffer)].data.data()) +
-                  view.byteOffset,
-              view.byteLength);
+  buffer.Init(
+      reinterpret_cast<const char*>(g.buffers[size_t(view.buffer)].data.data()) + view.byteOffset,
+      view.byteLength);
   draco::Decoder decoder;
   auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
   if (!decoded.ok())
-    throw SceneError(file, what + ": the Draco stream in bufferViews[" +
-                               std::to_string(viewIndex) + "] does not decode (draco: " +
-                               decoded.status().error_msg_string() +
+    throw SceneError(file, what + ": the Draco stream in bufferViews[" + std::to_string(viewIndex) +
+                               "] does not decode (draco: " + decoded.status().error_msg_string() +
                                "); the file is truncated or corrupt, re-export it");
   std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
   if (!mesh || mesh->num_faces() == 0)
-    throw SceneError(file, what + ": the Draco stream in bufferViews[" +
-                               std::to_string(viewIndex) +
+    throw SceneError(file, what + ": the Draco stream in bufferViews[" + std::to_string(viewIndex) +
                                "] holds no triangles; re-export the mesh without Draco");
   return mesh;
 }
@@ -151,8 +149,9 @@ void decodeDracoPrimitive(const fs::path& file, tinygltf::Model& g, tinygltf::Pr
                                "with EXT_meshopt_compression");
   if (!ext.IsObject() || !ext.Has("bufferView") || !ext.Has("attributes") ||
       !ext.Get("attributes").IsObject())
-    throw SceneError(file, what + " needs a bufferView and an attributes object; the file is "
-                                  "corrupt");
+    throw SceneError(file, what +
+                               " needs a bufferView and an attributes object; the file is "
+                               "corrupt");
   const std::unique_ptr<draco::Mesh> mesh =
       decodeDracoStream(file, g, dracoInt(file, ext.Get("bufferView"), what + ".bufferView"), what);
   const uint32_t points = mesh->num_points();
@@ -171,13 +170,13 @@ void decodeDracoPrimitive(const fs::path& file, tinygltf::Model& g, tinygltf::Pr
         mesh->GetAttributeByUniqueId(uint32_t(dracoInt(file, attributes.Get(name), key)));
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(like.type));
     if (!att)
-      throw SceneError(file, key + " names a Draco attribute the stream does not hold; the file "
-                                   "is corrupt");
+      throw SceneError(file, key +
+                                 " names a Draco attribute the stream does not hold; the file "
+                                 "is corrupt");
     if (comps <= 0 || att->num_components() != comps)
-      throw SceneError(file, key + ": the Draco attribute has " +
-                                 std::to_string(att->num_components()) +
-                                 " components, its accessor " + std::to_string(comps) +
-                                 "; the file is corrupt");
+      throw SceneError(
+          file, key + ": the Draco attribute has " + std::to_string(att->num_components()) +
+                    " components, its accessor " + std::to_string(comps) + "; the file is corrupt");
     if (like.count != points)
       throw SceneError(file, key + ": the Draco stream holds " + std::to_string(points) +
                                  " vertices, accessors[" + std::to_string(slot->second) +
@@ -253,8 +252,9 @@ void decodeDraco(const fs::path& file, tinygltf::Model& g, const DracoIndices& i
       if (prim.extensions.find(kDracoExt) == prim.extensions.end()) continue;
       const auto it = indices.find({int(m), int(p)});
       const int index = it != indices.end() ? it->second : prim.indices;
-      decodeDracoPrimitive(file, g, prim, index,
-                           "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]");
+      decodeDracoPrimitive(
+          file, g, prim, index,
+          "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]");
     }
 }
 

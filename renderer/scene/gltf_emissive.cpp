@@ -38,8 +38,9 @@ glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Materi
   }
   if (factor == glm::vec3(0.0f) || strength == 0.0f) return glm::vec3(0.0f);
   if (m.emissiveTexture.index >= 0) {
-    note = what + " has an emissiveTexture, which the renderer does not sample; its emission "
-                  "is left out";
+    note = what +
+           " has an emissiveTexture, which the renderer does not sample; its emission "
+           "is left out";
     return glm::vec3(0.0f);
   }
   return factor * strength;

@@ -57,10 +57,9 @@ bool gltfHasAnimations(const std::filesystem::path& file) {
 
 const std::vector<std::string>& supportedGltfExtensions() {
   // KHR_mesh_quantization needs nothing beyond the accessor reader's integer formats.
-  static const std::vector<std::string> list = {"EXT_meshopt_compression",
-                                                "KHR_draco_mesh_compression",
-                                                "KHR_materials_emissive_strength",
-                                                "KHR_mesh_quantization", "KHR_texture_transform"};
+  static const std::vector<std::string> list = {
+      "EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_materials_emissive_strength",
+      "KHR_mesh_quantization", "KHR_texture_transform"};
   return list;
 }
 

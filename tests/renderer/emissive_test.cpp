@@ -38,7 +38,8 @@ TEST(Emission, PanelsShowFactorTimesStrengthOnForwardAndDeferredPaths) {
       // RGBA16F targets: half precision, 2^-11 relative.
       const float tolerance = p.rgb[c] * 1e-3f;
       EXPECT_NEAR(forward.at(p.x, 90, c), p.rgb[c], tolerance) << "forward x " << p.x << " c " << c;
-      EXPECT_NEAR(deferred.at(p.x, 90, c), p.rgb[c], tolerance) << "deferred x " << p.x << " c " << c;
+      EXPECT_NEAR(deferred.at(p.x, 90, c), p.rgb[c], tolerance)
+          << "deferred x " << p.x << " c " << c;
     }
 }
 

@@ -119,9 +119,8 @@ fs::path writeDracoGrid(const std::string& name, bool glb, const std::string& da
       {"COLOR_0", {5126, "VEC4"}},  {"JOINTS_0", {5123, "VEC4"}}, {"WEIGHTS_0", {5126, "VEC4"}}};
   for (const auto& [attr, kind] : kinds) {
     attributes[attr] = accessors.size();
-    accessors.push_back({{"componentType", kind.first},
-                         {"count", DracoGrid::kVertices},
-                         {"type", kind.second}});
+    accessors.push_back(
+        {{"componentType", kind.first}, {"count", DracoGrid::kVertices}, {"type", kind.second}});
   }
   if (damage == "count") accessors[0]["count"] = DracoGrid::kVertices + 1;
   accessors.push_back({{"componentType", 5123}, {"count", g.indices.size()}, {"type", "SCALAR"}});

@@ -17,7 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // cases/scenes/emissive.gltf with `change` applied, written to the test output folder.
-fs::path emissiveVariant(const std::string& name, const std::function<void(nlohmann::json&)>& change) {
+fs::path emissiveVariant(const std::string& name,
+                         const std::function<void(nlohmann::json&)>& change) {
   std::ifstream in(testing::assetPath("emissive.gltf"));
   nlohmann::json doc = nlohmann::json::parse(in);
   change(doc);
@@ -46,15 +47,18 @@ TEST(GltfEmissive, BadValuesAreRefusedByKey) {
   } cases[] = {
       {"negative_strength.gltf",
        [](nlohmann::json& d) {
-         d["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -1;
+         d["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
+             -1;
        },
        "materials[0].extensions.KHR_materials_emissive_strength.emissiveStrength"},
       {"text_strength.gltf",
        [](nlohmann::json& d) {
-         d["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = "4";
+         d["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
+             "4";
        },
        "materials[0].extensions.KHR_materials_emissive_strength.emissiveStrength"},
-      {"bright_factor.gltf", [](nlohmann::json& d) { d["materials"][1]["emissiveFactor"][2] = 2.0; },
+      {"bright_factor.gltf",
+       [](nlohmann::json& d) { d["materials"][1]["emissiveFactor"][2] = 2.0; },
        "materials[1].emissiveFactor[2]"},
   };
   for (const auto& c : cases) {
@@ -77,9 +81,10 @@ TEST(GltfEmissive, AnEmissiveTextureIsReportedAndLeavesTheMaterialUnlit) {
     d["materials"][0]["emissiveTexture"] = {{"index", 0}};
     d["textures"] = {{{"source", 0}}};
     // A 1x1 white PNG.
-    d["images"] = {{{"uri",
-                     "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAAC0lEQVR4"
-                     "nGP4DwQACfsD/fteaysAAAAASUVORK5CYII="}}};
+    d["images"] = {
+        {{"uri",
+          "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAAC0lEQVR4"
+          "nGP4DwQACfsD/fteaysAAAAASUVORK5CYII="}}};
   });
   Scene s;
   loadGltf(file, s);
@@ -87,7 +92,8 @@ TEST(GltfEmissive, AnEmissiveTextureIsReportedAndLeavesTheMaterialUnlit) {
   EXPECT_EQ(s.materials[1].emissive, glm::vec3(0.25f, 0.5f, 1.0f));
   ASSERT_EQ(s.notes.size(), 1u);
   EXPECT_NE(s.notes[0].find(file.string()), std::string::npos) << s.notes[0];
-  EXPECT_NE(s.notes[0].find("materials[0] has an emissiveTexture"), std::string::npos) << s.notes[0];
+  EXPECT_NE(s.notes[0].find("materials[0] has an emissiveTexture"), std::string::npos)
+      << s.notes[0];
 }
 
 }  // namespace

@@ -159,8 +159,9 @@ void decodeDracoPrimitive(const fs::path& file, tinygltf::Model& g, tinygltf::Pr
   DracoOutput out(g);
   for (const std::string& name : attributes.Keys()) {
     const std::string key = what + ".attributes." + name;
-    // Exporters list attributes here that the primitive leaves out (Khronos' Draco Box has a
-    // TEXCOORD_0 only here); without an accessor the loader has no use for them.
+    // Exporters list attributes here that the primitive leaves out (glTF-Sample-Models'
+    // Box/glTF-Draco has a TEXCOORD_0 only here); without an accessor the loader has no use for
+    // them.
     const auto slot = prim.attributes.find(name);
     if (slot == prim.attributes.end()) continue;
     if (slot->second < 0 || size_t(slot->second) >= g.accessors.size())

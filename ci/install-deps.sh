@@ -25,6 +25,8 @@ packages=(
   libtinygltf-dev
   # glTF EXT_meshopt_compression decoding (and encoding in its tests).
   libmeshoptimizer-dev
+  # glTF KHR_draco_mesh_compression decoding (and encoding in its tests).
+  libdraco-dev
   googletest
   libgtest-dev
   libbenchmark-dev

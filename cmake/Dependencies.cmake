@@ -8,6 +8,8 @@ find_package(OpenImageIO REQUIRED)
 # compile line; only gltf_meshopt.cpp and its test include the header, so link the file.
 find_library(MESHOPTIMIZER_LIBRARY meshoptimizer REQUIRED)
 find_path(MESHOPTIMIZER_INCLUDE_DIR meshoptimizer.h REQUIRED)
+# glTF KHR_draco_mesh_compression decoding (and encoding in its tests).
+find_package(draco REQUIRED)
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 # Debian's OpenImageIO 2.4.7 exports /usr/include/opencv4 as an include directory

@@ -2,8 +2,8 @@
 // Adaptive ray tracing's trace pass: every pixel the segmentation marked gets
 // kSamples primary rays at fixed stratified sub-pixel positions (un-jittered, like
 // the resolve's output), traced through the CPU-built BVHs and shaded exactly as the
-// raster pass shades (Blinn-Phong, base colour factor times the sRGB texture, alpha
-// test, "over" blending, the same sky). Their average replaces the resolve's output
+// raster pass shades (Blinn-Phong, base colour factor times the sRGB texture and the
+// vertex colour, emission, alpha test, "over" blending, the same sky). Their average replaces the resolve's output
 // at that pixel; since that image is the next frame's history, the traced result
 // also feeds the history. Unmarked pixels are not touched.
 #extension GL_GOOGLE_include_directive : require
@@ -66,8 +66,11 @@ vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {
   return vec4(1.0);
 }
 
-vec4 baseColor(TraceMaterial m, Surface s) {
-  return m.baseColor * sampleTexture(m.texture, s.uv, s.dUvDx, s.dUvDy);
+vec4 baseColor(TraceMaterial m, Surface s, uint tri) {
+  vec4 base = m.baseColor * sampleTexture(m.texture, s.uv, s.dUvDx, s.dUvDy);
+  // As the raster: only meshes with COLOR_0 (an interpolated white is not exactly 1).
+  if (shading[tri].uv2.z != 0.0) base *= s.color;
+  return base;
 }
 
 vec3 traceSample(vec2 pixel) {
@@ -85,9 +88,10 @@ vec3 traceSample(vec2 pixel) {
     afterTri = h.tri;
     TraceMaterial m = materials[triangles[h.tri].material];
     Surface s = surfaceAt(h, r, rx, ry);
-    vec4 base = baseColor(m, s);
+    vec4 base = baseColor(m, s, h.tri);
     if (m.alphaCutoff >= 0.0 && base.a < m.alphaCutoff) continue;  // the raster's discard
     vec3 c = shadeBlinnPhong(base.rgb, s.normal, s.position, frame);
+    if (m.emissive.rgb != vec3(0.0)) c += m.emissive.rgb;
     if (m.blend == 0u) return sum + transmit * c;
     sum += transmit * base.a * c;
     transmit *= 1.0 - base.a;

@@ -1,6 +1,8 @@
 #version 450
 // Deferred path: shade each pixel from the G-buffer (albedo, normal, depth) with
 // the same Blinn-Phong as forward shading; sky pixels (albedo alpha 0) emit albedo.
+// gbuffer.frag left each surface's emission (KHR_materials_emissive_strength) in the
+// colour target, which this pass reads before it overwrites it.
 #extension GL_GOOGLE_include_directive : require
 #include "common/shared.h"
 #include "common/lighting.glsl"
@@ -10,7 +12,7 @@ layout(std140, binding = 0) uniform FrameBlock { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D albedoTex;
 layout(binding = 2) uniform sampler2D normalTex;
 layout(binding = 3) uniform sampler2D depthTex;
-layout(binding = 4, rgba16f) uniform writeonly image2D colorOut;
+layout(binding = 4, rgba16f) uniform image2D colorOut;
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -26,5 +28,8 @@ void main() {
   vec2 ndc = (vec2(p) + 0.5 - frame.jitter.xy) * frame.renderSize.zw * 2.0 - 1.0;
   vec4 world = frame.invViewProjNoJitter * vec4(ndc, depth, 1.0);
   vec3 n = normalize(texelFetch(normalTex, p, 0).xyz);
-  imageStore(colorOut, p, vec4(shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame), 1.0));
+  vec3 c = shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame);
+  vec3 emitted = imageLoad(colorOut, p).rgb;
+  if (emitted != vec3(0.0)) c += emitted;
+  imageStore(colorOut, p, vec4(c, 1.0));
 }

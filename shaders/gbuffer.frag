@@ -54,5 +54,9 @@ void main() {
 #if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0
   outAlbedo = vec4(base.rgb, 1.0);
 #endif
-  outColor = kDeferred ? vec4(0.0) : vec4(shadeBlinnPhong(base.rgb, n, inWorldPos, frame), base.a);
+  // Emission is added only where there is some, so every other pixel stays bit for bit
+  // what it was. The deferred path leaves it in the colour target for the lighting pass.
+  vec3 shaded = shadeBlinnPhong(base.rgb, n, inWorldPos, frame);
+  if (draw.emissive.rgb != vec3(0.0)) shaded += draw.emissive.rgb;
+  outColor = kDeferred ? vec4(draw.emissive.rgb, 0.0) : vec4(shaded, base.a);
 }

@@ -143,6 +143,7 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
     push.alphaCutoff = material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     push.lodBias = lodBias;
     push.baseColor = material.baseColorFactor;
+    push.emissive = glm::vec4(material.emissive, 0.0f);
     vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), &push);
     vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,

@@ -120,6 +120,11 @@ int Converter::material(int index) {
       fail(name + ".alphaMode '" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
     m.alphaCutoff = float(gm.alphaCutoff);
     m.doubleSided = gm.doubleSided;
+    std::string note;
+    m.emissive = gltfEmissive(file_, gm, name, note);
+    note = note.empty() ? "" : file_.string() + ": " + note;
+    if (!note.empty() && std::find(s_.notes.begin(), s_.notes.end(), note) == s_.notes.end())
+      s_.notes.push_back(note);
   }
   s_.materials.push_back(m);
   return materials_[index] = int(s_.materials.size()) - 1;

@@ -39,6 +39,12 @@ std::vector<Skin> readGltfSkins(const std::filesystem::path& file, const tinyglt
 glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
                                const tinygltf::ExtensionMap& extensions, const std::string& what);
 
+// A material's emission (gltf_emissive.cpp): emissiveFactor times
+// KHR_materials_emissive_strength. Throws SceneError for malformed values; a material
+// with an emissive texture gets none and `note` says so.
+glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Material& material,
+                       const std::string& what, std::string& note);
+
 // EXT_meshopt_compression (gltf_meshopt.cpp). Before tinygltf: gives every fallback
 // buffer without a uri an all-zero data URI of its byteLength; returns whether it
 // changed `json`. glbWithJson replaces a GLB's JSON chunk. After tinygltf: decodes every
@@ -46,6 +52,16 @@ glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
 bool fillMeshoptFallbacks(std::string& json);
 std::vector<uint8_t> glbWithJson(const std::vector<uint8_t>& glb, std::string json);
 void decodeMeshopt(const std::filesystem::path& file, tinygltf::Model& gltf);
+
+// KHR_draco_mesh_compression (gltf_draco.cpp). Before tinygltf: takes the "indices" key
+// out of each compressed primitive whose indices accessor has no bufferView (tinygltf
+// refuses those) and returns every compressed primitive's indices accessor, by (mesh,
+// primitive), -1 for none. After tinygltf: decodes each compressed primitive into new
+// accessors and points the primitive at them; throws SceneError naming the primitive.
+using DracoIndices = std::map<std::pair<int, int>, int>;
+DracoIndices detachDracoIndices(std::string& json);
+void decodeDraco(const std::filesystem::path& file, tinygltf::Model& gltf,
+                 const DracoIndices& indices);
 
 // Splits a node matrix (column-major, no shear as glTF requires) into TRS. A negative
 // determinant becomes a negative x scale.

@@ -18,9 +18,6 @@ std::string advice(const std::string& ext) {
   if (ext == "KHR_materials_pbrSpecularGlossiness")
     return "convert the materials to metallic-roughness (glTF-Transform's metalrough command) "
            "and re-export";
-  if (ext == "KHR_draco_mesh_compression")
-    return "re-export without Draco compression, or with EXT_meshopt_compression (gltfpack -cc), "
-           "which is supported";
   return "re-export the file without it";
 }
 
@@ -60,8 +57,9 @@ bool gltfHasAnimations(const std::filesystem::path& file) {
 
 const std::vector<std::string>& supportedGltfExtensions() {
   // KHR_mesh_quantization needs nothing beyond the accessor reader's integer formats.
-  static const std::vector<std::string> list = {"EXT_meshopt_compression", "KHR_mesh_quantization",
-                                                "KHR_texture_transform"};
+  static const std::vector<std::string> list = {
+      "EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_materials_emissive_strength",
+      "KHR_mesh_quantization", "KHR_texture_transform"};
   return list;
 }
 

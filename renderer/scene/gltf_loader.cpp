@@ -102,9 +102,11 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   const std::string note = checkGltfExtensions(file, json);
   if (!note.empty() && std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
     scene.notes.push_back(note);
-  if (json.find("EXT_meshopt_compression") != std::string::npos && fillMeshoptFallbacks(json) &&
-      binary)
-    bytes = glbWithJson(bytes, json);
+  const bool meshopt =
+      json.find("EXT_meshopt_compression") != std::string::npos && fillMeshoptFallbacks(json);
+  const std::string before = json;
+  const DracoIndices dracoIndices = detachDracoIndices(json);
+  if (binary && (meshopt || json != before)) bytes = glbWithJson(bytes, json);
 
   std::error_code ec;
   Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};
@@ -125,6 +127,7 @@ Model loadGltf(const fs::path& file, Scene& scene) {
     throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
                                "; check the file with the Khronos glTF validator or re-export it");
   decodeMeshopt(file, gltf);
+  decodeDraco(file, gltf, dracoIndices);
   return convertGltf(file, gltf, trimmed(warn), scene);
 }
 

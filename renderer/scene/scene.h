@@ -41,6 +41,9 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
+  // Linear radiance added to the shaded colour: glTF emissiveFactor times
+  // KHR_materials_emissive_strength (0 for every material that does not glow).
+  glm::vec3 emissive{0.0f};
 };
 
 // A run of indices drawn with one material.

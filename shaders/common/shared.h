@@ -75,6 +75,7 @@ TAA_BLOCK(DrawPush) {
   float alphaCutoff;  // < 0: no alpha test
   float lodBias;
   vec4 baseColor;     // linear RGBA factor
+  vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: 0
 };
 
 // ---- Temporal resolve (taa_resolve.comp and shaders/taa/*.glsl) ----
@@ -248,7 +249,10 @@ TAA_BLOCK(TraceShading) {
   vec4 n1;
   vec4 n2;
   vec4 uv01;  // uv0.xy, uv1.xy
-  vec4 uv2;   // xy
+  vec4 uv2;   // xy; z: 1 when the mesh has vertex colours (the raster's InstanceData ids.w)
+  vec4 c0;    // linear RGBA vertex colours (glTF COLOR_0), multiplying the base colour when uv2.z is 1
+  vec4 c1;
+  vec4 c2;
 };
 
 TAA_BLOCK(TraceMaterial) {
@@ -257,6 +261,7 @@ TAA_BLOCK(TraceMaterial) {
   uint texture;       // slot in the texture array
   uint blend;         // 1: alpha-blended ("over", composited front to back along the ray)
   uint pad;
+  vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: 0
 };
 
 TAA_BLOCK(TraceUniforms) {
@@ -312,8 +317,8 @@ TAA_BLOCK(EdgeListHeader) {
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 32);
 static_assert(sizeof(TraceTriangle) == 48);
-static_assert(sizeof(TraceShading) == 80);
-static_assert(sizeof(TraceMaterial) == 32);
+static_assert(sizeof(TraceShading) == 128);
+static_assert(sizeof(TraceMaterial) == 48);
 static_assert(sizeof(TraceUniforms) == 48 + 16 * TRACE_MAX_SAMPLES);
 static_assert(sizeof(SegmentationUniforms) == 64);
 static_assert(sizeof(InjectPush) == 80);
@@ -321,7 +326,7 @@ static_assert(sizeof(PostPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
 static_assert(sizeof(FrameUniforms) == 7 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
-static_assert(sizeof(DrawPush) == 32);
+static_assert(sizeof(DrawPush) == 48);
 static_assert(sizeof(TscmaaUniforms) == 48);
 static_assert(sizeof(EdgeListHeader) == 16);
 }  // namespace taa::gpu

@@ -12,6 +12,7 @@ struct Surface {
   vec3 normal;  // unit, facing the ray (the raster flips back faces' normals too)
   vec2 uv;
   vec2 dUvDx, dUvDy;
+  vec4 color;  // interpolated vertex colour (meaningful where the mesh has COLOR_0)
 };
 
 vec2 interpolateUv(TraceShading s, float b1, float b2) {
@@ -48,6 +49,7 @@ Surface surfaceAt(Hit h, CameraRay r, CameraRay rx, CameraRay ry) {
   bool front = dot(cross(tri.v1 - tri.v0, tri.v2 - tri.v0), r.dir) < 0.0;
   f.normal = front ? n : -n;
   f.uv = interpolateUv(s, h.u, h.v);
+  f.color = s.c0 * w + s.c1 * h.u + s.c2 * h.v;
   vec2 bx = planeBarycentrics(tri, rx.origin, rx.dir);
   vec2 by = planeBarycentrics(tri, ry.origin, ry.dir);
   f.dUvDx = interpolateUv(s, bx.x, bx.y) - f.uv;

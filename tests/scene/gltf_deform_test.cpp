@@ -222,7 +222,6 @@ TEST(GltfExtensions, RequiredButUnsupportedIsRefusedByName) {
     const char* ext;
     const char* fix;
   } cases[] = {
-      {"refused/requires_draco.gltf", "KHR_draco_mesh_compression", "without Draco compression"},
       {"refused/requires_basisu.gltf", "KHR_texture_basisu", "re-export with PNG or JPEG"},
       {"refused/requires_specgloss.gltf", "KHR_materials_pbrSpecularGlossiness",
        "metallic-roughness"},

@@ -35,7 +35,10 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
         s.n1 = glm::vec4(normalMatrix * v[1]->normal, 0.0f);
         s.n2 = glm::vec4(normalMatrix * v[2]->normal, 0.0f);
         s.uv01 = glm::vec4(v[0]->uv, v[1]->uv);
-        s.uv2 = glm::vec4(v[2]->uv, 0.0f, 0.0f);
+        s.uv2 = glm::vec4(v[2]->uv, scene.meshes[d.mesh].vertexColors ? 1.0f : 0.0f, 0.0f);
+        s.c0 = v[0]->color;
+        s.c1 = v[1]->color;
+        s.c2 = v[2]->color;
         shading->push_back(s);
       }
       if (materials) materials->push_back(uint32_t(prim.material));

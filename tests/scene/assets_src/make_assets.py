@@ -303,3 +303,4 @@ if __name__ == "__main__":
     more.texture_transform()
     more.quantized_quad()
     more.node_weights()
+    more.emissive()

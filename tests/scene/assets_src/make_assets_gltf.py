@@ -1,5 +1,6 @@
 """Generators of the glTF assets for skins, morph targets, vertex colours, extensions and
 quantization (cases/scenes/); run through make_assets.py, which calls every one of them."""
+import math
 import struct
 
 from make_assets import ASSET, Builder, checker_png, data_uri, embedded, quad_geometry, write
@@ -137,8 +138,6 @@ def extensions():
                 "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
                 "bufferViews": b.views, "accessors": b.accessors}
 
-    write("refused/requires_draco.gltf",
-          doc(["KHR_draco_mesh_compression"], ["KHR_draco_mesh_compression"]))
     write("refused/requires_basisu.gltf", doc(["KHR_texture_basisu"], ["KHR_texture_basisu"]))
     write("refused/requires_specgloss.gltf", doc(["KHR_materials_pbrSpecularGlossiness"],
                                                  ["KHR_materials_pbrSpecularGlossiness"]))
@@ -218,3 +217,33 @@ def node_weights():
         "bufferViews": b.views, "accessors": b.accessors,
     })
 
+
+
+def emissive():
+    """Three black panels over a grey floor: one glowing (1, 0.5, 0.125) at
+    KHR_materials_emissive_strength 4, one glowing (0.25, 0.5, 1) by emissiveFactor alone,
+    one without emission. Black and unlit, a panel shows exactly its emission."""
+    b = Builder()
+    meshes = [dict(b.mesh(quad_geometry(), m), name=n)
+              for m, n in ((0, "strong"), (1, "factor_only"), (2, "dark"), (3, "floor"))]
+    black = {"baseColorFactor": [0, 0, 0, 1]}
+    write("emissive.gltf", {
+        "asset": ASSET, "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3]}],
+        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "nodes": [{"name": "strong", "mesh": 0, "translation": [-0.8, 0.6, 0], "scale": [0.7, 0.7, 1]},
+                  {"name": "factor_only", "mesh": 1, "translation": [0, 0.6, 0],
+                   "scale": [0.7, 0.7, 1]},
+                  {"name": "dark", "mesh": 2, "translation": [0.8, 0.6, 0], "scale": [0.7, 0.7, 1]},
+                  {"name": "floor", "mesh": 3, "rotation": [-math.sqrt(0.5), 0, 0, math.sqrt(0.5)],
+                   "scale": [4, 4, 1]}],
+        "meshes": meshes,
+        "materials": [
+            {"name": "strong", "pbrMetallicRoughness": black, "emissiveFactor": [1, 0.5, 0.125],
+             "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
+            {"name": "factor_only", "pbrMetallicRoughness": black,
+             "emissiveFactor": [0.25, 0.5, 1]},
+            {"name": "dark", "pbrMetallicRoughness": black},
+            {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.6, 0.6, 0.6, 1]}}],
+        "buffers": [{"byteLength": len(b.data), "uri": embedded(b.data)}],
+        "bufferViews": b.views, "accessors": b.accessors,
+    })

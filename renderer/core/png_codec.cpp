@@ -95,7 +95,6 @@ bool pngReadRows(png_structp png, png_bytepp rows) {
 bool pngWriteAll(png_structp png, png_infop info, png_bytepp rows, int width, int height,
                  int channels, int level) {
   if (setjmp(png_jmpbuf(png))) return false;
-  png_set_write_fn(png, png_get_io_ptr(png), pngCodecWrite, pngCodecFlush);
   png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8,
                channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);

@@ -18,6 +18,11 @@ packages=(
   glslang-tools
   libglm-dev
   nlohmann-json3-dev
+  # PNG reading and writing (renderer/core/png_codec.cpp).
+  libpng-dev
+  # OpenEXR reading and writing (renderer/core/exr_codec.cpp).
+  libopenexr-dev
+  # Only the tests link OpenImageIO, to cross-check our PNG and EXR code (tests/crosscheck).
   libopenimageio-dev
   # OpenImageIO's CMake package names /usr/bin/iconvert and the other tools as imported
   # targets and refuses to configure when they are absent.

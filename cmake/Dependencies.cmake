@@ -3,7 +3,10 @@ find_package(Vulkan REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(TinyGLTF REQUIRED)
-find_package(OpenImageIO REQUIRED)
+# PNG and OpenEXR files are read and written with libpng and OpenEXR directly: OpenImageIO's
+# Debian build loads 261 shared libraries at every process start (docs/performance.md).
+find_package(PNG REQUIRED)
+find_package(OpenEXR CONFIG REQUIRED)
 # meshoptimizer's CMake package puts a MESHOPTIMIZER_API definition on every dependant's
 # compile line; only gltf_meshopt.cpp and its test include the header, so link the file.
 find_library(MESHOPTIMIZER_LIBRARY meshoptimizer REQUIRED)
@@ -12,10 +15,18 @@ find_path(MESHOPTIMIZER_INCLUDE_DIR meshoptimizer.h REQUIRED)
 find_package(draco REQUIRED)
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
+# OpenImageIO only in the tests, as an independent reader of the files the harness writes.
+if(TAA_BUILD_TESTS)
+  find_package(OpenImageIO REQUIRED)
+endif()
+
 # Debian's OpenImageIO 2.4.7 exports /usr/include/opencv4 as an include directory
 # although the package does not depend on OpenCV; CMake refuses to generate with a
 # missing include path, so drop every entry that does not exist.
 foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  if(NOT TARGET OpenImageIO::OpenImageIO)
+    break()
+  endif()
   get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
   if(dirs)
     set(kept "")

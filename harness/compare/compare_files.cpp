@@ -71,19 +71,19 @@ bool isLinearFile(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".exr" || ext == ".hdr";
+  return ext == ".exr";
 }
 
 CompareOutcome compareFiles(const CompareRequest& r) {
   const bool linear = isLinearFile(r.referencePath);
   if (linear != isLinearFile(r.testPath)) {
     throw CompareInputError(
-        r.referencePath + " is " + (linear ? "linear (EXR/HDR)" : "display-referred") + " but " +
-        r.testPath + " is " + (linear ? "display-referred" : "linear (EXR/HDR)") +
+        r.referencePath + " is " + (linear ? "linear (EXR)" : "display-referred") + " but " +
+        r.testPath + " is " + (linear ? "display-referred" : "linear (EXR)") +
         "; compare an EXR with an EXR, or the PNGs of both");
   }
   if (r.hdr && !linear) {
-    throw CompareInputError("--hdr needs linear inputs (EXR or HDR), got " + r.referencePath);
+    throw CompareInputError("--hdr needs linear inputs (EXR), got " + r.referencePath);
   }
   Image ref = readOrExplain(r.referencePath, "reference");
   Image test = readOrExplain(r.testPath, "test");

@@ -52,7 +52,7 @@ const std::vector<std::string>& metricNames();
 bool isMetricName(const std::string& name);
 std::string metricNameList();  // "max_abs, mean_abs, ..."
 
-// True for files read as linear (scene-referred) data: .exr and .hdr, any letter case.
+// True for files read as linear (scene-referred) data: .exr, any letter case.
 bool isLinearFile(const std::string& path);
 
 // Reads both files and measures. Linear inputs get LDR-FLIP of their tonemapped display view

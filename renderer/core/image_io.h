@@ -21,8 +21,8 @@
 
 namespace taa {
 
-// Every failure to read or write an image file; what() names the file and carries
-// OpenImageIO's own message.
+// Every failure to read or write an image file; what() names the file and carries libpng's or
+// OpenEXR's own message.
 class ImageIoError : public std::runtime_error {
  public:
   ImageIoError(const std::filesystem::path& path, const std::string& message);
@@ -40,7 +40,8 @@ class ImageWriteError : public ImageIoError {
 };
 
 // Writes every channel (1 to 4; named R, G, B, A in that order) as half-float OpenEXR with
-// lossless ZIP compression. Values are rounded with floatToHalfBits, so a later readExr gives
+// lossless ZIP compression and no wall-clock or software attributes, so the file's bytes are a
+// function of its pixels. Values are rounded with floatToHalfBits, so a later readExr gives
 // back exactly halfRound() of each sample. Atomic: the data goes to a temporary file in the same
 // folder that is then renamed over `path`; on failure an older file at `path` is left untouched.
 void writeExr(const std::filesystem::path& path, const Image& image);
@@ -49,11 +50,19 @@ void writeExr(const std::filesystem::path& path, const Image& image);
 // object ids above 2048, the float32 reference.
 void writeExrFloat(const std::filesystem::path& path, const Image& image);
 
-// Reads an OpenEXR file as float samples with the file's channels (R, G, B, A first).
+// Reads an OpenEXR file as float samples with the file's channels (R, G, B, A first, then the
+// others in the file's order); any pixel type, scanline or tiled, the first part of a multi-part
+// file, the data window's pixels.
 // Throws ImageIoError when the file is missing, unreadable or not OpenEXR.
 Image readExr(const std::filesystem::path& path);
 
-// Reads any format OpenImageIO knows as float samples (8-bit files come back in [0, 1]).
+// The largest image readImage and readExr accept (an 8192 x 8192 RGBA image, 1 GiB of floats), so a
+// hostile header cannot make them allocate without bound.
+inline constexpr uint64_t kMaxImageSamples = uint64_t(1) << 28;
+
+// Reads an OpenEXR or PNG file (recognised by its first bytes, not its name) as float samples:
+// EXR as readExr; PNG as stored, 8- and 16-bit samples scaled to [0, 1] with no transfer function,
+// palettes expanded to RGB and transparency to an alpha channel that stays unassociated.
 Image readImage(const std::filesystem::path& path);
 
 // Writes a linear HDR image for viewing as 8-bit sRGB PNG, alpha dropped; see toDisplaySrgb for

@@ -272,13 +272,93 @@ namespace {
 TEST(ImageIoExr, FloatWriterKeepsEveryBitThatHalfWouldLose) {
   const fs::path dir = scratchDir("float");
   Image depth(5, 3, 1);
-  for (size_t i = 0; i < depth.data.size(); ++i) depth.data[i] = 0.5f + 1e-6f * float(i);  // below half's step
+  for (size_t i = 0; i < depth.data.size(); ++i)
+    depth.data[i] = 0.5f + 1e-6f * float(i);  // below half's step
   writeExrFloat(dir / "depth.exr", depth);
   const Image back = readExr(dir / "depth.exr");
   ASSERT_TRUE(back.sameShape(depth));
   EXPECT_EQ(back.data, depth.data);
   writeExr(dir / "depth_half.exr", depth);
-  EXPECT_NE(readExr(dir / "depth_half.exr").data, depth.data);  // the half writer would have lost them
+  EXPECT_NE(readExr(dir / "depth_half.exr").data,
+            depth.data);  // the half writer would have lost them
+}
+
+}  // namespace
+}  // namespace taa
+
+namespace taa {
+namespace {
+
+TEST(ImageIoBytes, FilesAreAFunctionOfTheirPixels) {
+  const fs::path dir = scratchDir("bytes");
+  const Image img = halfExactImage(33, 17, 4);
+  writeExr(dir / "a.exr", img);
+  writeExr(dir / "b.exr", img);
+  writePng(dir / "a.png", img);
+  writePng(dir / "b.png", img);
+  EXPECT_EQ(fileBytes(dir / "a.exr"), fileBytes(dir / "b.exr"));
+  EXPECT_EQ(fileBytes(dir / "a.png"), fileBytes(dir / "b.png"));
+  // No wall-clock or software stamp (OpenImageIO wrote DateTime and Software into every EXR).
+  for (const char* stamp : {"DateTime", "capDate", "Software", "tIME"}) {
+    EXPECT_EQ(fileBytes(dir / "a.exr").find(stamp), std::string::npos) << stamp;
+    EXPECT_EQ(fileBytes(dir / "a.png").find(stamp), std::string::npos) << stamp;
+  }
+  Image other = img;
+  other.data[7] = halfBitsToFloat(uint16_t(floatToHalfBits(other.data[7]) ^ 1u));
+  writeExr(dir / "c.exr", other);
+  EXPECT_NE(fileBytes(dir / "c.exr"), fileBytes(dir / "a.exr"));
+}
+
+TEST(ImageIoBytes, TruncatedAndForeignFilesAreErrorsNamingTheFile) {
+  const fs::path dir = scratchDir("broken");
+  writeExr(dir / "whole.exr", halfExactImage(40, 30, 3));
+  writePngLinear8(dir / "whole.png", Image(40, 30, 3, 0.5f));
+  for (const char* name : {"whole.exr", "whole.png"}) {
+    const std::string bytes = fileBytes(dir / name);
+    for (size_t keep : {size_t(4), size_t(40), bytes.size() / 2, bytes.size() - 1}) {
+      const fs::path cut = dir / ("cut_" + std::to_string(keep) + "_" + name);
+      std::ofstream(cut, std::ios::binary) << bytes.substr(0, keep);
+      try {
+        (void)readImage(cut);
+        ADD_FAILURE() << cut << " read without error";
+      } catch (const ImageIoError& e) {
+        EXPECT_NE(std::string(e.what()).find(cut.filename().string()), std::string::npos)
+            << e.what();
+      }
+    }
+  }
+  std::ofstream(dir / "text.png") << "not an image at all";
+  try {
+    (void)readImage(dir / "text.png");
+    ADD_FAILURE() << "a text file read as an image";
+  } catch (const ImageIoError& e) {
+    EXPECT_NE(std::string(e.what()).find("neither OpenEXR nor PNG"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)readImage(dir), ImageIoError);  // a folder
+}
+
+TEST(ImageIoPng, ReadsSixteenBitAndGreyAlphaAsStored) {
+  // The harness writes only 8-bit RGB, so a 16-bit grey + alpha file is made by hand: IHDR 2x1,
+  // depth 16, colour type 4; one stored (uncompressed) zlib block holding filter byte 0 and the
+  // big-endian (grey, alpha) pairs (0x0000, 0xffff), (0x8000, 0x4000); IEND.
+  const fs::path dir = scratchDir("png16");
+  const unsigned char png[] = {0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00,
+                               0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00,
+                               0x00, 0x01, 0x10, 0x04, 0x00, 0x00, 0x00, 0x0e, 0xbb, 0x6b, 0x42,
+                               0x00, 0x00, 0x00, 0x14, 0x49, 0x44, 0x41, 0x54, 0x78, 0x01, 0x01,
+                               0x09, 0x00, 0xf6, 0xff, 0x00, 0x00, 0x00, 0xff, 0xff, 0x80, 0x00,
+                               0x40, 0x00, 0x0d, 0x7e, 0x02, 0xbf, 0xcc, 0x09, 0xe1, 0xa5, 0x00,
+                               0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  std::ofstream(dir / "ga16.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png), sizeof(png));
+  const Image img = readImage(dir / "ga16.png");
+  ASSERT_EQ(img.width, 2);
+  ASSERT_EQ(img.height, 1);
+  ASSERT_EQ(img.channels, 2);
+  EXPECT_EQ(img.data[0], 0.0f);
+  EXPECT_EQ(img.data[1], 1.0f);
+  EXPECT_EQ(img.data[2], float(0x8000) / 65535.0f);
+  EXPECT_EQ(img.data[3], float(0x4000) / 65535.0f);
 }
 
 }  // namespace

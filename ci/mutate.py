@@ -27,6 +27,7 @@ run restores first. See docs/mutation.md.
 import argparse
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -34,6 +35,7 @@ import sys
 import time
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # no __pycache__ in the tree
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import mutate_ops as ops  # noqa: E402
 
@@ -43,7 +45,7 @@ JUDGED = ROOT / "ci" / "mutate-equivalent.json"
 UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
                   "harness/golden": ["tests/golden", "tests/harness"],
                   "harness/invariants": ["tests/invariants"]}
-VOLATILE_KEYS = ("seconds", "timing", "date", "time_ms", "ms")
+VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 
 class Interrupted(Exception):
@@ -51,6 +53,9 @@ class Interrupted(Exception):
 
 
 def _on_signal(signum, _frame):
+    # Once: the restore and the rebuild that follow must not be cut short by a second signal.
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     raise Interrupted(f"signal {signum}")
 
 
@@ -80,13 +85,14 @@ def strip_volatile(value):
     return value
 
 
-def case_outputs(results_files):
-    """name -> the case's results without timings (frame hashes, status, metrics, invariants)."""
+def case_outputs(run_dir):
+    """name -> the case's results without timings and with the output folder written as <out>
+    (frame hashes, status, metrics, invariants), from every shard of one run."""
     out = {}
-    for f in results_files:
-        if f.exists():
-            for c in json.loads(f.read_text()).get("cases", []):
-                out[c["name"]] = strip_volatile(c)
+    for f in sorted(run_dir.glob("shard*/results.json")):
+        text = re.sub(re.escape(str(run_dir)) + r"/shard\d+", "<out>", f.read_text())
+        for c in json.loads(text).get("cases", []):
+            out[c["name"]] = strip_volatile(c)
     return out
 
 
@@ -146,7 +152,7 @@ class Runner:
         results = sorted(base_dir.glob("shard*/results.json"))
         if not results or self.args.fresh_baseline:
             log("baseline: building and running the unmutated suite")
-            if not self.ninja(["taa-harness", "taa_tests"], self.out / "baseline-build.log"):
+            if not self.ninja(["taa-harness"], self.out / "baseline-build.log"):
                 sys.exit(f"mutate: the unmutated tree does not build (see {self.out}/baseline-build.log)")
             start = time.monotonic()
             rc, _ = self.run_cases(self.cases, base_dir, False, 24 * 3600)
@@ -154,17 +160,31 @@ class Runner:
             if rc != 0:
                 sys.exit(f"mutate: the unmutated suite fails (exit {rc}, see {base_dir}): fix that first")
             results = sorted(base_dir.glob("shard*/results.json"))
-        outputs = case_outputs(results)
+        outputs = case_outputs(base_dir)
         seconds = {}
         for f in results:
             for c in json.loads(f.read_text())["cases"]:
                 seconds[c["name"]] = c.get("seconds", 0.0)
         ordered = sorted(self.cases, key=lambda p: (seconds.get(p.stem, 1e9), p.stem))
+        self.logs = {}
+        for f in results:
+            for c in json.loads(f.read_text())["cases"]:
+                self.logs[c["name"]] = [ln for ln in c.get("log", []) if ln.startswith("pass ")]
         total = float((self.out / "baseline-seconds").read_text()) if (
             self.out / "baseline-seconds").exists() else sum(seconds.values())
         return outputs, ordered, total
 
+    def order_for(self, mutant, ordered):
+        """Cases whose run log names the mutated file's pass first ("pass cas" for cas.comp,
+        "pass tscmaa" for tscmaa/*.glsl): an order only, every case still runs when none fails."""
+        path = Path(mutant.file)
+        word = path.parent.name if path.parent.name not in ("shaders", "common") else path.stem
+        word = "pass " + word.split("_")[0]
+        uses = [c for c in ordered if any(ln.startswith(word) for ln in self.logs.get(c.stem, []))]
+        return uses + [c for c in ordered if c not in uses]
+
     def judge(self, mutant, base_outputs, ordered, total_seconds):
+        ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
         targets = ["taa-harness"] + (["taa_tests"] if mutant.kind == "harness" else [])
         if not self.ninja(targets, work / "build.log"):
@@ -195,10 +215,14 @@ class Runner:
                         first = line[:160]
                         break
             return "caught", f"run exit {rc}" + (f": {first}" if first else "")
-        outputs = case_outputs(sorted(run_dir.glob("shard*/results.json")))
+        outputs = case_outputs(run_dir)
         changed = [n for n in base_outputs if outputs.get(n) != base_outputs[n]]
         if changed:
-            return "survived", "outputs changed but passed: " + ", ".join(changed[:5])
+            first = changed[0]
+            keys = sorted(k for k in set(outputs.get(first, {})) | set(base_outputs[first])
+                          if outputs.get(first, {}).get(k) != base_outputs[first].get(k))
+            return "survived", (f"outputs changed but passed: {', '.join(changed[:5])} "
+                                f"({first}: {', '.join(keys)})")
         return "no-change", "every case's frame hashes and verdicts equal the unmutated run's"
 
 
@@ -287,6 +311,9 @@ def main():
         chosen = [by_id[i] for i in args.only]
     else:
         chosen = every if args.all else ops.select(every, args.seed, args.max, args.harness_share)
+    # Shader mutants first: they need only the SPIR-V rebuilt; the first harness mutant also
+    # builds the unit tests.
+    chosen.sort(key=lambda m: m.kind != "shader")
     if args.list:
         for m in chosen:
             print(f"{m.id}\tline {m.line}\t{m.before}  ->  {m.after}")
@@ -322,7 +349,8 @@ def main():
         return 130
     finally:
         # Leave the build folder matching the restored sources.
-        runner.ninja(["taa-harness", "taa_tests"], out / "work" / "final-build.log")
+        runner.ninja(["taa-harness"] + (["taa_tests"] if any(m.kind == "harness" for m in chosen)
+                                        else []), out / "work" / "final-build.log")
     summary = summarize(records, judged, args)
     write_reports(out, summary)
     c = summary["counts"]

@@ -183,12 +183,65 @@ class Runner:
         uses = [c for c in ordered if any(ln.startswith(word) for ln in self.logs.get(c.stem, []))]
         return uses + [c for c in ordered if c not in uses]
 
+    def shader_commands(self):
+        """The build's glslang command per SPIR-V file, and the shader files each one reads
+        (its source and every file it includes, transitively)."""
+        text = subprocess.run(["ninja", "-C", str(self.build), "-t", "commands", "taa_shaders"],
+                              capture_output=True, text=True, check=True).stdout
+        commands = [ln for ln in text.splitlines() if "glslangValidator" in ln]
+        shaders = ROOT / "shaders"
+
+        def reads(f, seen):
+            if f in seen or not f.exists():
+                return seen
+            seen.add(f)
+            for line in f.read_text().splitlines():
+                m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
+                if m:
+                    for base in (f.parent, shaders):
+                        if (base / m.group(1)).exists():
+                            reads((base / m.group(1)).resolve(), seen)
+                            break
+            return seen
+
+        return [(c, {p.relative_to(ROOT).as_posix() for p in reads(Path(c.split()[-1]).resolve(), set())})
+                for c in commands]
+
+    def build_shader_mutant(self, mutant, work):
+        """Shader mutants never touch the tree or the build folder: the mutation goes into a
+        copy of shaders/, the SPIR-V it changes into a copy of the build's, which the harness
+        loads through TAA_SHADER_DIR. (So shared.h mutants change the GLSL side only.)"""
+        src, spv = work / "src", work / "spv"
+        for d in (src, spv):
+            shutil.rmtree(d, ignore_errors=True)
+        shutil.copytree(ROOT / "shaders", src / "shaders")
+        shutil.copytree(self.build / "shaders", spv, ignore=shutil.ignore_patterns("CMakeFiles"))
+        ops.apply(src, mutant)
+        if not hasattr(self, "_shader_commands"):
+            self._shader_commands = self.shader_commands()
+        with open(work / "build.log", "w") as log_f:
+            for command, reads in self._shader_commands:
+                if mutant.file not in reads:
+                    continue
+                command = command.replace(str(self.build / "shaders"), str(spv))
+                command = command.replace(str(ROOT / "shaders"), str(src / "shaders"))
+                log_f.write(command + "\n")
+                log_f.flush()
+                if subprocess.run(command, shell=True, stdout=log_f, stderr=subprocess.STDOUT).returncode:
+                    return False
+        return True
+
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
-        targets = ["taa-harness"] + (["taa_tests"] if mutant.kind == "harness" else [])
-        if not self.ninja(targets, work / "build.log"):
-            return "stillborn", "does not build"
+        if mutant.kind == "shader":
+            self.env["TAA_SHADER_DIR"] = str(work / "spv")
+            if not self.build_shader_mutant(mutant, work):
+                return "stillborn", "does not compile"
+        else:
+            self.env.pop("TAA_SHADER_DIR", None)
+            if not self.ninja(["taa-harness", "taa_tests"], work / "build.log"):
+                return "stillborn", "does not build"
         if mutant.kind == "harness":
             suites = unit_suites(mutant.file)
             if suites:
@@ -291,6 +344,8 @@ def main():
     p.add_argument("--all", action="store_true", help="with --list: every site, not the sample")
     p.add_argument("--only", action="append", default=[], metavar="ID",
                    help="run these mutants (repeatable), whatever the sample")
+    p.add_argument("--also", action="append", default=[], metavar="ID",
+                   help="add these mutants to the sample (repeatable)")
     p.add_argument("--max", type=int, default=60, help="sample size (default 60)")
     p.add_argument("--seed", type=int, default=12, help="sample seed (default 12)")
     p.add_argument("--harness-share", type=float, default=0.3,
@@ -303,14 +358,15 @@ def main():
     args = p.parse_args()
 
     every = ops.all_mutants(ROOT)
+    by_id = {m.id: m for m in every}
+    unknown = [i for i in args.only + args.also if i not in by_id]
+    if unknown:
+        sys.exit(f"mutate: no mutant {', '.join(unknown)} (see --list --all)")
     if args.only:
-        by_id = {m.id: m for m in every}
-        unknown = [i for i in args.only if i not in by_id]
-        if unknown:
-            sys.exit(f"mutate: no mutant {', '.join(unknown)} (see --list --all)")
         chosen = [by_id[i] for i in args.only]
     else:
         chosen = every if args.all else ops.select(every, args.seed, args.max, args.harness_share)
+        chosen += [by_id[i] for i in args.also if by_id[i] not in chosen]
     # Shader mutants first: they need only the SPIR-V rebuilt; the first harness mutant also
     # builds the unit tests.
     chosen.sort(key=lambda m: m.kind != "shader")
@@ -331,6 +387,14 @@ def main():
     try:
         for n, m in enumerate(chosen, 1):
             start = time.monotonic()
+            if m.kind == "shader":
+                status, detail = runner.judge(m, base_outputs, ordered, total)
+                rec = dict(m.as_json(), status=status, detail=detail,
+                           seconds=round(time.monotonic() - start, 1))
+                records.append(rec)
+                log(f"[{n}/{len(chosen)}] {status:9} {m.id} ({rec['seconds']} s): {detail}")
+                write_reports(out, summarize(records, judged, args))
+                continue
             original = (ROOT / m.file).read_bytes()
             backup_path(out).write_text(json.dumps({"file": m.file, "original": original.hex()}))
             try:
@@ -349,8 +413,8 @@ def main():
         return 130
     finally:
         # Leave the build folder matching the restored sources.
-        runner.ninja(["taa-harness"] + (["taa_tests"] if any(m.kind == "harness" for m in chosen)
-                                        else []), out / "work" / "final-build.log")
+        if any(m.kind == "harness" for m in chosen):
+            runner.ninja(["taa-harness", "taa_tests"], out / "work" / "final-build.log")
     summary = summarize(records, judged, args)
     write_reports(out, summary)
     c = summary["counts"]

@@ -355,7 +355,18 @@ def main():
     p.add_argument("--out", default=str(ROOT / "out" / "mutate"), help="report folder")
     p.add_argument("--fresh-baseline", action="store_true", help="rerun the unmutated suite")
     p.add_argument("--unit-timeout", type=int, default=900)
+    p.add_argument("--rejudge", action="store_true",
+                   help="rewrite OUT's report from its mutation.json with the current "
+                        "ci/mutate-equivalent.json, running nothing")
     args = p.parse_args()
+    if args.rejudge:
+        report = Path(args.out).resolve()
+        stored = json.loads((report / "mutation.json").read_text())
+        summary = summarize(stored["mutants"], load_judged(), args)
+        summary.update(seed=stored["seed"], max=stored["max"])
+        write_reports(report, summary)
+        print(f"{report / 'mutation.md'}: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["counts"].items())))
+        return 0
 
     every = ops.all_mutants(ROOT)
     by_id = {m.id: m for m in every}

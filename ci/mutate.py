@@ -63,16 +63,34 @@ def log(*parts):
     print(time.strftime("%H:%M:%S"), *parts, flush=True)
 
 
+def pass_word(rel):
+    """The pass a shader file belongs to, as run logs and tests name it: cas.comp -> cas,
+    tscmaa/zshape.glsl -> tscmaa, taa/rectify.glsl -> taa, motion_blur.comp -> motion."""
+    path = Path(rel)
+    word = path.parent.name if path.parent.name not in ("shaders", "common") else path.stem
+    return word.split("_")[0]
+
+
+def test_sources(rel):
+    """Harness files: the tests of the matching tests/ folder. Shader files: the GPU tests
+    (tests/renderer, tests/effects) whose file name holds the pass's or the file's name."""
+    if rel.startswith("shaders/"):
+        words = (pass_word(rel), Path(rel).stem)
+        return [src for d in ("tests/renderer", "tests/effects")
+                for src in sorted((ROOT / d).glob("*_test.cpp"))
+                if any(src.name.startswith(w + "_") or "_" + w + "_" in src.name for w in words)]
+    return [src for d in UNIT_TEST_DIRS.get(str(Path(rel).parent), [])
+            for src in sorted((ROOT / d).glob("*_test.cpp"))]
+
+
 def unit_suites(rel):
-    folder = str(Path(rel).parent)
     suites = []
-    for tests_dir in UNIT_TEST_DIRS.get(folder, []):
-        for src in sorted((ROOT / tests_dir).glob("*_test.cpp")):
-            for line in src.read_text().splitlines():
-                if line.startswith(("TEST(", "TEST_F(", "TEST_P(")):
-                    suite = line.split("(", 1)[1].split(",", 1)[0].strip()
-                    if suite not in suites:
-                        suites.append(suite)
+    for src in test_sources(rel):
+        for line in src.read_text().splitlines():
+            if line.startswith(("TEST(", "TEST_F(", "TEST_P(")):
+                suite = line.split("(", 1)[1].split(",", 1)[0].strip()
+                if suite not in suites:
+                    suites.append(suite)
     return suites
 
 
@@ -177,9 +195,7 @@ class Runner:
     def order_for(self, mutant, ordered):
         """Cases whose run log names the mutated file's pass first ("pass cas" for cas.comp,
         "pass tscmaa" for tscmaa/*.glsl): an order only, every case still runs when none fails."""
-        path = Path(mutant.file)
-        word = path.parent.name if path.parent.name not in ("shaders", "common") else path.stem
-        word = "pass " + word.split("_")[0]
+        word = "pass " + pass_word(mutant.file)
         uses = [c for c in ordered if any(ln.startswith(word) for ln in self.logs.get(c.stem, []))]
         return uses + [c for c in ordered if c not in uses]
 
@@ -231,6 +247,24 @@ class Runner:
                     return False
         return True
 
+    def unit_tests(self, mutant, work):
+        suites = unit_suites(mutant.file)
+        if not suites:
+            return None
+        flt = ":".join(f"{s}.*:*/{s}.*" for s in suites)
+        with open(work / "unit.log", "w") as f:
+            try:
+                rc = subprocess.run([str(self.tests), f"--gtest_filter={flt}"], stdout=f,
+                                    stderr=subprocess.STDOUT, env=self.env,
+                                    timeout=self.args.unit_timeout).returncode
+            except subprocess.TimeoutExpired:
+                return "caught", "unit tests timed out (a hang)"
+        if rc == 0:
+            return None
+        failed = [ln.split("]", 1)[1].strip() for ln in (work / "unit.log").read_text()
+                  .splitlines() if ln.startswith("[  FAILED  ]") and "." in ln]
+        return "caught", "unit test " + (failed[0] if failed else f"exit {rc}")
+
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
@@ -243,20 +277,9 @@ class Runner:
             if not self.ninja(["taa-harness", "taa_tests"], work / "build.log"):
                 return "stillborn", "does not build"
         if mutant.kind == "harness":
-            suites = unit_suites(mutant.file)
-            if suites:
-                flt = ":".join(f"{s}.*:*/{s}.*" for s in suites)
-                with open(work / "unit.log", "w") as f:
-                    try:
-                        rc = subprocess.run([str(self.tests), f"--gtest_filter={flt}"], stdout=f,
-                                            stderr=subprocess.STDOUT, env=self.env,
-                                            timeout=self.args.unit_timeout).returncode
-                    except subprocess.TimeoutExpired:
-                        return "caught", "unit tests timed out (a hang)"
-                if rc != 0:
-                    failed = [ln.split("]", 1)[1].strip() for ln in (work / "unit.log").read_text()
-                              .splitlines() if ln.startswith("[  FAILED  ]") and "." in ln]
-                    return "caught", "unit test " + (failed[0] if failed else f"exit {rc}")
+            verdict = self.unit_tests(mutant, work)
+            if verdict:
+                return verdict
         rc, run_dir = self.run_cases(ordered, work / "run", True, max(600.0, 4 * total_seconds))
         if rc == "timeout":
             return "caught", "the suite timed out (a hang)"
@@ -268,6 +291,12 @@ class Runner:
                         first = line[:160]
                         break
             return "caught", f"run exit {rc}" + (f": {first}" if first else "")
+        if mutant.kind == "shader" and self.tests.exists():
+            # The cases passed: the GPU unit tests of the mutated pass get their say (they
+            # check what no image shows, such as TSCMAA's dispatch sizes).
+            verdict = self.unit_tests(mutant, work)
+            if verdict:
+                return verdict
         outputs = case_outputs(run_dir)
         changed = [n for n in base_outputs if outputs.get(n) != base_outputs[n]]
         if changed:

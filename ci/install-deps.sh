@@ -37,6 +37,8 @@ packages=(
   libbenchmark-dev
   # The report check renders out/report.html headless.
   chromium
+  # ci/mutate.py (the mutation self-test) and its ctest check.
+  python3
 )
 if [ "${TAA_SKIP_APT_UPDATE:-0}" != 1 ]; then apt-get update; fi
 apt-get install -y --no-install-recommends "${packages[@]}"

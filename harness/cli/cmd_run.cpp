@@ -21,10 +21,12 @@ namespace fs = std::filesystem;
 namespace {
 const char* kRunUsage =
     "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] [--validate]\n"
-    "                        [--metric NAME --above X]\n"
+    "                        [--metric NAME --above X] [--fail-fast]\n"
     "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants and\n"
     "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
     "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices.\n"
+    "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
+    "  cover the cases run so far.\n"
     "  --metric NAME --above X: exit 1 when a checked frame's NAME (max_abs, rmse, psnr, share_over,\n"
     "  flip_mean, flip_p99) against its golden exceeds X, else 0 (bit-exactness is not required).\n"
     "exit: 0 pass, 1 regression, 2 bad input, 3 environment";
@@ -51,7 +53,8 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
 
 int cmdRun(const Args& args) {
   const auto a =
-      parseArgs(args, {"--validate"}, {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kRunUsage);
+      parseArgs(args, {"--validate", "--fail-fast"},
+                {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kRunUsage);
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kRunUsage);
   if (a.values.count("--metric") != a.values.count("--above"))
     throw UsageError(std::string("--metric and --above go together\nusage: ") + kRunUsage);
@@ -76,6 +79,7 @@ int cmdRun(const Args& args) {
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
   options.validate = a.has("--validate");
+  options.failFast = a.has("--fail-fast");
   options.run.missingGoldenFails = runningInCi();
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -84,6 +88,9 @@ int cmdRun(const Args& args) {
   report::writeJUnit(out / "junit.xml", outcome.results);
   report::writeHtmlReport(out / "report.html", outcome.results);
   run::printSummary(std::cout, outcome.results, seconds);
+  if (outcome.notRun > 0)
+    std::cout << "--fail-fast: stopped at the first failing case, " << outcome.notRun << " of "
+              << batch.cases.size() << " cases not run\n";
   std::cout << "report: " << (out / "report.html").string() << "\n";
   if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
   if (a.values.count("--metric")) return metricVerdict(outcome.results, a.value("--metric"), std::stod(a.value("--above")));

@@ -165,6 +165,10 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
     regression |= run::caseFailed(result);
     if (onCase) onCase(result);
     out.results.cases.push_back(std::move(result));
+    if (options.failFast && (regression || badInput)) {
+      out.notRun = batch.cases.size() - k - 1;
+      break;
+    }
   }
   out.exitCode = badInput ? kBadInput : regression ? kRegression : kPass;
   return out;

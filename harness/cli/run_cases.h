@@ -35,12 +35,16 @@ struct BatchOptions {
   run::RunOptions run;
   std::string device;
   bool validate = false;
+  // Stop after the first case that fails or errors (`run --fail-fast`): a broken build is
+  // known at its first failure, which makes a caught mutant (ci/mutate.py) cheap.
+  bool failFast = false;
 };
 
 struct BatchOutcome {
   run::RunResults results;
   golden::Environment environment;  // of the device the batch ran on
   int exitCode = 0;
+  size_t notRun = 0;  // cases skipped by failFast after the first failure
   std::map<std::string, std::map<int, Image>> outputs;  // when keepOutputs
 };
 

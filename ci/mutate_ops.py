@@ -1,0 +1,250 @@
+"""Mutation operators and the seeded, reproducible choice of mutants (used by ci/mutate.py).
+
+Every operator is a pattern over one source line, never a line number: a mutant's id is
+FILE:OPERATOR:K, the K-th site of that operator in that file (code only: comments, string
+literals and preprocessor lines other than `#define NAME NUMBER` are skipped). Renaming an
+identifier or editing a comment keeps every id; adding a site before another renumbers that
+file's sites of the same operator only.
+"""
+
+import hashlib
+import random
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+SHADER_GLOBS = ["shaders/**/*.comp", "shaders/**/*.glsl", "shaders/**/*.frag",
+                "shaders/**/*.vert", "shaders/common/shared.h"]
+HARNESS_GLOBS = ["harness/compare/metrics.cpp", "harness/compare/tolerance.cpp",
+                 "harness/compare/flip*.cpp", "harness/golden/*.cpp", "harness/invariants/*.cpp"]
+
+# Binary operators are matched with a space on each side (clang-format's layout), which
+# keeps templates (vector<int>), shifts, arrows and unary minus out.
+_CMP_NEGATE = {"<": ">=", ">": "<=", "<=": ">", ">=": "<", "==": "!=", "!=": "=="}
+_CMP_BOUND = {"<": "<=", "<=": "<", ">": ">=", ">=": ">"}
+_CMP = re.compile(r"(?<=\s)(<=|>=|==|!=|<|>)(?=\s)")
+_MINMAX = re.compile(r"\b(std::)?(f?)(min|max)(?=\s*\()")
+_ARITH = re.compile(r"(?<=\s)(\+|-)(=?)(?=\s)")
+_FLOAT = re.compile(r"(?<![\w.])(\d+\.\d*|\.\d+|\d+(?=[eE]))([eE][+-]?\d+)?(f?)(?![\w.])")
+_INT = re.compile(r"(?<![\w.])(\d+)(u?)(?![\w.])")
+_IF = re.compile(r"\bif\s*\(")
+_ASSIGN = re.compile(r"^\s*[A-Za-z_][\w.]*(\[[^\]]*\])?(\.\w+)?\s*([-+*/]?=)\s*[^=].*;\s*$")
+_CALL = re.compile(r"^\s*[A-Za-z_][\w:.]*(\.[A-Za-z_]\w*)*\s*\(.*\)\s*;\s*$")
+_DEFINE_NUMBER = re.compile(r"^\s*#define\s+\w+\s+\(?-?[\d.]")
+_SKIP_LINE = re.compile(r"\bstatic_assert\b|\blayout\s*\(")
+_KEYWORD_STATEMENT = re.compile(r"^\s*(return|break|continue|case|default|if|for|while|else)\b")
+
+
+@dataclass
+class Mutant:
+    id: str
+    file: str  # relative to the repository root
+    kind: str  # "shader" or "harness"
+    op: str
+    line: int  # 1-based, for humans only: the id does not depend on it
+    before: str
+    after: str
+
+    def as_json(self):
+        return {"id": self.id, "file": self.file, "kind": self.kind, "op": self.op,
+                "line": self.line, "before": self.before, "after": self.after}
+
+
+def _code_mask(line, in_block):
+    """The line with comments and string literals blanked (same length), and whether a
+    block comment is still open at its end."""
+    out, i, n = [], 0, len(line)
+    while i < n:
+        if in_block:
+            end = line.find("*/", i)
+            if end < 0:
+                out.append(" " * (n - i))
+                return "".join(out), True
+            out.append(" " * (end + 2 - i))
+            i, in_block = end + 2, False
+        elif line.startswith("//", i):
+            out.append(" " * (n - i))
+            break
+        elif line.startswith("/*", i):
+            in_block = True
+        elif line[i] in "\"'":
+            quote, j = line[i], i + 1
+            while j < n and line[j] != quote:
+                j += 2 if line[j] == "\\" else 1
+            out.append(line[i] + " " * (min(j, n) - i - 1) + (quote if j < n else ""))
+            i = j + 1
+        else:
+            out.append(line[i])
+            i += 1
+    return "".join(out), in_block
+
+
+def _format_float(value):
+    text = repr(float(f"{value:.6g}"))
+    if "e" in text or "E" in text:
+        mantissa, exponent = text.split("e")
+        return (mantissa if "." in mantissa else mantissa + ".0") + "e" + exponent
+    return text
+
+
+def _line_sites(code, raw):
+    """(op, start, end, replacement) for every mutation site of one code line."""
+    sites = []
+    for m in _CMP.finditer(code):
+        sites.append(("cmp", m.start(), m.end(), _CMP_NEGATE[m.group(1)]))
+        if m.group(1) in _CMP_BOUND:
+            sites.append(("bound", m.start(), m.end(), _CMP_BOUND[m.group(1)]))
+    for m in _MINMAX.finditer(code):
+        other = "max" if m.group(3) == "min" else "min"
+        s = m.start(3)
+        sites.append(("minmax", s, s + 3, other))
+    for m in _ARITH.finditer(code):
+        sites.append(("arith", m.start(1), m.end(1), "-" if m.group(1) == "+" else "+"))
+    for m in _FLOAT.finditer(code):
+        text = raw[m.start():m.end() - len(m.group(3))]
+        value = float(text)
+        new = "1.0" if value == 0 else _format_float(value * 1.5)
+        sites.append(("float", m.start(), m.end() - len(m.group(3)), new))
+    for m in _INT.finditer(code):
+        if _FLOAT.match(code, m.start()):
+            continue
+        sites.append(("int", m.start(1), m.end(1), str(int(m.group(1)) + 1)))
+    for m in _IF.finditer(code):
+        close = _matching_paren(code, m.end() - 1)
+        if close is not None:
+            sites.append(("cond-true", m.end(), close, "true"))
+            sites.append(("cond-false", m.end(), close, "false"))
+    return sites
+
+
+def _matching_paren(code, open_at):
+    depth = 0
+    for i in range(open_at, len(code)):
+        depth += {"(": 1, ")": -1}.get(code[i], 0)
+        if depth == 0:
+            return i
+    return None  # the condition goes on to the next line: not a site
+
+
+def _deletable(code, prev_code):
+    """A whole single-line statement: an assignment to an existing name or a call."""
+    if not code.strip().endswith(";") or _KEYWORD_STATEMENT.match(code):
+        return False
+    if prev_code.strip() and prev_code.rstrip()[-1] not in ";{}":
+        return False  # continues a statement from the line before
+    return bool(_ASSIGN.match(code) or _CALL.match(code))
+
+
+def file_mutants(root, rel, kind):
+    text = (root / rel).read_text()
+    lines = text.split("\n")
+    counters, mutants, in_block, prev_code = {}, [], False, ""
+    for number, raw in enumerate(lines, 1):
+        code, in_block = _code_mask(raw, in_block)
+        stripped = code.strip()
+        if stripped.startswith("#") and not _DEFINE_NUMBER.match(code):
+            continue
+        if _SKIP_LINE.search(code) or (kind == "harness" and '"' in code):
+            continue  # compile-time checks; message text is not what the harness compares
+        if stripped.startswith("#"):  # `#define NAME NUMBER`: only the value mutates
+            name = re.match(r"\s*#define\s+\w+", code)
+            code = " " * name.end() + code[name.end():]
+        sites = _line_sites(code, raw)
+        if not stripped.startswith("#") and _deletable(code, prev_code):
+            indent = len(raw) - len(raw.lstrip())
+            sites.append(("delete", indent, len(raw.rstrip()), ""))
+        for op, start, end, new in sites:
+            after = raw[:start] + new + raw[end:]
+            k = counters.get(op, 0)
+            counters[op] = k + 1
+            mutants.append(Mutant(f"{rel}:{op}:{k}", rel, kind, op, number, raw.strip(),
+                                  after.strip()))
+        if stripped:
+            prev_code = code
+    return mutants
+
+
+def target_files(root):
+    files = []
+    for kind, globs in (("shader", SHADER_GLOBS), ("harness", HARNESS_GLOBS)):
+        for pattern in globs:
+            for p in sorted(root.glob(pattern)):
+                rel = p.relative_to(root).as_posix()
+                if rel not in [f for f, _ in files]:
+                    files.append((rel, kind))
+    return files
+
+
+def all_mutants(root):
+    out = []
+    for rel, kind in target_files(root):
+        out.extend(file_mutants(root, rel, kind))
+    return out
+
+
+def _stable_rng(seed, name):
+    digest = hashlib.sha256(f"{seed}:{name}".encode()).digest()
+    return random.Random(int.from_bytes(digest[:8], "big"))
+
+
+def select(mutants, seed, count, harness_share):
+    """A deterministic sample: `harness_share` of `count` from the harness files, the rest
+    from the shaders; within each group files take turns (in a seeded order), and each file
+    offers its sites in a seeded order that alternates operators, so every file and
+    operator is represented before any repeats."""
+    chosen = []
+    for kind, quota in (("harness", round(count * harness_share)),
+                        ("shader", count - round(count * harness_share))):
+        by_file = {}
+        for m in mutants:
+            if m.kind == kind:
+                by_file.setdefault(m.file, []).append(m)
+        queues = {}
+        for f, ms in by_file.items():
+            rng = _stable_rng(seed, f)
+            by_op = {}
+            for m in ms:
+                by_op.setdefault(m.op, []).append(m)
+            ops = sorted(by_op)
+            rng.shuffle(ops)
+            for op in ops:
+                rng.shuffle(by_op[op])
+            queue = []
+            while any(by_op.values()):
+                for op in ops:
+                    if by_op[op]:
+                        queue.append(by_op[op].pop())
+            queues[f] = queue
+        files = sorted(queues)
+        _stable_rng(seed, kind).shuffle(files)
+        picked = []
+        while len(picked) < quota and any(queues[f] for f in files):
+            for f in files:
+                if queues[f] and len(picked) < quota:
+                    picked.append(queues[f].pop(0))
+        chosen.extend(picked)
+    return chosen
+
+
+def apply(root, mutant):
+    """Writes the mutant into its file; returns the original bytes for restore()."""
+    path = root / mutant.file
+    original = path.read_bytes()
+    fresh = {m.id: m for m in file_mutants(root, mutant.file, mutant.kind)}
+    current = fresh.get(mutant.id)
+    if current is None or current.before != mutant.before:
+        raise RuntimeError(f"{mutant.id}: the file changed since the list was made")
+    lines = original.decode().split("\n")
+    raw = lines[current.line - 1]
+    indent = raw[:len(raw) - len(raw.lstrip())]
+    lines[current.line - 1] = indent + current.after + raw[len(raw.rstrip()):]
+    path.write_bytes("\n".join(lines).encode())
+    return original
+
+
+def restore(root, mutant, original):
+    (root / mutant.file).write_bytes(original)
+
+
+def repo_root():
+    return Path(__file__).resolve().parent.parent

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Cheap checks of ci/mutate.py (the mutation loop itself never runs in ctest): the sample is
+reproducible and covers both groups and every operator; ids survive a rename; every operator's
+mutant changes exactly its line and restoring leaves the file byte-identical. Works on a copy
+of the sources, never the tree. Exit 0 pass, 1 fail."""
+
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.dont_write_bytecode = True
+sys.path.insert(0, str(ROOT / "ci"))
+import mutate_ops as ops  # noqa: E402
+
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def listing(*extra):
+    r = subprocess.run([sys.executable, str(ROOT / "ci" / "mutate.py"), "build", "--list", *extra],
+                       capture_output=True, text=True)
+    check(r.returncode == 0, f"--list {' '.join(extra)} exits 0: {r.stderr}")
+    return r.stdout.splitlines()
+
+
+first, second = listing("--seed", "7", "--max", "40"), listing("--seed", "7", "--max", "40")
+check(len(first) == 40, f"--max 40 lists 40 mutants (got {len(first)})")
+check(first == second, "--list is the same twice")
+check(first != listing("--seed", "8", "--max", "40"), "another seed picks another sample")
+ids = [line.split("\t")[0] for line in first]
+check(len(set(ids)) == len(ids), "ids are unique")
+check(any(i.startswith("shaders/") for i in ids) and any(i.startswith("harness/") for i in ids),
+      "the sample covers shaders and harness code")
+only = listing("--only", ids[3])
+check(len(only) == 1 and only[0] == first[3], "--only ID lists that mutant")
+
+with tempfile.TemporaryDirectory() as tmp:
+    copy = Path(tmp)
+    for folder in ("shaders", "harness/compare", "harness/golden", "harness/invariants"):
+        shutil.copytree(ROOT / folder, copy / folder)
+    every = ops.all_mutants(copy)
+    by_op = {}
+    for m in every:
+        by_op.setdefault(m.op, m)
+    expected_ops = {"cmp", "bound", "minmax", "arith", "float", "int", "delete", "cond-true",
+                    "cond-false"}
+    check(set(by_op) == expected_ops, f"every operator has sites (got {sorted(by_op)})")
+    for op, m in sorted(by_op.items()):
+        path = copy / m.file
+        before = path.read_bytes()
+        original = ops.apply(copy, m)
+        mutated = path.read_bytes()
+        old_lines, new_lines = before.decode().split("\n"), mutated.decode().split("\n")
+        diff = [i for i, (a, b) in enumerate(zip(old_lines, new_lines)) if a != b]
+        check(len(old_lines) == len(new_lines) and diff == [m.line - 1],
+              f"{m.id}: changes exactly line {m.line}")
+        check(new_lines[m.line - 1].strip() == m.after, f"{m.id}: writes the listed mutation")
+        ops.restore(copy, m, original)
+        check(path.read_bytes() == before, f"{m.id}: restore leaves the file byte-identical")
+
+    # A rename (what a refactor of shader constants does) keeps every id of the file.
+    cas = copy / "shaders" / "cas.comp"
+    ids_before = [m.id for m in ops.file_mutants(copy, "shaders/cas.comp", "shader")]
+    cas.write_text(cas.read_text().replace("crossMin", "crossLowest").replace("boxMax", "hiBox"))
+    ids_after = [m.id for m in ops.file_mutants(copy, "shaders/cas.comp", "shader")]
+    check(ids_before and ids_before == ids_after, "renaming identifiers keeps the mutant ids")
+
+    # Comments, strings and #include lines are never mutated.
+    probe = copy / "harness" / "compare" / "probe_fixture.cpp"
+    probe.write_text('#include <vector>\n// a < b + 1\nconst char* s = "x < 2";\n/* if (a) */\n')
+    check(ops.file_mutants(copy, "harness/compare/probe_fixture.cpp", "harness") == [],
+          "no sites in comments, strings or includes")
+
+print("mutate selftest:", "FAIL" if failures else "ok", f"({len(failures)} failure(s))")
+sys.exit(1 if failures else 0)

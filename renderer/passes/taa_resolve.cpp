@@ -5,6 +5,7 @@
 
 #include "passes/storage_image.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -100,13 +101,9 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
       uniforms_(ctx, sizeof(gpu::TaaUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
-  std::vector<VkDescriptorType> bindings(TAA_BINDING_COUNT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  bindings[TAA_BINDING_UNIFORMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  bindings[TAA_BINDING_HISTORY_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  bindings[TAA_BINDING_DEBUG_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  bindings[TAA_BINDING_REJECT_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  withHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", bindings, 0, taaSpecConstants(spec, true));
-  withoutHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", bindings, 0, taaSpecConstants(spec, false));
+  withHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, true));
+  withoutHistory_ =
+      vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, false));
   const VkFormat format = spec.taa.history_format == HistoryFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                            : VK_FORMAT_R16G16B16A16_SFLOAT;
   history_[0] = storageImage(ctx, "history_a", resolveOutputSize(spec), format);
@@ -132,36 +129,25 @@ void TaaResolvePass::record(VkCommandBuffer cmd, const script::FrameState& state
   vk::Image& next = history_[current_];
   const bool hasHistory = !state.resetHistory;
 
-  vk::Bindings b;
-  b.uniform(TAA_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(gpu::TaaUniforms));
-  auto bindSampled = [&](uint32_t binding, vk::Image* image, vk::Image& fallback, VkSampler sampler) {
-    vk::Image& img = image ? *image : fallback;
-    img.use(cmd, vk::Use::SampledCompute);
-    b.sampled(binding, img.view(), sampler);
+  vk::Dispatch d(hasHistory ? withHistory_ : withoutHistory_);
+  d.uniform(TAA_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(gpu::TaaUniforms));
+  auto sample = [&](uint32_t binding, vk::Image* image, vk::Image& fallback, VkSampler sampler) {
+    d.sample(binding, image ? *image : fallback, sampler);
   };
-  bindSampled(TAA_BINDING_COLOR, in.color, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_DEPTH, in.depth, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_VELOCITY, in.velocity, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_IDS, in.ids, dummyUint_, point_.handle());
-  bindSampled(TAA_BINDING_NORMAL, in.normal, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_HISTORY, &previous, dummyFloat_, linear_.handle());
-  bindSampled(TAA_BINDING_PREV_DEPTH, in.prevDepth, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_PREV_NORMAL, in.prevNormal, dummyFloat_, point_.handle());
-  bindSampled(TAA_BINDING_PREV_IDS, in.prevIds, dummyUint_, point_.handle());
-  bindSampled(TAA_BINDING_PREV_VELOCITY, in.prevVelocity, dummyFloat_, point_.handle());
-  next.use(cmd, vk::Use::StorageWrite);
-  b.storage(TAA_BINDING_HISTORY_OUT, next.view());
-  vk::Image& debugTarget = debug_ ? debug_ : dummyStorage_;
-  debugTarget.use(cmd, vk::Use::StorageWrite);
-  b.storage(TAA_BINDING_DEBUG_OUT, debugTarget.view());
-  vk::Image& rejectTarget = rejection_ ? rejection_ : dummyReject_;
-  rejectTarget.use(cmd, vk::Use::StorageWrite);
-  b.storage(TAA_BINDING_REJECT_OUT, rejectTarget.view());
-
-  const vk::Pipeline& pipeline = hasHistory ? withHistory_ : withoutHistory_;
-  pipeline.bind(cmd);
-  b.push(ctx_, cmd, pipeline);
-  vk::dispatch2d(cmd, uint32_t(spec_.render.width), uint32_t(spec_.render.height));
+  sample(TAA_BINDING_COLOR, in.color, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_DEPTH, in.depth, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_VELOCITY, in.velocity, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_IDS, in.ids, dummyUint_, point_.handle());
+  sample(TAA_BINDING_NORMAL, in.normal, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_HISTORY, &previous, dummyFloat_, linear_.handle());
+  sample(TAA_BINDING_PREV_DEPTH, in.prevDepth, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_PREV_NORMAL, in.prevNormal, dummyFloat_, point_.handle());
+  sample(TAA_BINDING_PREV_IDS, in.prevIds, dummyUint_, point_.handle());
+  sample(TAA_BINDING_PREV_VELOCITY, in.prevVelocity, dummyFloat_, point_.handle());
+  d.store(TAA_BINDING_HISTORY_OUT, next)
+      .store(TAA_BINDING_DEBUG_OUT, debug_ ? debug_ : dummyStorage_)
+      .store(TAA_BINDING_REJECT_OUT, rejection_ ? rejection_ : dummyReject_)
+      .record(ctx_, cmd, uint32_t(spec_.render.width), uint32_t(spec_.render.height));
 }
 
 }  // namespace taa

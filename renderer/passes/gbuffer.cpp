@@ -177,11 +177,10 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   drawList(cmd, opaque_, draws.opaque, f, lodBias);
   sky_.bind(cmd);
+  // The sky reads the frame and the instance block's layout, no texture or vertices.
   vk::Bindings()
       .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
-      .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(0), scene_.sampler(0))
-      .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0, VK_WHOLE_SIZE)
       .push(ctx_, cmd, sky_);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (config_.deferred) {

@@ -135,8 +135,29 @@
     "use mean +- gamma * sigma of the neighbourhood as the box",                                   \
     "shaders/taa/neighborhood.glsl")                                                               \
   F(variance_gamma, 1.0f, 0.0f, 10.0f, 4, TAA_PARAM_VARIANCE_GAMMA, kFullOnly,                     \
-    [](const TaaSpec& t) { return t.variance_clip; }, "taa.variance_clip is true",                 \
+    [](const TaaSpec& t) { return t.variance_clip && !t.motion_adaptive_gamma; },                  \
+    "taa.variance_clip is true and taa.motion_adaptive_gamma is false",                            \
     "gamma of variance clipping", "shaders/taa/neighborhood.glsl")                                 \
+  B(motion_adaptive_gamma, false, 23, kMotionAdaptiveGamma, kFullOnly,                             \
+    [](const TaaSpec& t) { return t.variance_clip; }, "taa.variance_clip is true",                 \
+    "Intel TAA sample: the variance-clipping gamma goes from variance_gamma_static (still pixels " \
+    "keep highlights a tight box would cut) to variance_gamma_moving (moving pixels lose their "   \
+    "trails), lerped by the square of 1 - speed / variance_gamma_velocity_px; replaces "           \
+    "variance_gamma",                                                                              \
+    "shaders/taa/neighborhood.glsl")                                                               \
+  F(variance_gamma_moving, 0.75f, 0.0f, 10.0f, 9, TAA_PARAM_VARIANCE_GAMMA_MOVING, kFullOnly,      \
+    [](const TaaSpec& t) { return t.motion_adaptive_gamma; }, "taa.motion_adaptive_gamma is true", \
+    "variance gamma of pixels moving at variance_gamma_velocity_px or faster",                     \
+    "shaders/taa/neighborhood.glsl")                                                               \
+  F(variance_gamma_static, 2.0f, 0.0f, 10.0f, 10, TAA_PARAM_VARIANCE_GAMMA_STATIC, kFullOnly,      \
+    [](const TaaSpec& t) { return t.motion_adaptive_gamma; }, "taa.motion_adaptive_gamma is true", \
+    "variance gamma of still pixels", "shaders/taa/neighborhood.glsl")                             \
+  F(variance_gamma_velocity_px, 128.0f, 1e-3f, 1e6f, 11, TAA_PARAM_VARIANCE_GAMMA_VELOCITY_PX,     \
+    kFullOnly, [](const TaaSpec& t) { return t.motion_adaptive_gamma; },                           \
+    "taa.motion_adaptive_gamma is true",                                                           \
+    "speed (output pixels per frame) at which the gamma reaches variance_gamma_moving (Intel: "    \
+    "128 at 1080p)",                                                                               \
+    "shaders/taa/neighborhood.glsl")                                                               \
   B(shaped_neighborhood, false, 12, kShaped, kFullOnly,                                            \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "average the 3x3 box with the 5-tap cross box", "shaders/taa/neighborhood.glsl")               \

@@ -11,7 +11,15 @@ struct Box {
 };
 
 // The gamma of variance clipping for a pixel moving by motionPx (output pixels) this frame.
-float varianceGamma(TaaSettings s, vec2 motionPx) { return s.variance_gamma; }
+// Motion-adaptive, as in Intel's TAA sample (GameTechDev/TAA, TAAResolve.hlsl): a velocity
+// confidence 1 - speed / FRAME_VELOCITY_IN_PIXELS_DIFF (128), squared, lerps the gamma from
+// MIN_VARIANCE_GAMMA 0.75 under motion to MAX_VARIANCE_GAMMA 2 at rest, so that still pixels
+// keep the specular highlights a tight box cuts, and moving ones shed their trails.
+float varianceGamma(TaaSettings s, vec2 motionPx) {
+  if (!s.motion_adaptive_gamma) return s.variance_gamma;
+  float confidence = clamp(1.0 - length(motionPx) / s.variance_gamma_velocity_px, 0.0, 1.0);
+  return mix(s.variance_gamma_moving, s.variance_gamma_static, confidence * confidence);
+}
 
 // `taps` are the 3x3 samples in working space, row-major, centre at 4; `valid`
 // marks the finite ones (invalid taps do not shape the box); motionPx is the pixel's

@@ -19,6 +19,7 @@
 #include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
+#include "spec/taa_modes.h"
 #include "stereo.h"
 #include "vk/check.h"
 #include "vk/context.h"
@@ -59,14 +60,13 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 }
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
-  if (!plan.taa) return nullptr;
-  if (spec.taa.mode == spec::TaaMode::Tscmaa) return nullptr;  // TscmaaPass replaces the resolve
+  if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 
 std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
                                        const RenderOptions& o) {
-  if (spec.taa.mode != spec::TaaMode::Tscmaa) return nullptr;
+  if (!spec::modeRule(spec.taa.mode).tscmaa) return nullptr;
   return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
 }
 

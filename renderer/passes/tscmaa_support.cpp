@@ -61,9 +61,10 @@ gpu::TaaUniforms taaUniforms(const script::FrameState& s, glm::ivec2 eyeSize, fl
   const glm::vec4 size(glm::vec2(eyeSize), 1.0f / glm::vec2(eyeSize));
   u.renderSize = u.prevRenderSize = u.outputSize = size;
   u.jitter = glm::vec4(s.jitter, 0.0f, 0.0f);
-  u.blend = glm::vec4(1.0f - historyWeight, 1.0f, 0.0f, 0.0f);
-  u.limits = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
-  u.planes = glm::vec4(s.camera.nearPlane, s.camera.farPlane, 0.0f, 0.0f);
+  u.view = glm::vec4(s.camera.nearPlane, s.camera.farPlane, 1.0f, 0.0f);
+  // tscmaa_taa.comp reads alpha and the variance gamma; its other settings are fixed there.
+  u.settings[spec::TAA_PARAM_ALPHA / 4][spec::TAA_PARAM_ALPHA % 4] = 1.0f - historyWeight;
+  u.settings[spec::TAA_PARAM_VARIANCE_GAMMA / 4][spec::TAA_PARAM_VARIANCE_GAMMA % 4] = 1.0f;
   return u;
 }
 

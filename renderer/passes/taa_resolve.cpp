@@ -46,6 +46,9 @@ constexpr bool taaSpecIdsUnique() {
   constexpr int ids[] = {TAA_SPEC_RESOLVE,     TAA_SPEC_HAS_HISTORY,
                          TAA_SPEC_UPSAMPLE,    TAA_SPEC_DEBUG,
                          TAA_SPEC_REJECT_MASK, TAA_SETTINGS(TAA_ID_E, TAA_ID_B, TAA_ID_F)};
+#undef TAA_ID_E
+#undef TAA_ID_B
+#undef TAA_ID_F
   for (size_t a = 0; a < std::size(ids); ++a)
     for (size_t b = a + 1; b < std::size(ids); ++b)
       if (ids[a] == ids[b]) return false;
@@ -60,6 +63,9 @@ constexpr bool taaSlotsValid() {
 #define TAA_SLOT_B(key, def, id, name, modes, rule, text, doc, impl)
 #define TAA_SLOT_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) slot,
   constexpr int slots[] = {TAA_SETTINGS(TAA_SLOT_E, TAA_SLOT_B, TAA_SLOT_F)};
+#undef TAA_SLOT_E
+#undef TAA_SLOT_B
+#undef TAA_SLOT_F
   for (size_t a = 0; a < std::size(slots); ++a) {
     if (slots[a] < 0 || slots[a] >= 4 * TAA_SETTING_VEC4S) return false;
     for (size_t b = a + 1; b < std::size(slots); ++b)
@@ -90,6 +96,9 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
   c.set(id, (modes & inPath) != 0 && t.key);
 #define TAA_SPEC_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
   TAA_SETTINGS(TAA_SPEC_E, TAA_SPEC_B, TAA_SPEC_F)
+#undef TAA_SPEC_E
+#undef TAA_SPEC_B
+#undef TAA_SPEC_F
   return c;
 }
 
@@ -110,6 +119,9 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
 #define TAA_PARAM_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   u.settings[slot / 4][slot % 4] = t.key;
   TAA_SETTINGS(TAA_PARAM_E, TAA_PARAM_B, TAA_PARAM_F)
+#undef TAA_PARAM_E
+#undef TAA_PARAM_B
+#undef TAA_PARAM_F
   return u;
 }
 

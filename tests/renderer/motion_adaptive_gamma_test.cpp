@@ -51,12 +51,12 @@ spec::CaseSpec motionGammaCase(bool adaptive, float gamma) {
   return spec;
 }
 
-bool sameImage(const Image& a, const Image& b) {
+bool motionGammaSame(const Image& a, const Image& b) {
   return a.data == b.data;
 }
 
 // Mean distance of the output from the history over pixels whose history stays on screen.
-double lostHistory(const Image& out, int margin) {
+double motionGammaLost(const Image& out, int margin) {
   double sum = 0.0;
   int n = 0;
   for (int y = margin; y < kMotionGammaH - margin; ++y)
@@ -79,7 +79,7 @@ TEST(MotionAdaptiveGamma, LerpsFromStaticToMovingGammaBySquaredVelocityConfidenc
     const test::SyntheticResolve in = motionGammaFrame(step.velocity);
     const Image adaptive = test::gpuResolve(motionGammaCase(true, 1.0f), in).output;
     const Image fixed = test::gpuResolve(motionGammaCase(false, step.gamma), in).output;
-    EXPECT_TRUE(sameImage(adaptive, fixed))
+    EXPECT_TRUE(motionGammaSame(adaptive, fixed))
         << "velocity " << step.velocity.x << "," << step.velocity.y << " should clip with gamma "
         << step.gamma;
   }
@@ -98,8 +98,8 @@ TEST(MotionAdaptiveGamma, StillPixelsKeepHistoryThatMovingPixelsLose) {
       test::gpuResolve(motionGammaCase(false, 1.0f), motionGammaFrame({4.0f, 0.0f})).output;
   const int margin = 5;  // the history moved 4 pixels: the border has none
   // By the numbers above: 0.050 against 0.064 at rest, 0.135 against 0.064 in motion.
-  EXPECT_LT(lostHistory(still, margin), lostHistory(stillFixed, margin) - 0.01);
-  EXPECT_GT(lostHistory(moving, margin), lostHistory(movingFixed, margin) + 0.05);
+  EXPECT_LT(motionGammaLost(still, margin), motionGammaLost(stillFixed, margin) - 0.01);
+  EXPECT_GT(motionGammaLost(moving, margin), motionGammaLost(movingFixed, margin) + 0.05);
 }
 
 }  // namespace

@@ -5,31 +5,23 @@
 
 #include "core/image_io.h"
 #include "readback.h"
-#include "vk/transfer.h"
+#include "vk/barrier.h"
 
 namespace taa {
 
 namespace {
 
-bool wants(const spec::CaseSpec& spec, spec::AuxBuffer b) {
+bool wantsAuxBuffer(const spec::CaseSpec& spec, spec::AuxBuffer b) {
   return std::find(spec.output.aux.begin(), spec.output.aux.end(), b) != spec.output.aux.end();
 }
 
-// The top-left width x height of `image`, decoded by its format.
-Image readRegion(vk::Context& ctx, vk::Image& image, int width, int height) {
-  return decodeTarget(vk::readImage(ctx, image), image.desc().format, int(image.desc().width),
-                      width, height);
-}
-
-// The mask's bits as one float channel (exact: they stay below 2^24).
-Image readMask(vk::Context& ctx, vk::Image& mask, int width, int height) {
-  const auto bytes = vk::readImage(ctx, mask);
-  Image out(width, height, 1);
-  const size_t stride = mask.desc().width;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
+// A mask's bits as one float channel (exact: they stay below 2^24).
+Image decodeBits(const uint8_t* bytes, int stride, glm::ivec2 size) {
+  Image out(size.x, size.y, 1);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
       uint32_t bits;
-      std::memcpy(&bits, &bytes[(size_t(y) * stride + size_t(x)) * 4], 4);
+      std::memcpy(&bits, &bytes[(size_t(y) * size_t(stride) + size_t(x)) * 4], 4);
       out.at(x, y) = float(bits);
     }
   return out;
@@ -37,43 +29,77 @@ Image readMask(vk::Context& ctx, vk::Image& mask, int width, int height) {
 
 }  // namespace
 
-void readFrameColor(vk::Context& ctx, const FrameSources& src, FrameRecord& record) {
-  record.color = readRegion(ctx, *src.output, src.outputSize.x, src.outputSize.y);
-  record.colorSha256 = pixelSha256(record.color);
+void FrameReadback::add(Kind kind, std::string name, vk::Image& image, glm::ivec2 size) {
+  wanted_.push_back(
+      {&image,
+       Pending{kind, std::move(name), {}, image.desc().format, int(image.desc().width), size}});
 }
 
-void readFrameImages(vk::Context& ctx, const spec::CaseSpec& spec, const RenderOptions& o,
-                     const FrameSources& src, FrameRecord& record) {
-  const int w = src.renderSize.x, h = src.renderSize.y;
-  record.hasImages = true;
-  readFrameColor(ctx, src, record);
-  if (src.reference) {
-    vk::Image& ref = src.reference->output();
-    record.reference = readRegion(ctx, ref, int(ref.desc().width), int(ref.desc().height));
-    record.hasReference = true;
+void FrameReadback::record(VkCommandBuffer cmd, const spec::CaseSpec& spec, const RenderOptions& o,
+                           const FrameSources& src, bool images) {
+  wanted_.clear();
+  images_ = images;
+  add(Kind::Output, "color", *src.output, src.outputSize);
+  if (images) {
+    if (src.reference) {
+      vk::Image& ref = src.reference->output();
+      add(Kind::Reference, "reference", ref, {int(ref.desc().width), int(ref.desc().height)});
+    }
+    GBufferTargets& t = *src.targets;
+    const glm::ivec2 render = src.renderSize;
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::Depth)) add(Kind::Aux, "depth", t.depth, render);
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::Velocity) || o.captureVelocity)
+      add(Kind::Aux, "velocity", t.velocity, render);
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::Normal)) add(Kind::Aux, "normal", t.normal, render);
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::MaterialId) || o.captureIds)
+      add(Kind::Aux, "material_id", t.ids, render);
+    if (o.captureCurrent) {
+      // TSCMAA keeps every eye's input side by side; elsewhere the resolve input is it.
+      vk::Image* input = src.tscmaa && src.tscmaa->input() ? src.tscmaa->input() : src.resolveInput;
+      add(Kind::Aux, "current", *input, src.tscmaa ? src.outputSize : render);
+    }
+    if (src.adaptive)
+      for (const AdaptiveCapture& c : src.adaptive->captures())
+        add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, render);
+    if (o.captureTscmaa && src.tscmaa) {
+      add(Kind::Aux, "cmaa", src.tscmaa->cmaa(), src.outputSize);
+      add(Kind::Bits, "tscmaa_mask", src.tscmaa->mask(), src.outputSize);
+    }
   }
-  GBufferTargets& t = *src.targets;
-  auto read = [&](vk::Image& img) { return readRegion(ctx, img, w, h); };
-  if (wants(spec, spec::AuxBuffer::Depth)) record.aux.push_back({"depth", read(t.depth)});
-  if (wants(spec, spec::AuxBuffer::Velocity) || o.captureVelocity)
-    record.aux.push_back({"velocity", read(t.velocity)});
-  if (wants(spec, spec::AuxBuffer::Normal)) record.aux.push_back({"normal", read(t.normal)});
-  if (wants(spec, spec::AuxBuffer::MaterialId) || o.captureIds)
-    record.aux.push_back({"material_id", read(t.ids)});
-  if (o.captureCurrent) {
-    // TSCMAA keeps every eye's input side by side; elsewhere the resolve input is it.
-    vk::Image* input = src.tscmaa && src.tscmaa->input() ? src.tscmaa->input() : src.resolveInput;
-    const glm::ivec2 size = src.tscmaa ? src.outputSize : src.renderSize;
-    record.aux.push_back({"current", readRegion(ctx, *input, size.x, size.y)});
+  // One transition point for every image read, then the copies, then the host's turn.
+  vk::BarrierBatch barriers;
+  for (auto& [image, p] : wanted_) barriers.use(*image, vk::Use::TransferSrc);
+  barriers.flush(cmd);
+  ring_.reset();
+  pending_.clear();
+  for (auto& [image, p] : wanted_) {
+    p.slot = ring_.copyImage(cmd, *image);
+    pending_.push_back(p);
   }
-  if (src.adaptive)
-    for (auto& c : src.adaptive->readCaptures(src.renderSize)) record.aux.push_back(std::move(c));
-  if (o.captureTscmaa && src.tscmaa) {
-    record.aux.push_back(
-        {"cmaa", readRegion(ctx, src.tscmaa->cmaa(), src.outputSize.x, src.outputSize.y)});
-    record.aux.push_back(
-        {"tscmaa_mask", readMask(ctx, src.tscmaa->mask(), src.outputSize.x, src.outputSize.y)});
+  ring_.finishCopies(cmd);
+  wanted_.clear();
+}
+
+void FrameReadback::finish(FrameRecord& record) {
+  record.hasImages = images_;
+  for (const Pending& p : pending_) {
+    const uint8_t* bytes = ring_.data(p.slot);
+    if (p.kind == Kind::Bits) {
+      record.aux.push_back({p.name, decodeBits(bytes, p.stride, p.size)});
+      continue;
+    }
+    Image image = decodeTarget(bytes, p.format, p.stride, p.size.x, p.size.y);
+    if (p.kind == Kind::Output) {
+      record.color = std::move(image);
+      record.colorSha256 = pixelSha256(record.color);
+    } else if (p.kind == Kind::Reference) {
+      record.reference = std::move(image);
+      record.hasReference = true;
+    } else {
+      record.aux.push_back({p.name, std::move(image)});
+    }
   }
+  pending_.clear();
 }
 
 std::vector<std::pair<std::string, double>> tscmaaCounters(

@@ -1,5 +1,7 @@
 // Reading a completed frame's images back into its FrameRecord: the output, the
 // reference, the aux buffers the case asks for and the captures the harness needs.
+// Every copy is recorded into the frame's own command buffer, behind one barrier, into
+// one staging ring reused frame after frame; after the frame's wait they are decoded.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -13,6 +15,7 @@
 #include "passes/reference.h"
 #include "passes/tscmaa.h"
 #include "renderer.h"
+#include "vk/staging_ring.h"
 
 namespace taa {
 
@@ -27,11 +30,36 @@ struct FrameSources {
   AdaptivePass* adaptive = nullptr;
 };
 
-// The output alone, with its hash (RenderOptions::hashEveryFrame); readFrameImages does this too.
-void readFrameColor(vk::Context& ctx, const FrameSources& src, FrameRecord& record);
+class FrameReadback {
+ public:
+  explicit FrameReadback(vk::Context& ctx) : ring_(ctx) {}
 
-void readFrameImages(vk::Context& ctx, const spec::CaseSpec& spec, const RenderOptions& options,
-                     const FrameSources& src, FrameRecord& record);
+  // Records the copies of the output alone (`images` false: RenderOptions::hashEveryFrame)
+  // or of the output and every image the case and options ask for.
+  void record(VkCommandBuffer cmd, const spec::CaseSpec& spec, const RenderOptions& options,
+              const FrameSources& src, bool images);
+  // After the frame's commands completed: decodes what record() copied into `record`.
+  void finish(FrameRecord& record);
+
+  const vk::StagingRing& ring() const { return ring_; }
+
+ private:
+  enum class Kind { Output, Reference, Aux, Bits };
+  struct Pending {
+    Kind kind;
+    std::string name;
+    vk::StagingRing::Slot slot;
+    VkFormat format;
+    int stride;  // the image's width in texels
+    glm::ivec2 size;
+  };
+  void add(Kind kind, std::string name, vk::Image& image, glm::ivec2 size);
+
+  vk::StagingRing ring_;
+  std::vector<std::pair<vk::Image*, Pending>> wanted_;
+  std::vector<Pending> pending_;
+  bool images_ = false;
+};
 
 // "tscmaa_edges" and "tscmaa_taa_pixels" summed over the eyes.
 std::vector<std::pair<std::string, double>> tscmaaCounters(const std::vector<TscmaaCounts>& counts);

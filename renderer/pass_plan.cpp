@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "spec/taa_modes.h"
+
 namespace taa {
 
 namespace {
@@ -13,20 +15,22 @@ bool wantsAux(const spec::CaseSpec& s, spec::AuxBuffer b) {
 PassPlan planPasses(const spec::CaseSpec& s) {
   using namespace spec;
   PassPlan p;
-  const auto& t = s.taa;
-  p.taa = t.mode != TaaMode::Off;
-  p.tscmaa = t.mode == TaaMode::Tscmaa;
-  const bool accumulate = t.mode == TaaMode::Accumulate;
-  const bool full = t.mode == TaaMode::Full || t.mode == TaaMode::Adaptive || accumulate;
+  // What runs comes from the mode's rule, with the settings it runs with.
+  const ModeRule& rule = modeRule(s.taa.mode);
+  const TaaSpec t = effectiveTaa(s.taa);
+  p.taa = rule.resolve || rule.tscmaa;
+  p.tscmaa = rule.tscmaa;
+  const bool full = rule.resolve && rule.path == Resolve::Full;
   const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
   const bool antiGhost = full && t.anti_ghosting;
-  const bool consistency = (full && t.consistency) || accumulate;
+  const bool consistency = full && t.consistency;
   p.motionBlur = s.post.motion_blur;
-  p.velocity = reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
+  p.velocity =
+      reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
   // Adaptive ray tracing segments by material id and normal derivatives.
-  p.adaptive = t.mode == TaaMode::Adaptive;
-  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency || p.adaptive ||
-          wantsAux(s, AuxBuffer::MaterialId);
+  p.adaptive = rule.adaptive;
+  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||
+          p.adaptive || wantsAux(s, AuxBuffer::MaterialId);
   p.deferred = s.render.path == RenderPath::Deferred;
   p.normal = consistency || p.deferred || p.adaptive || wantsAux(s, AuxBuffer::Normal);
   p.prevDepth = full && (t.depth_culling || consistency);

@@ -4,6 +4,7 @@
 
 #include "passes/cas.h"
 #include "passes/fxaa.h"
+#include "passes/image_pass.h"
 #include "passes/motion_blur.h"
 #include "passes/post_filter.h"
 #include "passes/sharpen.h"
@@ -19,16 +20,41 @@ std::string describeImage(const vk::Image& image) {
          " KiB)";
 }
 
+// The passes after the resolve, in the order they run: when a case enables each, and how
+// it is built from the case. A new image pass is one line here (its output, named after
+// it, is allocated by the chain).
+struct AfterResolvePass {
+  const char* name;
+  bool (*enabled)(const PassPlan& plan);
+  std::unique_ptr<ImagePass> (*make)(vk::Context& ctx, const spec::CaseSpec& spec);
+};
+
+const AfterResolvePass kAfterResolve[] = {
+    {"sharpen", [](const PassPlan& p) { return p.sharpen; },
+     [](vk::Context& c, const spec::CaseSpec& s) -> std::unique_ptr<ImagePass> {
+       return std::make_unique<SharpenPass>(c, s.post.sharpen_amount);
+     }},
+    {"cas", [](const PassPlan& p) { return p.cas; },
+     [](vk::Context& c, const spec::CaseSpec& s) -> std::unique_ptr<ImagePass> {
+       return std::make_unique<CasPass>(c, s.post.sharpen_amount);
+     }},
+    {"fxaa", [](const PassPlan& p) { return p.fxaa; },
+     [](vk::Context& c, const spec::CaseSpec&) -> std::unique_ptr<ImagePass> {
+       return std::make_unique<FxaaPass>(c);
+     }},
+};
+
 }  // namespace
 
 struct PostChain::Passes {
   std::unique_ptr<MotionBlurPass> motionBlur;
-  std::unique_ptr<SharpenPass> sharpen;
-  std::unique_ptr<CasPass> cas;
-  std::unique_ptr<FxaaPass> fxaa;
-  vk::Image blurred;      // motion blur output, read by the resolve
-  vk::Image sharpened;    // sharpen or CAS output
-  vk::Image antialiased;  // FXAA output
+  vk::Image blurred;  // motion blur output, read by the resolve
+  struct Step {
+    const char* name;
+    std::unique_ptr<ImagePass> pass;
+    vk::Image output;
+  };
+  std::vector<Step> after;
 };
 
 PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan,
@@ -46,14 +72,9 @@ PostChain::PostChain(vk::Context& ctx, const spec::CaseSpec& spec, const PassPla
   // After the resolve the input is its output (output size); without a resolve it is
   // the render-size colour, allocated at the largest render size.
   const glm::ivec2 afterSize = plan.taa ? outputSize(spec) : maxRenderSize;
-  if (plan.sharpen) p_->sharpen = std::make_unique<SharpenPass>(ctx, post.sharpen_amount);
-  if (plan.cas) p_->cas = std::make_unique<CasPass>(ctx, post.sharpen_amount);
-  if (plan.sharpen || plan.cas)
-    p_->sharpened = makePostImage(ctx, plan.cas ? "cas" : "sharpen", afterSize);
-  if (plan.fxaa) {
-    p_->fxaa = std::make_unique<FxaaPass>(ctx);
-    p_->antialiased = makePostImage(ctx, "fxaa", afterSize);
-  }
+  for (const AfterResolvePass& a : kAfterResolve)
+    if (a.enabled(plan))
+      p_->after.push_back({a.name, a.make(ctx, spec), makePostImage(ctx, a.name, afterSize)});
 }
 
 PostChain::~PostChain() = default;
@@ -71,22 +92,11 @@ vk::Image& PostChain::beforeResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
 vk::Image& PostChain::afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
                                    const script::FrameState&, vk::Image& input, glm::ivec2 size) {
   vk::Image* current = &input;
-  if (p_->sharpen) {
-    timer.begin(cmd, "sharpen");
-    p_->sharpen->record(cmd, *current, p_->sharpened, size);
+  for (auto& step : p_->after) {
+    timer.begin(cmd, step.name);
+    step.pass->record(cmd, *current, step.output, size);
     timer.end(cmd);
-    current = &p_->sharpened;
-  } else if (p_->cas) {
-    timer.begin(cmd, "cas");
-    p_->cas->record(cmd, *current, p_->sharpened, size);
-    timer.end(cmd);
-    current = &p_->sharpened;
-  }
-  if (p_->fxaa) {
-    timer.begin(cmd, "fxaa");
-    p_->fxaa->record(cmd, *current, p_->antialiased, size);
-    timer.end(cmd);
-    current = &p_->antialiased;
+    current = &step.output;
   }
   return *current;
 }
@@ -94,11 +104,9 @@ vk::Image& PostChain::afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
 std::vector<std::string> PostChain::describe() const {
   std::vector<std::string> out;
   if (p_->motionBlur) out.push_back(p_->motionBlur->describe());
-  if (p_->sharpen) out.push_back(p_->sharpen->describe());
-  if (p_->cas) out.push_back(p_->cas->describe());
-  if (p_->fxaa) out.push_back(p_->fxaa->describe());
-  for (const vk::Image* image : {&p_->blurred, &p_->sharpened, &p_->antialiased})
-    if (*image) out.push_back(describeImage(*image));
+  for (const auto& step : p_->after) out.push_back(step.pass->describe());
+  if (p_->blurred) out.push_back(describeImage(p_->blurred));
+  for (const auto& step : p_->after) out.push_back(describeImage(step.output));
   return out;
 }
 

@@ -1,6 +1,6 @@
 // The passes around the temporal resolve, built only when the case enables them:
-// motion blur before it (it may pack speed into colour alpha for the resolve), then
-// sharpening (gradient or CAS) and FXAA after it.
+// motion blur before it (it may pack speed into colour alpha for the resolve), then the
+// image passes of post_chain.cpp's table after it (sharpening, gradient or CAS, then FXAA).
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -1,5 +1,7 @@
 #include "prev_gbuffer.h"
 
+#include "vk/barrier.h"
+
 namespace taa {
 
 namespace {
@@ -13,8 +15,7 @@ vk::Image copyOf(vk::Context& ctx, const vk::Image& source, const char* name) {
 
 void copy(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
   if (!to) return;
-  from.use(cmd, vk::Use::TransferSrc);
-  to.use(cmd, vk::Use::TransferDst);
+  vk::BarrierBatch().use(from, vk::Use::TransferSrc).use(to, vk::Use::TransferDst).flush(cmd);
   VkImageCopy region{};
   region.srcSubresource = {from.aspect(), 0, 0, 1};
   region.dstSubresource = {to.aspect(), 0, 0, 1};

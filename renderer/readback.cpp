@@ -18,7 +18,7 @@ float halfAt(const uint8_t* p) {
 
 }  // namespace
 
-Image decodeTarget(const std::vector<uint8_t>& bytes, VkFormat format, int targetWidth, int width, int height) {
+Image decodeTarget(const uint8_t* bytes, VkFormat format, int targetWidth, int width, int height) {
   switch (format) {
     case VK_FORMAT_R16G16B16A16_SFLOAT:
     case VK_FORMAT_R16G16_SFLOAT: {

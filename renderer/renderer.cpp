@@ -19,6 +19,7 @@
 #include "prev_gbuffer.h"
 #include "readback.h"
 #include "script/frame_state.h"
+#include "spec/taa_modes.h"
 #include "stereo.h"
 #include "vk/check.h"
 #include "vk/context.h"
@@ -59,14 +60,13 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 }
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
-  if (!plan.taa) return nullptr;
-  if (spec.taa.mode == spec::TaaMode::Tscmaa) return nullptr;  // TscmaaPass replaces the resolve
+  if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 
 std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
                                        const RenderOptions& o) {
-  if (spec.taa.mode != spec::TaaMode::Tscmaa) return nullptr;
+  if (!spec::modeRule(spec.taa.mode).tscmaa) return nullptr;
   return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
 }
 
@@ -101,6 +101,7 @@ struct Renderer::State {
   vk::Buffer frameUniforms;  // one slot per eye
   vk::Buffer instances;
   vk::GpuTimer timer;
+  FrameReadback readback;
   std::vector<std::string> log;
   int nextFrame = 0;
 
@@ -116,9 +117,9 @@ struct Renderer::State {
         gbuffer(c, gpuScene, config),
         prev(c, plan, targets),
         resolve(makeResolve(c, s, plan)),
-        adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(c, s, gpuScene,
-                                                                buildDrawList(sc, script::frameState(s, 0)),
-                                                                o.captureAdaptive)
+        adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(
+                                     c, s, gpuScene, buildDrawList(sc, script::frameState(s, 0)),
+                                     o.captureAdaptive)
                                : nullptr),
         tscmaa(makeTscmaa(c, s, o)),
         post(c, s, plan, maxRenderSize(s)),
@@ -132,7 +133,8 @@ struct Renderer::State {
             std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
                 sizeof(gpu::InstanceData),
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
-        timer(c) {
+        timer(c),
+        readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& p : plan.describe()) log.push_back(p);
@@ -238,6 +240,19 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
   if (s.adaptive && s.adaptive->debugView()) output = s.adaptive->debugView();
+  const bool readOutput = readImages || s.options.hashEveryFrame;
+  if (readOutput) {
+    FrameSources src;
+    src.output = output;
+    src.outputSize = outSize;
+    src.renderSize = state.renderSize;
+    src.resolveInput = resolveInput;
+    src.targets = &s.targets;
+    src.tscmaa = s.tscmaa.get();
+    src.reference = s.reference.get();
+    src.adaptive = s.adaptive.get();
+    s.readback.record(cmd, s.spec, s.options, src, readImages);
+  }
   s.ctx.submitAndWait(cmd);
 
   FrameRecord record;
@@ -248,21 +263,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.gpuMs = s.timer.read();
   if (s.tscmaa) record.stats = tscmaaCounters(s.tscmaa->counts());
   if (s.adaptive) record.stats = s.adaptive->stats();
-  if (readImages || s.options.hashEveryFrame) {
-    FrameSources src;
-    src.output = output;
-    src.outputSize = outSize;
-    src.renderSize = state.renderSize;
-    src.resolveInput = resolveInput;
-    src.targets = &s.targets;
-    src.tscmaa = s.tscmaa.get();
-    src.reference = s.reference.get();
-    src.adaptive = s.adaptive.get();
-    if (readImages)
-      readFrameImages(s.ctx, s.spec, s.options, src, record);
-    else
-      readFrameColor(s.ctx, src, record);
-  }
+  if (readOutput) s.readback.finish(record);
   return record;
 }
 

@@ -6,29 +6,20 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(constant_id = TAA_SPEC_MODE) const int kMode = 2;
+#include "taa/settings.glsl"
+
+// The resolve's own constants; every setting's comes from common/taa_settings.h below.
+layout(constant_id = TAA_SPEC_RESOLVE) const int kResolve = RESOLVE_FULL;
 layout(constant_id = TAA_SPEC_HAS_HISTORY) const bool kHasHistory = true;
-layout(constant_id = TAA_SPEC_TONE_WEIGHT) const int kToneWeight = 0;
-layout(constant_id = TAA_SPEC_USE_VELOCITY) const int kUseVelocity = 2;
-layout(constant_id = TAA_SPEC_VELOCITY_SAMPLING) const int kVelocitySampling = 0;
-layout(constant_id = TAA_SPEC_HISTORY_FILTER) const int kHistoryFilter = 0;
-layout(constant_id = TAA_SPEC_REJECT_OFFSCREEN) const bool kRejectOffscreen = true;
-layout(constant_id = TAA_SPEC_DEPTH_CULLING) const bool kDepthCulling = false;
-layout(constant_id = TAA_SPEC_CONSISTENCY) const bool kConsistency = false;
-layout(constant_id = TAA_SPEC_ANTI_GHOSTING) const bool kAntiGhosting = false;
-layout(constant_id = TAA_SPEC_RECTIFY) const int kRectify = 0;
-layout(constant_id = TAA_SPEC_VARIANCE_CLIP) const bool kVarianceClip = false;
-layout(constant_id = TAA_SPEC_SHAPED) const bool kShaped = false;
-layout(constant_id = TAA_SPEC_YCOCG) const bool kYCoCg = false;
-layout(constant_id = TAA_SPEC_SHRINK_CHROMA) const bool kShrinkChroma = false;
-layout(constant_id = TAA_SPEC_LUMA_WEIGHT) const bool kLumaWeight = false;
-layout(constant_id = TAA_SPEC_VELOCITY_ALPHA) const bool kVelocityAlpha = false;
-layout(constant_id = TAA_SPEC_REDUCE_BLEND) const bool kReduceBlend = false;
-layout(constant_id = TAA_SPEC_VELOCITY_IN_ALPHA) const bool kVelocityInAlpha = false;
 layout(constant_id = TAA_SPEC_UPSAMPLE) const bool kUpsample = false;
-layout(constant_id = TAA_SPEC_DEBUG) const int kDebug = 0;
+layout(constant_id = TAA_SPEC_DEBUG) const int kDebug = DEBUG_OUTPUT_NONE;
 layout(constant_id = TAA_SPEC_REJECT_MASK) const bool kRejectMask = false;
-layout(constant_id = TAA_SPEC_HALF_HISTORY) const bool kHalfHistory = true;
+
+#define TAA_CONSTANT_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+  layout(constant_id = id) const int name = def;
+#define TAA_CONSTANT_B(key, def, id, name, modes, rule, text, doc, impl) layout(constant_id = id) const bool name = def;
+#define TAA_CONSTANT_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
+TAA_SETTINGS(TAA_CONSTANT_E, TAA_CONSTANT_B, TAA_CONSTANT_F)
 
 layout(std140, binding = TAA_BINDING_UNIFORMS) uniform TaaBlock { TaaUniforms taaUniforms; };
 layout(binding = TAA_BINDING_COLOR) uniform sampler2D colorTex;
@@ -44,6 +35,16 @@ layout(binding = TAA_BINDING_PREV_VELOCITY) uniform sampler2D prevVelocityTex;
 layout(binding = TAA_BINDING_HISTORY_OUT) uniform writeonly image2D historyOut;
 layout(binding = TAA_BINDING_DEBUG_OUT, rgba16f) uniform writeonly image2D debugOut;
 layout(binding = TAA_BINDING_REJECT_OUT, r32ui) uniform writeonly uimage2D rejectOut;
+
+// This frame's settings: the constants above and the float settings' uniform slots.
+#define TAA_FILL_E(key, type, values, def, id, name, modes, rule, text, doc, impl) s.key = name;
+#define TAA_FILL_B(key, def, id, name, modes, rule, text, doc, impl) s.key = name;
+#define TAA_FILL_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) s.key = TAA_SETTING(taaUniforms, slot);
+TaaSettings resolveSettings() {
+  TaaSettings s;
+  TAA_SETTINGS(TAA_FILL_E, TAA_FILL_B, TAA_FILL_F)
+  return s;
+}
 
 #include "taa/color_space.glsl"
 #include "taa/history_filter.glsl"
@@ -79,12 +80,12 @@ Current currentSample(ivec2 q, ivec2 hi) {
   return c;
 }
 
-void writeOutput(ivec2 q, vec3 color, float rejected, float clampDistance, vec2 motionPx) {
+void writeOutput(TaaSettings s, ivec2 q, vec3 color, float rejected, float clampDistance, vec2 motionPx) {
   vec3 bounded = boundColor(color);
-  imageStore(historyOut, q, vec4(kHalfHistory ? roundToHalf(bounded) : bounded, 1.0));
-  if (kDebug == 1) imageStore(debugOut, q, vec4(motionPx * taaUniforms.limits.w * 0.5 + 0.5, 0.0, 1.0));
-  if (kDebug == 2) imageStore(debugOut, q, vec4(rejected, 0.0, 0.0, 1.0));
-  if (kDebug == 3) imageStore(debugOut, q, vec4(vec3(clampDistance * taaUniforms.limits.w), 1.0));
+  imageStore(historyOut, q, vec4(s.history_format == HISTORY_FORMAT_RGBA16F ? roundToHalf(bounded) : bounded, 1.0));
+  if (kDebug == DEBUG_OUTPUT_VELOCITY) imageStore(debugOut, q, vec4(motionPx * taaUniforms.view.z * 0.5 + 0.5, 0.0, 1.0));
+  if (kDebug == DEBUG_OUTPUT_REJECTION) imageStore(debugOut, q, vec4(rejected, 0.0, 0.0, 1.0));
+  if (kDebug == DEBUG_OUTPUT_CLAMP_DISTANCE) imageStore(debugOut, q, vec4(vec3(clampDistance * taaUniforms.view.z), 1.0));
 }
 
 void main() {
@@ -92,8 +93,9 @@ void main() {
   if (any(greaterThanEqual(q, ivec2(taaUniforms.outputSize.xy)))) return;
   ivec2 hi = ivec2(taaUniforms.renderSize.xy) - 1;
   vec2 uv = (vec2(q) + 0.5) * taaUniforms.outputSize.zw;
+  TaaSettings s = resolveSettings();
 
-  if (kMode == 0) {  // pass-through: the input, bit for bit
+  if (kResolve == RESOLVE_PASS_THROUGH) {  // pass-through: the input, bit for bit
     imageStore(historyOut, q, texelFetch(colorTex, min(q, hi), 0));
     return;
   }
@@ -111,7 +113,7 @@ void main() {
       vec3 c = texelFetch(colorTex, clamp(cur.pixel + ivec2(i, j), ivec2(0), hi), 0).rgb;
       valid[k] = !any(isnan(c));
       c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(kHalfMax));  // +Inf -> half max
-      taps[k] = toWorking(c);
+      taps[k] = toWorking(s, c);
       if (k == 4) centre = c;
       if (valid[k]) {
         finiteSum += c;
@@ -121,56 +123,60 @@ void main() {
   vec3 current = valid[4] ? centre : (finiteCount > 0.0 ? finiteSum / finiteCount : vec3(0.0));
 
   if (!kHasHistory) {
-    writeOutput(q, current, 1.0, 0.0, vec2(0.0));
+    writeOutput(s, q, current, 1.0, 0.0, vec2(0.0));
     if (kRejectMask) imageStore(rejectOut, q, uvec4(TAA_REJECT_NO_HISTORY));
     return;
   }
 
-  if (kMode == 1) {  // basic: the same pixel last frame, no reprojection, no rejection
+  if (kResolve == RESOLVE_BASIC) {  // the same pixel last frame, no reprojection, no rejection
     vec3 h = texelFetch(historyTex, q, 0).rgb;
-    writeOutput(q, toneWeightedBlend(h, current, taaUniforms.blend.x * cur.weight), 0.0, 0.0, vec2(0.0));
+    writeOutput(s, q, toneWeightedBlend(s, h, current, s.alpha * cur.weight), 0.0, 0.0, vec2(0.0));
     return;
   }
 
-  Reprojection r = reproject(uv, cur.pixel, hi);
+  Reprojection r = reproject(s, taaUniforms, depthTex, velocityTex, idsTex, uv, cur.pixel, hi);
   // Adaptive mode sends pixels off the previous frame to FXAA whether or not the
   // resolve rejects them, so that test is made here, before the clamp.
   bool wasOffscreen = offscreen(r.prevUv);
   bool rejected = false;
-  if (kRejectOffscreen && offscreen(r.prevUv)) rejected = true;
+  if (s.reject_offscreen && offscreen(r.prevUv)) rejected = true;
   r.prevUv = clamp(r.prevUv, vec2(0.0), vec2(1.0));
-  if (kDepthCulling && !rejected && depthRejects(r)) rejected = true;
-  if (kAntiGhosting && !rejected && antiGhostRejects(cur.pixel, hi, r.prevUv)) rejected = true;
+  if (s.depth_culling && !rejected && depthRejects(s, taaUniforms, prevDepthTex, r)) rejected = true;
+  if (s.anti_ghosting && !rejected &&
+      antiGhostRejects(taaUniforms, idsTex, velocityTex, prevIdsTex, prevVelocityTex, cur.pixel, hi, r.prevUv))
+    rejected = true;
 
   vec3 history;
-  if (kConsistency) {
-    Consistent cs = consistentHistory(r.prevUv, texelFetch(idsTex, cur.pixel, 0).r,
-                                      linearDepth(texelFetch(depthTex, cur.pixel, 0).r),
+  if (s.consistency) {
+    Consistent cs = consistentHistory(s, taaUniforms, historyTex, prevIdsTex, prevDepthTex, prevNormalTex, r.prevUv,
+                                      texelFetch(idsTex, cur.pixel, 0).r,
+                                      linearDepth(taaUniforms, texelFetch(depthTex, cur.pixel, 0).r),
                                       texelFetch(normalTex, cur.pixel, 0).xyz);
     history = cs.color;
     if (cs.level == 2) rejected = true;
   } else {
-    history = sampleHistory(historyTex, r.prevUv, taaUniforms.outputSize);
+    history = sampleHistory(s, historyTex, r.prevUv, taaUniforms.outputSize);
   }
 
-  vec3 wHistory = toWorking(history);
-  Box box = neighborhoodBox(taps, valid, toWorking(current));
-  vec3 wRectified = rectifyHistory(wHistory, box);
-  float clampDistance = abs(workingLuma(wRectified) - workingLuma(wHistory));
+  vec3 wHistory = toWorking(s, history);
+  Box box = neighborhoodBox(s, taps, valid, toWorking(s, current), r.motionPx);
+  vec3 wRectified = rectifyHistory(s, wHistory, box);
+  float clampDistance = abs(workingLuma(s, wRectified) - workingLuma(s, wHistory));
 
-  float alpha = taaUniforms.blend.x;
-  if (kLumaWeight) alpha = lottesAlpha(luma(current), luma(fromWorking(wRectified)));
-  if (kReduceBlend) alpha = reduceBlendNearClamp(alpha, workingLuma(wHistory), workingLuma(box.lo), workingLuma(box.hi));
-  if (kVelocityAlpha) {
-    float speed = kVelocityInAlpha ? texelFetch(colorTex, cur.pixel, 0).a * taaUniforms.outputSize.x * taaUniforms.renderSize.z
+  float alpha = s.alpha;
+  if (s.luma_weight) alpha = lottesAlpha(s, luma(current), luma(fromWorking(s, wRectified)));
+  if (s.reduce_blend_near_clamp)
+    alpha = reduceBlendNearClamp(alpha, workingLuma(s, wHistory), workingLuma(s, box.lo), workingLuma(s, box.hi));
+  if (s.velocity_alpha) {
+    float speed = s.velocity_in_alpha ? texelFetch(colorTex, cur.pixel, 0).a * taaUniforms.outputSize.x * taaUniforms.renderSize.z
                                    : length(r.motionPx);
-    alpha = velocityAlpha(alpha, speed);
+    alpha = velocityAlpha(s, alpha, speed);
   }
   alpha *= cur.weight;
-  if (rejected) alpha = taaUniforms.blend.y;
+  if (rejected) alpha = s.rejection_alpha;
 
-  vec3 result = toneWeightedBlend(fromWorking(wRectified), current, alpha);
-  writeOutput(q, result, rejected ? 1.0 : 0.0, clampDistance, r.motionPx);
+  vec3 result = toneWeightedBlend(s, fromWorking(s, wRectified), current, alpha);
+  writeOutput(s, q, result, rejected ? 1.0 : 0.0, clampDistance, r.motionPx);
   if (kRejectMask)
     imageStore(rejectOut, q, uvec4(wasOffscreen ? TAA_REJECT_OFFSCREEN : rejected ? TAA_REJECT_DISOCCLUDED : TAA_REJECT_NONE));
 }

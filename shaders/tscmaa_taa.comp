@@ -10,17 +10,7 @@
 
 layout(local_size_x = TSCMAA_LIST_GROUP) in;
 
-// The resolve's includes, fixed to TSCMAA's choices: linear blend, YCoCg variance box,
-// clip, Catmull-Rom 5-tap, depth reprojection.
-const int kToneWeight = 0;
-const bool kYCoCg = true;
-const bool kShaped = false;
-const bool kVarianceClip = true;
-const bool kShrinkChroma = false;
-const int kRectify = 2;
-const int kHistoryFilter = 3;
-const int kUseVelocity = 0;
-const int kVelocitySampling = 0;
+#include "taa/settings.glsl"
 
 layout(std140, binding = TSCMAA_BINDING_UNIFORMS) uniform TscmaaBlock { TscmaaUniforms u; };
 layout(std140, binding = TSCMAA_BINDING_TAA_UNIFORMS) uniform TaaBlock { TaaUniforms taaUniforms; };
@@ -32,17 +22,30 @@ layout(binding = TSCMAA_BINDING_CMAA) uniform sampler2D cmaaTex;
 layout(binding = TSCMAA_BINDING_DEPTH) uniform sampler2D depthTex;
 layout(binding = TSCMAA_BINDING_HISTORY) uniform sampler2D historyTex;
 layout(binding = TSCMAA_BINDING_HISTORY_OUT, rgba16f) uniform writeonly image2D historyOut;
-// Named by reprojection.glsl's velocity paths, which the constants above compile out.
-layout(binding = TSCMAA_BINDING_COUNT) uniform sampler2D velocityTex;
-layout(binding = TSCMAA_BINDING_COUNT + 1) uniform usampler2D idsTex;
 
 #include "taa/color_space.glsl"
 #include "taa/history_filter.glsl"
 #include "taa/neighborhood.glsl"
 #include "taa/rectify.glsl"
 #include "taa/reprojection.glsl"
+#include "taa/validation.glsl"
 
-bool offscreen(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))); }
+// The resolve's techniques, fixed to TSCMAA's choices: linear blend, YCoCg variance box
+// (gamma from the uniforms), clip, Catmull-Rom 5-tap, depth reprojection.
+TaaSettings tscmaaSettings() {
+  TaaSettings s = taaDefaultSettings();
+  s.alpha = TAA_SETTING(taaUniforms, TAA_PARAM_ALPHA);
+  s.variance_gamma = TAA_SETTING(taaUniforms, TAA_PARAM_VARIANCE_GAMMA);
+  s.tonemap_weighting = TONE_WEIGHT_NONE;
+  s.color_space = COLOR_SPACE_YCOCG;
+  s.shaped_neighborhood = false;
+  s.variance_clip = true;
+  s.shrink_chroma = false;
+  s.rectify = RECTIFY_CLIP;
+  s.history_filter = HISTORY_FILTER_CATMULL_ROM_5;
+  s.use_velocity = USE_VELOCITY_OFF;
+  return s;
+}
 
 void main() {
   uint index = gl_GlobalInvocationID.x;
@@ -50,6 +53,7 @@ void main() {
   ivec2 p = unpackPixel(taaEntries[index]);
   ivec2 hi = ivec2(u.size.xy) - 1;
   ivec2 offset = ivec2(int(u.eye.x), 0);
+  TaaSettings s = tscmaaSettings();
 
   vec3 taps[9];
   bool valid[9];
@@ -60,18 +64,18 @@ void main() {
       vec3 c = texelFetch(cmaaTex, clamp(p + ivec2(i, j), ivec2(0), hi) + offset, 0).rgb;
       valid[k] = !any(isnan(c));
       c = boundColor(c);
-      taps[k] = toWorking(c);
+      taps[k] = toWorking(s, c);
       if (k == 4) current = c;
     }
 
   vec2 uv = (vec2(p) + 0.5) * u.size.zw;
-  Reprojection r = reprojectDepth(uv, texelFetch(depthTex, p, 0).r);
+  Reprojection r = reprojectDepth(taaUniforms, uv, texelFetch(depthTex, p, 0).r);
   vec3 result = current;
   if (!offscreen(r.prevUv)) {
-    vec3 history = max(historyCatmullRom5(historyTex, r.prevUv, taaUniforms.outputSize), vec3(0.0));
-    Box box = neighborhoodBox(taps, valid, toWorking(current));
-    vec3 rectified = fromWorking(rectifyHistory(toWorking(history), box));
-    result = mix(rectified, current, taaUniforms.blend.x);
+    vec3 history = sampleHistory(s, historyTex, r.prevUv, taaUniforms.outputSize);
+    Box box = neighborhoodBox(s, taps, valid, toWorking(s, current), r.motionPx);
+    vec3 rectified = fromWorking(s, rectifyHistory(s, toWorking(s, history), box));
+    result = mix(rectified, current, s.alpha);
   }
   imageStore(historyOut, p, vec4(roundToHalf(boundColor(result)), 1.0));  // RGBA16F history
 }

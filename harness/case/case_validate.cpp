@@ -9,6 +9,7 @@
 #include "case/case_error.h"
 #include "case/validate_taa.h"
 #include "case/validate_tracks.h"
+#include "spec/taa_modes.h"
 
 namespace taa::cases {
 
@@ -201,8 +202,9 @@ void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.
-  // Temporal accumulation's published blend weight is 0.2 (seed 003).
-  if (spec.taa.mode == TaaMode::Accumulate && !present.count("taa.alpha")) spec.taa.alpha = 0.2f;
+  // A mode may have its own default alpha (accumulation: seed 003's 0.2).
+  if (const float alpha = modeRule(spec.taa.mode).alpha; alpha > 0.0f && !present.count("taa.alpha"))
+    spec.taa.alpha = alpha;
   if (spec.output.frames.empty()) spec.output.frames.push_back(frames - 1);
   std::sort(spec.output.frames.begin(), spec.output.frames.end());
   spec.output.frames.erase(std::unique(spec.output.frames.begin(), spec.output.frames.end()),

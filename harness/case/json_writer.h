@@ -122,6 +122,8 @@ class SchemaLister {
   template <class T>
   void add(const char* key, const T& value, const spec::Meta& meta, const nlohmann::json* range) {
     nlohmann::json row = {{"key", keyPath(key)}, {"default", toJson(value)}, {"doc", meta.doc}, {"impl", meta.impl}};
+    if (*meta.drives) row["drives"] = meta.drives;
+    if (*meta.when) row["when"] = meta.when;
     if constexpr (std::is_enum_v<T>) {
       row["type"] = "enum";
       auto names = nlohmann::json::array();

@@ -1,5 +1,7 @@
 #include "case/validate_taa.h"
 
+#include "spec/taa_modes.h"
+
 namespace taa::cases {
 
 namespace {
@@ -19,7 +21,8 @@ class Rules {
   void add(const std::string& key, const std::string& msg) { out.emplace_back(key, msg); }
   // `key` only means something when `condition` holds.
   void needs(const std::string& key, bool condition, const std::string& what) {
-    if (set(key) && !condition) add(key, "has no effect unless " + what + "; set that or remove the key");
+    if (set(key) && !condition)
+      add(key, "has no effect unless " + what + "; set that or remove the key");
   }
   std::vector<std::pair<std::string, std::string>> out;
 
@@ -40,12 +43,13 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
   const auto& a = s.adaptive;
   if (!a.trace_all) return;
   for (const char* key :
-       {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth", "adaptive.weight_material",
-        "adaptive.weight_luminance", "adaptive.history_count", "adaptive.trace_disoccluded",
-        "adaptive.fxaa_out_of_history"})
+       {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth",
+        "adaptive.weight_material", "adaptive.weight_luminance", "adaptive.history_count",
+        "adaptive.trace_disoccluded", "adaptive.fxaa_out_of_history"})
     if (r.set(key))
-      r.add(key, "adaptive.trace_all traces every pixel, so the segmentation settings do nothing; "
-                 "remove the key or trace_all");
+      r.add(key,
+            "adaptive.trace_all traces every pixel, so the segmentation settings do nothing; "
+            "remove the key or trace_all");
 }
 
 // TSCMAA's keys mean nothing to the other modes; stereo output holds two eyes side by
@@ -58,8 +62,6 @@ void tscmaaRules(Rules& r, const CaseSpec& s) {
     r.needs(key, tscmaa, "taa.mode is tscmaa");
   if (!tscmaa) return;
   r.needs("tscmaa.eye_separation", s.tscmaa.eyes == 2, "tscmaa.eyes is 2");
-  if (r.set("taa.history_format"))
-    r.add("taa.history_format", "TSCMAA's history is its RGBA16F output; remove the key");
   if (s.tscmaa.eyes == 2 && !s.output.aux.empty())
     r.add("output.aux",
           "tscmaa.eyes 2 renders the G-buffer once per eye and writes the eyes side by side; the "
@@ -73,63 +75,60 @@ void tscmaaRules(Rules& r, const CaseSpec& s) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s, const std::set<std::string>& present) {
+std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s,
+                                                             const std::set<std::string>& present) {
   Rules r(present);
-  const auto& t = s.taa;
-  const bool full = t.mode == TaaMode::Full || t.mode == TaaMode::Adaptive;
-  const bool accumulate = t.mode == TaaMode::Accumulate;
-  const bool blends = t.mode == TaaMode::Basic || full || accumulate;
+  const auto& taa = s.taa;
+  const ModeRule& rule = modeRule(taa.mode);
   const bool resamples = s.render.upsample != 1.0f || !s.render.scale_schedule.empty();
-  if (resamples &&
-      (t.mode == TaaMode::Off || t.mode == TaaMode::PassThrough || t.mode == TaaMode::Tscmaa))
-    r.add("taa.mode", std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
-                                  "output size; '") + enumToString(t.mode) + "' cannot: use basic or full");
+  if (resamples && !(rule.resolve && rule.path != Resolve::PassThrough))
+    r.add(
+        "taa.mode",
+        std::string("render.upsample / render.scale_schedule need a resolve that reconstructs the "
+                    "output size; '") +
+            enumToString(taa.mode) + "' cannot: use basic or full");
   tscmaaRules(r, s);
-
   adaptiveRules(r, s, resamples);
-  r.needs("taa.alpha", blends, "taa.mode is basic or full");
-  r.needs("taa.tonemap_weighting", blends, "taa.mode is basic or full");
-  // Accumulation reprojects (velocity or depth), tests consistency per tap and blends;
-  // the colour-based techniques of the full resolve are not part of it.
-  for (const char* key : {"taa.use_velocity", "taa.velocity_sampling", "taa.reject_offscreen", "taa.rejection_alpha",
-                          "taa.consistency_depth", "taa.consistency_normal"})
-    r.needs(key, full || accumulate, "taa.mode is full or accumulate");
-  for (const char* key : {"taa.history_filter", "taa.depth_culling", "taa.consistency", "taa.anti_ghosting",
-                          "taa.rectify", "taa.variance_clip", "taa.shaped_neighborhood", "taa.color_space",
-                          "taa.shrink_chroma", "taa.luma_weight", "taa.velocity_alpha",
-                          "taa.reduce_blend_near_clamp", "taa.velocity_in_alpha"})
-    r.needs(key, full, "taa.mode is full");
-  if (!full && !accumulate) return r.out;
-  if (accumulate) {
-    if (t.use_velocity == UseVelocity::Off && t.velocity_sampling == VelocitySampling::Longest3x3)
-      r.add("taa.velocity_sampling", "longest3x3 picks a velocity, but taa.use_velocity is off");
-    return r.out;
-  }
 
-  r.needs("taa.depth_threshold", t.depth_culling, "taa.depth_culling is true");
-  r.needs("taa.consistency_depth", t.consistency || accumulate, "taa.consistency is true");
-  r.needs("taa.consistency_normal", t.consistency || accumulate, "taa.consistency is true");
-  if (t.consistency && r.set("taa.history_filter"))
-    r.add("taa.history_filter", "taa.consistency resamples the history tap by tap (2x2, then 3x3); a history filter "
-                                "cannot apply as well: remove one of them");
-  if (t.use_velocity == UseVelocity::Off && t.velocity_sampling == VelocitySampling::Longest3x3)
-    r.add("taa.velocity_sampling", "longest3x3 picks a velocity, but taa.use_velocity is off; use pixel or "
-                                   "closest3x3 (which picks the nearest depth), or turn velocity on");
-  r.needs("taa.variance_gamma", t.variance_clip, "taa.variance_clip is true");
-  const bool rectifies = t.rectify != Rectify::None;
-  r.needs("taa.variance_clip", rectifies, "taa.rectify is clamp or clip");
-  r.needs("taa.shaped_neighborhood", rectifies, "taa.rectify is clamp or clip");
-  r.needs("taa.shrink_chroma", rectifies && t.color_space == ColorSpace::YCoCg,
-          "taa.rectify is clamp or clip and taa.color_space is ycocg");
-  r.needs("taa.alpha_min", t.luma_weight, "taa.luma_weight is true");
-  r.needs("taa.alpha_max", t.luma_weight, "taa.luma_weight is true");
-  if (t.luma_weight && t.alpha_min > t.alpha_max)
+  // Each setting of common/taa_settings.h means something only in its modes, and only
+  // where its rule holds for the settings the resolve runs with.
+  const TaaSpec e = effectiveTaa(taa);
+  const uint32_t bit = modeBit(taa.mode);
+  auto check = [&](const char* key, uint32_t modes, bool holds, const char* what) {
+    if (!(modes & bit))
+      r.needs(key, false, modesText(modes));
+    else
+      r.needs(key, holds, what);
+  };
+#define TAA_CHECK_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+  check("taa." #key, modes, rule(e), text);
+#define TAA_CHECK_B(key, def, id, name, modes, rule, text, doc, impl) \
+  check("taa." #key, modes, rule(e), text);
+#define TAA_CHECK_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  check("taa." #key, modes, rule(e), text);
+  TAA_SETTINGS(TAA_CHECK_E, TAA_CHECK_B, TAA_CHECK_F)
+#undef TAA_CHECK_E
+#undef TAA_CHECK_B
+#undef TAA_CHECK_F
+
+  // Rules between settings.
+  if (!(rule.resolve && rule.path == Resolve::Full)) return r.out;
+  if (taa.use_velocity == UseVelocity::Off && taa.velocity_sampling == VelocitySampling::Longest3x3)
+    r.add("taa.velocity_sampling",
+          "longest3x3 picks a velocity, but taa.use_velocity is off; use pixel or "
+          "closest3x3 (which picks the nearest depth), or turn velocity on");
+  if (rule.accumulate) return r.out;
+  if (taa.consistency && r.set("taa.history_filter"))
+    r.add("taa.history_filter",
+          "taa.consistency resamples the history tap by tap (2x2, then 3x3); a history filter "
+          "cannot apply as well: remove one of them");
+  if (taa.luma_weight && taa.alpha_min > taa.alpha_max)
     r.add("taa.alpha_min", "alpha_min must not exceed alpha_max");
-  if (t.luma_weight && r.set("taa.alpha"))
-    r.add("taa.alpha", "taa.luma_weight chooses alpha per pixel within [alpha_min, alpha_max]; remove taa.alpha");
-  r.needs("taa.velocity_alpha_px", t.velocity_alpha, "taa.velocity_alpha is true");
-  r.needs("taa.reduce_blend_near_clamp", rectifies, "taa.rectify is clamp or clip");
-  if (t.anti_ghosting && s.movers.empty())
+  if (taa.luma_weight && r.set("taa.alpha"))
+    r.add(
+        "taa.alpha",
+        "taa.luma_weight chooses alpha per pixel within [alpha_min, alpha_max]; remove taa.alpha");
+  if (taa.anti_ghosting && s.movers.empty())
     r.add("taa.anti_ghosting", "dynamic anti-ghosting acts on movers only, and the case has none");
   return r.out;
 }

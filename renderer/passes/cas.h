@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "passes/image_pass.h"
 #include "passes/post_filter.h"
 
 namespace taa {
@@ -12,13 +13,13 @@ namespace taa {
 // -1 / mix(8, 5, sharpness): the lobe weight at full amplitude.
 float casPeak(float sharpness);
 
-class CasPass {
+class CasPass final : public ImagePass {
  public:
   CasPass(vk::Context& ctx, float sharpness);
-  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) override {
     filter_.record(cmd, input, output, size);
   }
-  std::string describe() const;
+  std::string describe() const override;
 
  private:
   float sharpness_;

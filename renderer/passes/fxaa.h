@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "passes/image_pass.h"
 #include "passes/post_filter.h"
 
 namespace taa {
@@ -14,16 +15,19 @@ struct FxaaSettings {
   float subpix = 0.75f;              // sub-pixel aliasing removal (0 off .. 1 softest)
 };
 
-class FxaaPass {
+class FxaaPass final : public ImagePass {
  public:
   // `masked`: filter only the pixels a segmentation mask marks ADAPTIVE_MASK_FXAA
   // (adaptive mode's out-of-history pixels) and copy the rest unchanged.
   explicit FxaaPass(vk::Context& ctx, const FxaaSettings& settings = {}, bool masked = false);
   void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size,
-              vk::Image* mask = nullptr) {
+              vk::Image* mask) {
     filter_.record(cmd, input, output, size, mask);
   }
-  std::string describe() const;
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) override {
+    filter_.record(cmd, input, output, size, nullptr);
+  }
+  std::string describe() const override;
 
  private:
   FxaaSettings settings_;

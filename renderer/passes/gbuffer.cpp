@@ -1,7 +1,9 @@
 #include "passes/gbuffer.h"
 
 #include "common/shared.h"
+#include "vk/barrier.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -43,10 +45,6 @@ std::string variant(const char* shader, const GBufferConfig& c) {
   return std::string(shader) + "." + std::to_string(mask);
 }
 
-const std::vector<VkDescriptorType> kBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-
 }  // namespace
 
 GBufferTargets::GBufferTargets(vk::Context& ctx, const GBufferConfig& c) {
@@ -73,8 +71,6 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   vk::GraphicsDesc d;
   d.vertexShader = "gbuffer.vert";
   d.fragmentShader = variant("gbuffer.frag", config);
-  d.bindings = kBindings;
-  d.pushConstantBytes = sizeof(gpu::DrawPush);
   d.spec.set(GBUF_SPEC_DEFERRED, config.deferred);
   d.colorFormats = colorFormats(config);
   d.depthFormat = kDepth;
@@ -99,13 +95,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   s.depthCompare = VK_COMPARE_OP_EQUAL;  // only where no geometry moved depth off the far plane
   sky_ = vk::createGraphicsPipeline(ctx, "sky", s);
 
-  if (config.deferred)
-    lighting_ = vk::createComputePipeline(
-        ctx, "deferred_lighting.comp",
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-        0);
+  if (config.deferred) lighting_ = vk::createComputePipeline(ctx, "deferred_lighting.comp");
 }
 
 void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
@@ -144,8 +134,7 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
     push.lodBias = lodBias;
     push.baseColor = material.baseColorFactor;
     push.emissive = glm::vec4(material.emissive, 0.0f);
-    vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
+    pipeline.pushConstants(cmd, &push, sizeof(push));
     vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                      draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);
   }
@@ -156,17 +145,18 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
   const Frame f{frameUniforms, uniformOffset, instances};
   vk::Image* outputs[GBUF_OUT_COUNT] = {&t.color, &t.velocity, &t.normal, &t.ids, &t.albedo};
   VkRenderingAttachmentInfo color[GBUF_OUT_COUNT];
+  vk::BarrierBatch barriers;
   for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
     color[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     if (!*outputs[i]) continue;  // imageView stays VK_NULL_HANDLE: writes are discarded
-    outputs[i]->use(cmd, vk::Use::ColorAttachment);
+    barriers.use(*outputs[i], vk::Use::ColorAttachment);
     color[i].imageView = outputs[i]->view();
     color[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     color[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   }
   color[GBUF_OUT_IDS].clearValue.color.uint32[0] = 0xffffffffu;
-  t.depth.use(cmd, vk::Use::DepthAttachment);
+  barriers.use(t.depth, vk::Use::DepthAttachment).flush(cmd);
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   depth.imageView = t.depth.view();
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -188,22 +178,21 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   drawList(cmd, opaque_, draws.opaque, f, lodBias);
   sky_.bind(cmd);
+  // The sky reads the frame and the instance block's layout, no texture or vertices.
   vk::Bindings()
       .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
-      .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(0), scene_.sampler(0))
-      .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0, VK_WHOLE_SIZE)
       .push(ctx_, cmd, sky_);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (config_.deferred) {
     vkCmdEndRendering(cmd);
     lightDeferred(cmd, t, f, size);
-    t.color.use(cmd, vk::Use::ColorAttachment);
-    t.depth.use(cmd, vk::Use::DepthAttachment);
+    barriers.use(t.depth, vk::Use::DepthAttachment);
     for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
       color[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-      if (i != GBUF_OUT_COLOR && *outputs[i]) outputs[i]->use(cmd, vk::Use::ColorAttachment);
+      if (*outputs[i]) barriers.use(*outputs[i], vk::Use::ColorAttachment);
     }
+    barriers.flush(cmd);
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     vkCmdBeginRendering(cmd, &info);
     vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -214,19 +203,13 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
 }
 
 void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, const Frame& f, glm::ivec2 size) {
-  t.albedo.use(cmd, vk::Use::SampledCompute);
-  t.normal.use(cmd, vk::Use::SampledCompute);
-  t.depth.use(cmd, vk::Use::SampledCompute);
-  t.color.use(cmd, vk::Use::StorageWrite);
-  lighting_.bind(cmd);
-  vk::Bindings()
+  vk::Dispatch(lighting_)
       .uniform(0, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
-      .sampled(1, t.albedo.view(), pointClamp_.handle())
-      .sampled(2, t.normal.view(), pointClamp_.handle())
-      .sampled(3, t.depth.view(), pointClamp_.handle())
-      .storage(4, t.color.view())
-      .push(ctx_, cmd, lighting_);
-  vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+      .sample(1, t.albedo, pointClamp_.handle())
+      .sample(2, t.normal, pointClamp_.handle())
+      .sample(3, t.depth, pointClamp_.handle())
+      .store(4, t.color)
+      .record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
 }
 
 }  // namespace taa

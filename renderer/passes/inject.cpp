@@ -3,13 +3,12 @@
 #include <algorithm>
 
 #include "common/shared.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
 InjectPass::InjectPass(vk::Context& ctx, const spec::CaseSpec& spec)
-    : ctx_(ctx), spec_(spec),
-      pipeline_(vk::createComputePipeline(ctx, "inject.comp", {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                          sizeof(gpu::InjectPush))) {}
+    : ctx_(ctx), spec_(spec), pipeline_(vk::createComputePipeline(ctx, "inject.comp")) {}
 
 bool InjectPass::appliesTo(int frame) const {
   const auto& f = spec_.inject.frames;
@@ -30,11 +29,9 @@ void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
     }
   }
   push.params = glm::vec4(float(pixels.size()), float(int(spec_.inject.value)), 0.0f, 0.0f);
-  color.use(cmd, vk::Use::StorageWrite);
-  pipeline_.bind(cmd);
-  vk::Bindings().storage(0, color.view()).push(ctx_, cmd, pipeline_);
-  vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-  vkCmdDispatch(cmd, 1, 1, 1);
+  // One invocation per listed pixel (at least one group, as the shader checks the count).
+  const auto invocations = uint32_t(std::max<size_t>(pixels.size(), 1));
+  vk::Dispatch(pipeline_).store(0, color).constants(push).record(ctx_, cmd, invocations, 1);
 }
 
 }  // namespace taa

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -38,11 +39,11 @@ PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 pa
       name_(shader),
       params_(params),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
-  std::vector<VkDescriptorType> bindings(maskBinding ? POST_BINDING_MASK + 1 : POST_BINDING_COUNT);
-  bindings[POST_BINDING_INPUT] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  bindings[POST_BINDING_OUTPUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  pipeline_ = vk::createComputePipeline(ctx, shader, spec);
+  if (maskBinding != (pipeline_.interface().find(0, POST_BINDING_MASK) != nullptr))
+    throw std::logic_error(shader + (maskBinding ? " declares no" : " declares a") +
+                           " mask binding, unlike what its pass says");
   if (maskBinding) {
-    bindings[POST_BINDING_MASK] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     vk::ImageDesc d;
     d.name = "no_mask";
     d.format = VK_FORMAT_R32_UINT;
@@ -57,7 +58,6 @@ PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 pa
     noMask_.use(cmd, vk::Use::SampledCompute);
     ctx.submitAndWait(cmd);
   }
-  pipeline_ = vk::createComputePipeline(ctx, shader, bindings, sizeof(gpu::PostPush), spec);
 }
 
 void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size,
@@ -65,23 +65,13 @@ void PostFilter::record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output
   requireCovers(input, size, name_.c_str());
   requireCovers(output, size, name_.c_str());
   if (&input == &output) throw std::logic_error(name_ + ": input and output must differ");
-  input.use(cmd, vk::Use::SampledCompute);
-  output.use(cmd, vk::Use::StorageWrite);
-  vk::Bindings b;
-  b.sampled(POST_BINDING_INPUT, input.view(), point_.handle())
-      .storage(POST_BINDING_OUTPUT, output.view());
-  if (noMask_) {
-    vk::Image& m = mask ? *mask : noMask_;
-    m.use(cmd, vk::Use::SampledCompute);
-    b.sampled(POST_BINDING_MASK, m.view(), point_.handle());
-  } else if (mask) {
+  vk::Dispatch d(pipeline_);
+  d.sample(POST_BINDING_INPUT, input, point_.handle()).store(POST_BINDING_OUTPUT, output);
+  if (noMask_)
+    d.sample(POST_BINDING_MASK, mask ? *mask : noMask_, point_.handle());
+  else if (mask)
     throw std::logic_error(name_ + ": a mask was given, but the filter has no mask binding");
-  }
-  pipeline_.bind(cmd);
-  b.push(ctx_, cmd, pipeline_);
-  const gpu::PostPush push = makePostPush(size, params_);
-  vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-  vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+  d.constants(makePostPush(size, params_)).record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
 }
 
 }  // namespace taa

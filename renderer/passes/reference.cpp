@@ -7,6 +7,7 @@
 #include "script/jitter.h"
 #include "stereo.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -51,11 +52,13 @@ std::vector<glm::vec2> referenceOffsets(int count) {
 }
 
 ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene)
-    : ctx_(ctx), spec_(spec), offsets_(referenceOffsets(spec.reference.samples)), config_(referenceConfig(spec)),
-      targets_(ctx, config_), gbuffer_(ctx, scene, config_),
-      accumulate_(vk::createComputePipeline(
-          ctx, "reference_accumulate.comp",
-          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(AccumulatePush))),
+    : ctx_(ctx),
+      spec_(spec),
+      offsets_(referenceOffsets(spec.reference.samples)),
+      config_(referenceConfig(spec)),
+      targets_(ctx, config_),
+      gbuffer_(ctx, scene, config_),
+      accumulate_(vk::createComputePipeline(ctx, "reference_accumulate.comp")),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   vk::ImageDesc d;
   d.name = "reference";
@@ -88,17 +91,13 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
   for (size_t i = 0; i < offsets_.size(); ++i) {
     gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances,
                     size, 0.0f);
-    targets_.color.use(cmd, vk::Use::SampledCompute);
-    accum_.use(cmd, vk::Use::StorageWrite);
-    accumulate_.bind(cmd);
-    vk::Bindings()
-        .sampled(0, targets_.color.view(), point_.handle())
-        .storage(1, accum_.view())
-        .push(ctx_, cmd, accumulate_);
     const uint32_t mode = (i > 0 ? 1u : 0u) | (i + 1 == offsets_.size() ? 2u : 0u);
     const AccumulatePush push{size.x, size.y, mode, 1.0f / float(offsets_.size()), eye * size.x};
-    vkCmdPushConstants(cmd, accumulate_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-    vk::dispatch2d(cmd, uint32_t(size.x), uint32_t(size.y));
+    vk::Dispatch(accumulate_)
+        .sample(0, targets_.color, point_.handle())
+        .store(1, accum_)
+        .constants(push)
+        .record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
   }
 }
 

@@ -4,17 +4,18 @@
 
 #include <string>
 
+#include "passes/image_pass.h"
 #include "passes/post_filter.h"
 
 namespace taa {
 
-class SharpenPass {
+class SharpenPass final : public ImagePass {
  public:
   SharpenPass(vk::Context& ctx, float amount);
-  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) {
+  void record(VkCommandBuffer cmd, vk::Image& input, vk::Image& output, glm::ivec2 size) override {
     filter_.record(cmd, input, output, size);
   }
-  std::string describe() const;
+  std::string describe() const override;
 
  private:
   float amount_;

@@ -9,6 +9,7 @@
 #include "stereo.h"
 #include "vk/barrier.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -145,21 +146,17 @@ void TscmaaPass::detectEdges(VkCommandBuffer cmd, Eye& e, vk::Image& color) {
   const gpu::EdgeListHeader empty{0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, e.edgeList.handle(), 0, sizeof(empty), &empty);
   vkCmdUpdateBuffer(cmd, e.taaList.handle(), 0, sizeof(empty), &empty);
-  vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  color.use(cmd, vk::Use::SampledCompute);
-  mask_.use(cmd, vk::Use::StorageWrite);
-  edges_.bind(cmd);
-  vk::Bindings()
+  vk::Dispatch(edges_)
+      .after(VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)
       .uniform(TSCMAA_BINDING_UNIFORMS, uniforms_.handle(), e.uniformOffset,
                sizeof(gpu::TscmaaUniforms))
-      .sampled(TSCMAA_BINDING_COLOR, color.view(), point_.handle())
-      .storage(TSCMAA_BINDING_MASK, mask_.view())
-      .storageBuffer(TSCMAA_BINDING_EDGE_LIST, e.edgeList.handle(), 0, VK_WHOLE_SIZE)
-      .storageBuffer(TSCMAA_BINDING_TAA_LIST, e.taaList.handle(), 0, VK_WHOLE_SIZE)
-      .push(ctx_, cmd, edges_);
-  vk::dispatch2d(cmd, uint32_t(eyeSize_.x), uint32_t(eyeSize_.y));
+      .sample(TSCMAA_BINDING_COLOR, color, point_.handle())
+      .store(TSCMAA_BINDING_MASK, mask_)
+      .storageBuffer(TSCMAA_BINDING_EDGE_LIST, e.edgeList.handle())
+      .storageBuffer(TSCMAA_BINDING_TAA_LIST, e.taaList.handle())
+      .record(ctx_, cmd, uint32_t(eyeSize_.x), uint32_t(eyeSize_.y));
   vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
@@ -169,19 +166,14 @@ void TscmaaPass::detectEdges(VkCommandBuffer cmd, Eye& e, vk::Image& color) {
 void TscmaaPass::antialias(VkCommandBuffer cmd, Eye& e, vk::Image& color) {
   // Pixels off the edge list keep their colour: copied first, then the list overwrites.
   copyRegion(cmd, color, {0, 0}, cmaa_, e.offset, eyeSize_);
-  color.use(cmd, vk::Use::SampledCompute);
-  mask_.use(cmd, vk::Use::StorageRead);
-  cmaa_.use(cmd, vk::Use::StorageWrite);
-  cmaaPipeline_.bind(cmd);
-  vk::Bindings()
+  vk::Dispatch(cmaaPipeline_)
       .uniform(TSCMAA_BINDING_UNIFORMS, uniforms_.handle(), e.uniformOffset,
                sizeof(gpu::TscmaaUniforms))
-      .sampled(TSCMAA_BINDING_COLOR, color.view(), point_.handle())
-      .storage(TSCMAA_BINDING_MASK, mask_.view())
-      .storageBuffer(TSCMAA_BINDING_EDGE_LIST, e.edgeList.handle(), 0, VK_WHOLE_SIZE)
-      .storage(TSCMAA_BINDING_CMAA, cmaa_.view())
-      .push(ctx_, cmd, cmaaPipeline_);
-  vkCmdDispatchIndirect(cmd, e.edgeList.handle(), 0);
+      .sample(TSCMAA_BINDING_COLOR, color, point_.handle())
+      .load(TSCMAA_BINDING_MASK, mask_)
+      .storageBuffer(TSCMAA_BINDING_EDGE_LIST, e.edgeList.handle())
+      .store(TSCMAA_BINDING_CMAA, cmaa_)
+      .recordIndirect(ctx_, cmd, e.edgeList.handle(), 0);
 }
 
 void TscmaaPass::temporal(VkCommandBuffer cmd, Eye& e, vk::Image& depth) {
@@ -190,23 +182,17 @@ void TscmaaPass::temporal(VkCommandBuffer cmd, Eye& e, vk::Image& depth) {
   vk::Image& previous = e.history[current_ ^ 1];
   copyRegion(cmd, cmaa_, e.offset, next, {0, 0}, eyeSize_);
   if (!e.hasHistory) return;
-  cmaa_.use(cmd, vk::Use::SampledCompute);
-  depth.use(cmd, vk::Use::SampledCompute);
-  previous.use(cmd, vk::Use::SampledCompute);
-  next.use(cmd, vk::Use::StorageWrite);
-  taa_.bind(cmd);
-  vk::Bindings()
+  vk::Dispatch(taa_)
       .uniform(TSCMAA_BINDING_UNIFORMS, uniforms_.handle(), e.uniformOffset,
                sizeof(gpu::TscmaaUniforms))
       .uniform(TSCMAA_BINDING_TAA_UNIFORMS, uniforms_.handle(), e.taaUniformOffset,
                sizeof(gpu::TaaUniforms))
-      .storageBuffer(TSCMAA_BINDING_TAA_LIST, e.taaList.handle(), 0, VK_WHOLE_SIZE)
-      .sampled(TSCMAA_BINDING_CMAA, cmaa_.view(), point_.handle())
-      .sampled(TSCMAA_BINDING_DEPTH, depth.view(), point_.handle())
-      .sampled(TSCMAA_BINDING_HISTORY, previous.view(), linear_.handle())
-      .storage(TSCMAA_BINDING_HISTORY_OUT, next.view())
-      .push(ctx_, cmd, taa_);
-  vkCmdDispatchIndirect(cmd, e.taaList.handle(), 0);
+      .storageBuffer(TSCMAA_BINDING_TAA_LIST, e.taaList.handle())
+      .sample(TSCMAA_BINDING_CMAA, cmaa_, point_.handle())
+      .sample(TSCMAA_BINDING_DEPTH, depth, point_.handle())
+      .sample(TSCMAA_BINDING_HISTORY, previous, linear_.handle())
+      .store(TSCMAA_BINDING_HISTORY_OUT, next)
+      .recordIndirect(ctx_, cmd, e.taaList.handle(), 0);
 }
 
 }  // namespace taa

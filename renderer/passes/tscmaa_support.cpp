@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <glm/matrix.hpp>
-#include <initializer_list>
-#include <utility>
-#include <vector>
 
+#include "vk/barrier.h"
 #include "vk/context.h"
 
 namespace taa::tscmaa {
@@ -43,54 +41,17 @@ VkDeviceSize uniformStride(vk::Context& ctx) {
   return (largest + align - 1) / align * align;
 }
 
-namespace {
-
-// Every pipeline names all TSCMAA bindings; a slot its shader does not use keeps a
-// placeholder type and is never pushed.
-std::vector<VkDescriptorType> bindings(
-    std::initializer_list<std::pair<int, VkDescriptorType>> used) {
-  std::vector<VkDescriptorType> types(TSCMAA_BINDING_COUNT, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-  for (const auto& [binding, type] : used) types[size_t(binding)] = type;
-  return types;
-}
-
-constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-
-}  // namespace
-
+// Each pipeline's layout is its shader's own: a binding a step does not use is not declared.
 vk::Pipeline edgePipeline(vk::Context& ctx) {
-  return vk::createComputePipeline(ctx, "tscmaa_edges.comp",
-                                   bindings({{TSCMAA_BINDING_UNIFORMS, kUniform},
-                                             {TSCMAA_BINDING_COLOR, kSampled},
-                                             {TSCMAA_BINDING_MASK, kStorage},
-                                             {TSCMAA_BINDING_EDGE_LIST, kBuffer},
-                                             {TSCMAA_BINDING_TAA_LIST, kBuffer}}),
-                                   0);
+  return vk::createComputePipeline(ctx, "tscmaa_edges.comp");
 }
 
 vk::Pipeline cmaaPipeline(vk::Context& ctx) {
-  return vk::createComputePipeline(ctx, "tscmaa_cmaa.comp",
-                                   bindings({{TSCMAA_BINDING_UNIFORMS, kUniform},
-                                             {TSCMAA_BINDING_COLOR, kSampled},
-                                             {TSCMAA_BINDING_MASK, kStorage},
-                                             {TSCMAA_BINDING_EDGE_LIST, kBuffer},
-                                             {TSCMAA_BINDING_CMAA, kStorage}}),
-                                   0);
+  return vk::createComputePipeline(ctx, "tscmaa_cmaa.comp");
 }
 
 vk::Pipeline taaPipeline(vk::Context& ctx) {
-  return vk::createComputePipeline(ctx, "tscmaa_taa.comp",
-                                   bindings({{TSCMAA_BINDING_UNIFORMS, kUniform},
-                                             {TSCMAA_BINDING_TAA_UNIFORMS, kUniform},
-                                             {TSCMAA_BINDING_TAA_LIST, kBuffer},
-                                             {TSCMAA_BINDING_CMAA, kSampled},
-                                             {TSCMAA_BINDING_DEPTH, kSampled},
-                                             {TSCMAA_BINDING_HISTORY, kSampled},
-                                             {TSCMAA_BINDING_HISTORY_OUT, kStorage}}),
-                                   0);
+  return vk::createComputePipeline(ctx, "tscmaa_taa.comp");
 }
 
 gpu::TaaUniforms taaUniforms(const script::FrameState& s, glm::ivec2 eyeSize, float historyWeight) {
@@ -100,16 +61,16 @@ gpu::TaaUniforms taaUniforms(const script::FrameState& s, glm::ivec2 eyeSize, fl
   const glm::vec4 size(glm::vec2(eyeSize), 1.0f / glm::vec2(eyeSize));
   u.renderSize = u.prevRenderSize = u.outputSize = size;
   u.jitter = glm::vec4(s.jitter, 0.0f, 0.0f);
-  u.blend = glm::vec4(1.0f - historyWeight, 1.0f, 0.0f, 0.0f);
-  u.limits = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
-  u.planes = glm::vec4(s.camera.nearPlane, s.camera.farPlane, 0.0f, 0.0f);
+  u.view = glm::vec4(s.camera.nearPlane, s.camera.farPlane, 1.0f, 0.0f);
+  // tscmaa_taa.comp reads alpha and the variance gamma; its other settings are fixed there.
+  u.settings[spec::TAA_PARAM_ALPHA / 4][spec::TAA_PARAM_ALPHA % 4] = 1.0f - historyWeight;
+  u.settings[spec::TAA_PARAM_VARIANCE_GAMMA / 4][spec::TAA_PARAM_VARIANCE_GAMMA % 4] = 1.0f;
   return u;
 }
 
 void copyRegion(VkCommandBuffer cmd, vk::Image& from, glm::ivec2 fromOffset, vk::Image& to,
                 glm::ivec2 toOffset, glm::ivec2 size) {
-  from.use(cmd, vk::Use::TransferSrc);
-  to.use(cmd, vk::Use::TransferDst);
+  vk::BarrierBatch().use(from, vk::Use::TransferSrc).use(to, vk::Use::TransferDst).flush(cmd);
   VkImageCopy region{};
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

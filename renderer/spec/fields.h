@@ -13,7 +13,9 @@ namespace taa::spec {
 // Documentation carried by a setting: what it does and where it is implemented.
 struct Meta {
   const char* doc = "";
-  const char* impl = "";  // shader or C++ unit that implements the setting
+  const char* impl = "";    // shader or C++ unit that implements the setting
+  const char* drives = "";  // the specialization constant or uniform slot it sets, if declared
+  const char* when = "";    // the condition under which it means something, beyond its modes
 };
 
 template <class T>
@@ -49,8 +51,8 @@ bool enumFromString(std::string_view text, E& out) {
 
 }  // namespace taa::spec
 
-#define TAA_ENUM_NAMES(E, ...)                                             \
-  inline std::span<const ::taa::spec::EnumName<E>> enumNames(E) {          \
-    static constexpr ::taa::spec::EnumName<E> kNames[] = {__VA_ARGS__};   \
-    return kNames;                                                         \
+#define TAA_ENUM_NAMES(E, ...)                                          \
+  inline std::span<const ::taa::spec::EnumName<E>> enumNames(E) {       \
+    static constexpr ::taa::spec::EnumName<E> kNames[] = {__VA_ARGS__}; \
+    return kNames;                                                      \
   }

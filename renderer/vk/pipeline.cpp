@@ -25,6 +25,12 @@ SpecConstants& SpecConstants::setFloat(uint32_t id, float value) {
   return set(id, bits);
 }
 
+std::optional<uint32_t> SpecConstants::value(uint32_t id) const {
+  for (size_t i = 0; i < entries_.size(); ++i)
+    if (entries_[i].constantID == id) return data_[i];
+  return std::nullopt;
+}
+
 std::string SpecConstants::describe() const {
   std::string out;
   for (size_t i = 0; i < entries_.size(); ++i)
@@ -36,10 +42,16 @@ VkSpecializationInfo SpecConstants::info() const {
   return {uint32_t(entries_.size()), entries_.data(), data_.size() * 4, data_.data()};
 }
 
-Pipeline::Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint, VkDescriptorSetLayout setLayout,
-                   VkPipelineLayout layout, VkPipeline pipeline)
-    : device_(device), name_(std::move(name)), bindPoint_(bindPoint), setLayout_(setLayout), layout_(layout),
-      pipeline_(pipeline) {}
+Pipeline::Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint,
+                   VkDescriptorSetLayout setLayout, VkPipelineLayout layout, VkPipeline pipeline,
+                   ShaderInterface interface)
+    : device_(device),
+      name_(std::move(name)),
+      bindPoint_(bindPoint),
+      setLayout_(setLayout),
+      layout_(layout),
+      pipeline_(pipeline),
+      interface_(std::move(interface)) {}
 
 Pipeline::~Pipeline() { release(); }
 Pipeline::Pipeline(Pipeline&& o) noexcept { *this = std::move(o); }
@@ -52,8 +64,24 @@ Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
     setLayout_ = std::exchange(o.setLayout_, VK_NULL_HANDLE);
     layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
     pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
+    interface_ = std::move(o.interface_);
   }
   return *this;
+}
+
+void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const {
+  if (bytes > interface_.pushConstantBytes)
+    throw std::logic_error(name_ + ": " + std::to_string(bytes) +
+                           " bytes of push constants, but its shaders declare " +
+                           std::to_string(interface_.pushConstantBytes));
+  vkCmdPushConstants(cmd, layout_, interface_.stages, 0, bytes, data);
+}
+
+void Pipeline::dispatch(VkCommandBuffer cmd, uint32_t width, uint32_t height,
+                        uint32_t depth) const {
+  const auto& l = interface_.localSize;
+  vkCmdDispatch(cmd, (width + l[0] - 1) / l[0], (height + l[1] - 1) / l[1],
+                (depth + l[2] - 1) / l[2]);
 }
 
 void Pipeline::release() {
@@ -93,8 +121,7 @@ std::vector<uint32_t> loadSpirv(const std::string& name) {
 
 namespace {
 
-VkShaderModule createModule(VkDevice device, const std::string& name) {
-  const auto words = loadSpirv(name);
+VkShaderModule createModule(VkDevice device, const std::vector<uint32_t>& words) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   info.codeSize = words.size() * 4;
   info.pCode = words.data();
@@ -103,36 +130,51 @@ VkShaderModule createModule(VkDevice device, const std::string& name) {
   return module;
 }
 
-void createLayouts(VkDevice device, const std::vector<VkDescriptorType>& bindings, VkShaderStageFlags stages,
-                   uint32_t pushBytes, VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout,
-                   const std::vector<uint32_t>& counts = {}) {
-  std::vector<VkDescriptorSetLayoutBinding> b(bindings.size());
-  for (uint32_t i = 0; i < bindings.size(); ++i)
-    b[i] = {i, bindings[i], i < counts.size() ? counts[i] : 1u, stages, nullptr};
+// The set-0 layout and pipeline layout of `shader`'s interface: every declared binding at
+// the stages that declare it, one push-constant range for all stages of the pipeline.
+void createLayouts(VkDevice device, const ShaderInterface& shader, const std::string& name,
+                   VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+  std::vector<VkDescriptorSetLayoutBinding> b;
+  for (const auto& r : shader.bindings) {
+    if (r.set != 0)
+      throw std::runtime_error(name + " declares descriptor set " + std::to_string(r.set) +
+                               "; pipelines push one set, set 0");
+    b.push_back({r.binding, r.type, r.count, r.stages, nullptr});
+  }
   VkDescriptorSetLayoutCreateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   set.bindingCount = uint32_t(b.size());
   set.pBindings = b.data();
   VK_CHECK(vkCreateDescriptorSetLayout(device, &set, nullptr, &setLayout));
-  VkPushConstantRange range{stages, 0, pushBytes};
+  VkPushConstantRange range{shader.stages, 0, shader.pushConstantBytes};
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   info.setLayoutCount = 1;
   info.pSetLayouts = &setLayout;
-  info.pushConstantRangeCount = pushBytes ? 1 : 0;
+  info.pushConstantRangeCount = shader.pushConstantBytes ? 1 : 0;
   info.pPushConstantRanges = &range;
   VK_CHECK(vkCreatePipelineLayout(device, &info, nullptr, &layout));
 }
 
+// A specialized workgroup size (local_size_x_id) takes the value the pipeline gives it.
+void specializeLocalSize(ShaderInterface& shader, const SpecConstants& spec) {
+  for (size_t k = 0; k < 3; ++k)
+    if (shader.localSizeSpecId[k] >= 0)
+      if (const auto v = spec.value(uint32_t(shader.localSizeSpecId[k]))) shader.localSize[k] = *v;
+}
+
 }  // namespace
 
-Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                               uint32_t pushConstantBytes, const SpecConstants& spec,
-                               const std::vector<uint32_t>& counts) {
+Pipeline createComputePipeline(Context& ctx, const std::string& shader, const SpecConstants& spec) {
   VkDevice device = ctx.device();
+  const auto words = loadSpirv(shader);
+  ShaderInterface interface = reflectSpirv(words, shader);
+  if (interface.stages != VK_SHADER_STAGE_COMPUTE_BIT)
+    throw std::runtime_error(shader + " is not a compute shader");
+  specializeLocalSize(interface, spec);
   VkDescriptorSetLayout setLayout;
   VkPipelineLayout layout;
-  createLayouts(device, bindings, VK_SHADER_STAGE_COMPUTE_BIT, pushConstantBytes, setLayout, layout, counts);
-  VkShaderModule module = createModule(device, shader);
+  createLayouts(device, interface, shader, setLayout, layout);
+  VkShaderModule module = createModule(device, words);
   const VkSpecializationInfo specInfo = spec.info();
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -145,17 +187,21 @@ Pipeline createComputePipeline(Context& ctx, const std::string& shader, const st
   const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   vkDestroyShaderModule(device, module, nullptr);
   VK_CHECK(r);
-  return Pipeline(device, shader, VK_PIPELINE_BIND_POINT_COMPUTE, setLayout, layout, pipeline);
+  return Pipeline(device, shader, VK_PIPELINE_BIND_POINT_COMPUTE, setLayout, layout, pipeline,
+                  std::move(interface));
 }
 
 Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& d) {
   VkDevice device = ctx.device();
+  const auto vertWords = loadSpirv(d.vertexShader);
+  const auto fragWords = loadSpirv(d.fragmentShader);
+  ShaderInterface interface = mergeInterfaces(reflectSpirv(vertWords, d.vertexShader),
+                                              reflectSpirv(fragWords, d.fragmentShader), name);
   VkDescriptorSetLayout setLayout;
   VkPipelineLayout layout;
-  createLayouts(device, d.bindings, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, d.pushConstantBytes,
-                setLayout, layout);
-  VkShaderModule vert = createModule(device, d.vertexShader);
-  VkShaderModule frag = createModule(device, d.fragmentShader);
+  createLayouts(device, interface, name, setLayout, layout);
+  VkShaderModule vert = createModule(device, vertWords);
+  VkShaderModule frag = createModule(device, fragWords);
   const VkSpecializationInfo specInfo = d.spec.info();
   VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
@@ -250,7 +296,8 @@ Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const Gra
   vkDestroyShaderModule(device, vert, nullptr);
   vkDestroyShaderModule(device, frag, nullptr);
   VK_CHECK(r);
-  return Pipeline(device, name, VK_PIPELINE_BIND_POINT_GRAPHICS, setLayout, layout, pipeline);
+  return Pipeline(device, name, VK_PIPELINE_BIND_POINT_GRAPHICS, setLayout, layout, pipeline,
+                  std::move(interface));
 }
 
 Bindings& Bindings::add(uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo* image,
@@ -303,6 +350,16 @@ Bindings& Bindings::sampledArray(uint32_t binding, const std::vector<VkImageView
 }
 
 void Bindings::push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline) const {
+  for (const auto& w : writes_) {
+    const ReflectedBinding* b = pipeline.interface().find(0, w.dstBinding);
+    if (!b || b->type != w.descriptorType || w.descriptorCount > b->count)
+      throw std::logic_error(
+          pipeline.name() + ": binding " + std::to_string(w.dstBinding) + " is given a " +
+          descriptorTypeName(w.descriptorType) + " (" + std::to_string(w.descriptorCount) +
+          "), but its shaders declare " +
+          (b ? descriptorTypeName(b->type) + std::string(" (") + std::to_string(b->count) + ")"
+             : std::string("nothing there")));
+  }
   ctx.pushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), 0, uint32_t(writes_.size()), writes_.data());
 }
 
@@ -328,10 +385,6 @@ Sampler& Sampler::operator=(Sampler&& o) noexcept {
     sampler_ = std::exchange(o.sampler_, VK_NULL_HANDLE);
   }
   return *this;
-}
-
-void dispatch2d(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t layers) {
-  vkCmdDispatch(cmd, (width + 7) / 8, (height + 7) / 8, layers);
 }
 
 }  // namespace taa::vk

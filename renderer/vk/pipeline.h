@@ -1,14 +1,20 @@
 // Pipelines with one push-descriptor set each: a pass binds by pushing its
 // descriptors, so no pools or set lifetimes exist anywhere. Technique switches are
 // specialization constants, so disabled code is removed when the driver compiles.
+// Descriptor layouts, push-constant ranges and workgroup sizes come from the shaders'
+// SPIR-V (vk/spirv_reflect.h): a pass names its shader, never its binding types.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "vk/spirv_reflect.h"
 
 namespace taa::vk {
 
@@ -20,6 +26,8 @@ class SpecConstants {
   SpecConstants& set(uint32_t id, int32_t value) { return set(id, static_cast<uint32_t>(value)); }
   SpecConstants& set(uint32_t id, bool value) { return set(id, value ? 1u : 0u); }
   SpecConstants& setFloat(uint32_t id, float value);
+  // The value given for `id`, if any (a specialized workgroup size reads it).
+  std::optional<uint32_t> value(uint32_t id) const;
   // Human-readable "id=value" list, for the run log.
   std::string describe() const;
   VkSpecializationInfo info() const;
@@ -32,8 +40,9 @@ class SpecConstants {
 class Pipeline {
  public:
   Pipeline() = default;
-  Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint, VkDescriptorSetLayout setLayout,
-           VkPipelineLayout layout, VkPipeline pipeline);
+  Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint,
+           VkDescriptorSetLayout setLayout, VkPipelineLayout layout, VkPipeline pipeline,
+           ShaderInterface interface);
   ~Pipeline();
   Pipeline(Pipeline&& o) noexcept;
   Pipeline& operator=(Pipeline&& o) noexcept;
@@ -42,7 +51,14 @@ class Pipeline {
   VkPipelineLayout layout() const { return layout_; }
   VkPipelineBindPoint bindPoint() const { return bindPoint_; }
   const std::string& name() const { return name_; }
+  // What the shaders declare; localSize already holds any specialized workgroup size.
+  const ShaderInterface& interface() const { return interface_; }
   void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+  // Pushes `bytes` at offset 0 to every stage of the push-constant range; throws
+  // std::logic_error when the shaders' block is smaller.
+  void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const;
+  // Enough workgroups of the shader's local size to cover width x height x depth.
+  void dispatch(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t depth = 1) const;
   explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
 
  private:
@@ -53,6 +69,7 @@ class Pipeline {
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
+  ShaderInterface interface_;
 };
 
 // Where SPIR-V is read from: $TAA_SHADER_DIR, else PREFIX/share/taa-harness/shaders beside an
@@ -62,16 +79,14 @@ std::string shaderDir();
 // SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp") in shaderDir().
 std::vector<uint32_t> loadSpirv(const std::string& name);
 
-// `counts`: descriptors per binding (arrays); empty means one each.
-Pipeline createComputePipeline(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                               uint32_t pushConstantBytes, const SpecConstants& spec = {},
-                               const std::vector<uint32_t>& counts = {});
+// The set layout, push-constant range and workgroup size are the shader's own (set 0 only:
+// a second set is an error naming the shader).
+Pipeline createComputePipeline(Context& ctx, const std::string& shader,
+                               const SpecConstants& spec = {});
 
 struct GraphicsDesc {
   std::string vertexShader;
   std::string fragmentShader;
-  std::vector<VkDescriptorType> bindings;  // visible to both stages
-  uint32_t pushConstantBytes = 0;
   SpecConstants spec;                      // applied to both stages
   bool vertexInput = true;                 // scene::Vertex layout; false: positions from gl_VertexIndex
   std::vector<VkFormat> colorFormats;      // VK_FORMAT_UNDEFINED: the shader's output is discarded
@@ -95,6 +110,8 @@ class Bindings {
   Bindings& storage(uint32_t binding, VkImageView view);
   Bindings& uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
   Bindings& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+  // Throws std::logic_error naming the pipeline when a write's binding is not in its
+  // shaders' layout or has another descriptor type or count.
   void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline) const;
 
  private:
@@ -119,8 +136,5 @@ class Sampler {
   VkDevice device_ = VK_NULL_HANDLE;
   VkSampler sampler_ = VK_NULL_HANDLE;
 };
-
-// Groups of 8x8 covering width x height.
-void dispatch2d(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t layers = 1);
 
 }  // namespace taa::vk

@@ -56,6 +56,11 @@ VkDeviceMemory allocate(Context& ctx, VkMemoryRequirements req, VkMemoryProperty
   return memory;
 }
 
+bool useOnlyReads(Use u) {
+  return u == Use::SampledGraphics || u == Use::SampledCompute || u == Use::StorageRead ||
+         u == Use::TransferSrc;
+}
+
 bool isDepth(VkFormat f) { return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM; }
 
 }  // namespace
@@ -177,8 +182,10 @@ VkImageAspectFlags Image::aspect() const {
 
 size_t Image::bytes() const { return size_t(desc_.width) * desc_.height * desc_.layers * formatBytes(desc_.format); }
 
-void Image::use(VkCommandBuffer cmd, Use next) {
-  const UseInfo from = useInfo(use_);
+std::optional<VkImageMemoryBarrier2> Image::transition(Use next) {
+  const Use previous = std::exchange(use_, next);
+  if (previous == next && useOnlyReads(next)) return std::nullopt;
+  const UseInfo from = useInfo(previous);
   const UseInfo to = useInfo(next);
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = from.stage;
@@ -191,11 +198,16 @@ void Image::use(VkCommandBuffer cmd, Use next) {
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image_;
   b.subresourceRange = {aspect(), 0, desc_.mipLevels, 0, desc_.layers};
+  return b;
+}
+
+void Image::use(VkCommandBuffer cmd, Use next) {
+  const auto b = transition(next);
+  if (!b) return;
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
+  dep.pImageMemoryBarriers = &*b;
   vkCmdPipelineBarrier2(cmd, &dep);
-  use_ = next;
 }
 
 }  // namespace taa::vk

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace taa::vk {
@@ -71,7 +72,12 @@ class Image {
   size_t bytes() const;  // of mip 0, all layers
   explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
 
-  // Records the barrier from the last use to `next` (all mips and layers).
+  // The barrier from the last use to `next` (all mips and layers); `next` becomes the
+  // last use. None when the image is read again by the same use (same layout and stage,
+  // so a later barrier's source still covers both reads).
+  std::optional<VkImageMemoryBarrier2> transition(Use next);
+  // Records transition(next) alone; a pass with several images batches them instead
+  // (vk::BarrierBatch).
   void use(VkCommandBuffer cmd, Use next);
   Use lastUse() const { return use_; }
 

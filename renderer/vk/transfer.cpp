@@ -50,21 +50,4 @@ void uploadImage(Context& ctx, Image& image, const std::vector<const void*>& lev
   ctx.submitAndWait(cmd);
 }
 
-std::vector<uint8_t> readImage(Context& ctx, Image& image, uint32_t layer) {
-  const auto& d = image.desc();
-  const size_t bytes = size_t(d.width) * d.height * formatBytes(d.format);
-  Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-  VkCommandBuffer cmd = ctx.beginCommands();
-  const Use before = image.lastUse();
-  image.use(cmd, Use::TransferSrc);
-  VkBufferImageCopy r{};
-  r.imageSubresource = {image.aspect(), 0, layer, 1};
-  r.imageExtent = {d.width, d.height, 1};
-  vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &r);
-  if (before != Use::Undefined) image.use(cmd, before);
-  ctx.submitAndWait(cmd);
-  const auto* p = static_cast<const uint8_t*>(staging.mapped());
-  return std::vector<uint8_t>(p, p + bytes);
-}
-
 }  // namespace taa::vk

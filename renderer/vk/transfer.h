@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "vk/resources.h"
+#include "vk/staging_ring.h"  // readImage, the host-bound direction
 
 namespace taa::vk {
 
@@ -15,8 +16,5 @@ Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferU
 // Uploads each mip level (tightly packed texels of the image's format) and leaves
 // the image ready for sampling in fragment shaders.
 void uploadImage(Context& ctx, Image& image, const std::vector<const void*>& levels);
-
-// Copies one array layer of mip 0 to the host, tightly packed.
-std::vector<uint8_t> readImage(Context& ctx, Image& image, uint32_t layer = 0);
 
 }  // namespace taa::vk

@@ -18,6 +18,8 @@ using uint = uint32_t;
 #define TAA_BLOCK(name) struct name
 #endif
 
+#include "taa_settings.h"
+
 // ---- G-buffer raster pass (gbuffer.vert/.frag, sky.vert/.frag) ----
 #define GBUF_BINDING_FRAME 0
 #define GBUF_BINDING_INSTANCES 1
@@ -95,29 +97,12 @@ TAA_BLOCK(DrawPush) {
 #define TAA_BINDING_REJECT_OUT 13   // R32UI why history was not used (TAA_REJECT_*), adaptive mode
 #define TAA_BINDING_COUNT 14
 
-#define TAA_SPEC_MODE 0             // 0 pass-through, 1 basic, 2 full
+// The settings' ids are in common/taa_settings.h; these are the resolve's own.
+#define TAA_SPEC_RESOLVE 0          // RESOLVE_*: which path (renderer/spec/taa_modes.h)
 #define TAA_SPEC_HAS_HISTORY 1      // false on frame 0, cuts and scripted resets
-#define TAA_SPEC_TONE_WEIGHT 2      // ToneWeight
-#define TAA_SPEC_USE_VELOCITY 3     // UseVelocity
-#define TAA_SPEC_VELOCITY_SAMPLING 4
-#define TAA_SPEC_HISTORY_FILTER 5
-#define TAA_SPEC_REJECT_OFFSCREEN 6
-#define TAA_SPEC_DEPTH_CULLING 7
-#define TAA_SPEC_CONSISTENCY 8
-#define TAA_SPEC_ANTI_GHOSTING 9
-#define TAA_SPEC_RECTIFY 10         // Rectify
-#define TAA_SPEC_VARIANCE_CLIP 11
-#define TAA_SPEC_SHAPED 12
-#define TAA_SPEC_YCOCG 13
-#define TAA_SPEC_SHRINK_CHROMA 14
-#define TAA_SPEC_LUMA_WEIGHT 15
-#define TAA_SPEC_VELOCITY_ALPHA 16
-#define TAA_SPEC_REDUCE_BLEND 17
-#define TAA_SPEC_VELOCITY_IN_ALPHA 18
 #define TAA_SPEC_UPSAMPLE 19
-#define TAA_SPEC_DEBUG 20           // DebugOutput
+#define TAA_SPEC_DEBUG 20           // DEBUG_OUTPUT_*
 #define TAA_SPEC_REJECT_MASK 21     // write TAA_BINDING_REJECT_OUT (adaptive mode only)
-#define TAA_SPEC_HALF_HISTORY 22    // the history is RGBA16F: round stores to nearest
 
 #define TAA_REJECT_NONE 0u
 #define TAA_REJECT_OFFSCREEN 1u    // the reprojected position left the previous frame
@@ -131,9 +116,8 @@ TAA_BLOCK(TaaUniforms) {
   vec4 prevRenderSize;    // last frame's render size (previous G-buffer content)
   vec4 outputSize;        // w, h, 1/w, 1/h
   vec4 jitter;            // xy: this frame's jitter (render pixels); zw: 0
-  vec4 blend;             // alpha, rejection alpha, alpha_min, alpha_max
-  vec4 limits;            // variance gamma, depth threshold, velocity_alpha_px, debug scale
-  vec4 planes;            // near, far, consistency depth tolerance, consistency normal dot
+  vec4 view;              // near, far, debug scale, 0
+  vec4 settings[TAA_SETTING_VEC4S];  // float settings at their slots (common/taa_settings.h)
 };
 
 // ---- Post passes around the resolve (motion_blur, sharpen, cas, fxaa .comp) ----
@@ -323,7 +307,7 @@ static_assert(sizeof(TraceUniforms) == 48 + 16 * TRACE_MAX_SAMPLES);
 static_assert(sizeof(SegmentationUniforms) == 64);
 static_assert(sizeof(InjectPush) == 80);
 static_assert(sizeof(PostPush) == 32);
-static_assert(sizeof(TaaUniforms) == 2 * 64 + 7 * 16);
+static_assert(sizeof(TaaUniforms) == 2 * 64 + (5 + TAA_SETTING_VEC4S) * 16);
 static_assert(sizeof(FrameUniforms) == 7 * 64 + 6 * 16);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
 static_assert(sizeof(DrawPush) == 48);

@@ -6,10 +6,10 @@
 // Lottes: similar lumas (a stable pixel) lean on history (alpha_min); a large
 // relative difference trusts the current frame more (toward alpha_max). The 0.2
 // floor keeps dark pixels from dividing by zero.
-float lottesAlpha(float lumaCurrent, float lumaHistory) {
+float lottesAlpha(TaaSettings s, float lumaCurrent, float lumaHistory) {
   float diff = abs(lumaCurrent - lumaHistory) / max(max(lumaCurrent, lumaHistory), 0.2);
   float similarity = 1.0 - clamp(diff, 0.0, 1.0);
-  return mix(taaUniforms.blend.w, taaUniforms.blend.z, similarity * similarity);
+  return mix(s.alpha_max, s.alpha_min, similarity * similarity);
 }
 
 // Karis (SIGGRAPH 2014, "reduce blend factor when history is near clamping"): the closer
@@ -24,8 +24,8 @@ float reduceBlendNearClamp(float alpha, float lumaHistory, float lo, float hi) {
   return alpha * (0.5 + 0.5 * t);
 }
 
-float velocityAlpha(float alpha, float speedPx) {
-  return mix(alpha, 1.0, clamp(speedPx / taaUniforms.limits.z, 0.0, 1.0));
+float velocityAlpha(TaaSettings s, float alpha, float speedPx) {
+  return mix(alpha, 1.0, clamp(speedPx / s.velocity_alpha_px, 0.0, 1.0));
 }
 
 #endif

@@ -17,45 +17,46 @@ vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.
 // let a dark history through; Karis keeps the box linear and weights only the blend.
 // (A blend alone in c/(1+luma) space equals Karis' weighted average exactly, so the
 // domain is what tells inverse_luma apart.)
-vec3 toDomain(vec3 c) {
-  if (kToneWeight == 2) {
+vec3 toDomain(TaaSettings s, vec3 c) {
+  if (s.tonemap_weighting == TONE_WEIGHT_INVERSE_LUMA) {
     c = max(c, vec3(0.0));
     return c / (1.0 + luma(c));
   }
-  if (kToneWeight == 3) return log(1.0 + max(c, vec3(0.0)));
+  if (s.tonemap_weighting == TONE_WEIGHT_LOG) return log(1.0 + max(c, vec3(0.0)));
   return c;
 }
-vec3 fromDomain(vec3 d) {
+vec3 fromDomain(TaaSettings s, vec3 d) {
   // c / (1 - luma) has a pole at luma 1: a box corner may lie beyond it; bound the result.
-  if (kToneWeight == 2) return d / max(1.0 - luma(d), 1.0 / kHalfMax);
-  if (kToneWeight == 3) return exp(d) - 1.0;
+  if (s.tonemap_weighting == TONE_WEIGHT_INVERSE_LUMA) return d / max(1.0 - luma(d), 1.0 / kHalfMax);
+  if (s.tonemap_weighting == TONE_WEIGHT_LOG) return exp(d) - 1.0;
   return d;
 }
 
-vec3 toWorking(vec3 rgb) {
-  vec3 d = toDomain(rgb);
-  return kYCoCg ? rgbToYCoCg(d) : d;
+bool isYCoCg(TaaSettings s) { return s.color_space == COLOR_SPACE_YCOCG; }
+vec3 toWorking(TaaSettings s, vec3 rgb) {
+  vec3 d = toDomain(s, rgb);
+  return isYCoCg(s) ? rgbToYCoCg(d) : d;
 }
-vec3 fromWorking(vec3 w) { return fromDomain(kYCoCg ? yCoCgToRgb(w) : w); }
-float workingLuma(vec3 w) { return kYCoCg ? w.x : luma(w); }
+vec3 fromWorking(TaaSettings s, vec3 w) { return fromDomain(s, isYCoCg(s) ? yCoCgToRgb(w) : w); }
+float workingLuma(TaaSettings s, vec3 w) { return isYCoCg(s) ? w.x : luma(w); }
 
 // Blends history toward current by alpha in the space the case chose. Karis weights
 // each sample by 1/(1+luma) so a single bright sample cannot dominate; inverse-luma
 // blends tonemapped colours and maps back; log blends log(1+c).
-vec3 toneWeightedBlend(vec3 history, vec3 current, float alpha) {
-  if (kToneWeight == 0) return mix(history, current, alpha);
+vec3 toneWeightedBlend(TaaSettings s, vec3 history, vec3 current, float alpha) {
+  if (s.tonemap_weighting == TONE_WEIGHT_NONE) return mix(history, current, alpha);
   // The tone curves are defined for light. A YCoCg box's corners lie outside the RGB cube, so
   // a rectified history can carry negative components, with shrink_chroma or a variance box
   // even luma <= -1, where 1/(1+luma) changes sign or divides by zero and a dark pixel came
   // out as a 65504 firefly. The weighted blends see the non-negative part only.
   history = max(history, vec3(0.0));
   current = max(current, vec3(0.0));
-  if (kToneWeight == 1) {
+  if (s.tonemap_weighting == TONE_WEIGHT_KARIS) {
     float wc = alpha / (1.0 + luma(current));
     float wh = (1.0 - alpha) / (1.0 + luma(history));
     return (current * wc + history * wh) / max(wc + wh, 1e-20);
-  } else if (kToneWeight == 2 || kToneWeight == 3) {
-    return fromDomain(mix(toDomain(history), toDomain(current), alpha));
+  } else if (s.tonemap_weighting == TONE_WEIGHT_INVERSE_LUMA || s.tonemap_weighting == TONE_WEIGHT_LOG) {
+    return fromDomain(s, mix(toDomain(s, history), toDomain(s, current), alpha));
   }
   return mix(history, current, alpha);
 }

@@ -10,19 +10,24 @@ struct Consistent {
   int level;  // 0: 2x2, 1: 3x3, 2: rejected
 };
 
-bool tapConsistent(ivec2 historyPixel, uint ids, float expectedDepth, vec3 normal) {
+// The previous frame's G-buffer a tap is tested against.
+#define TAA_PREV_GBUFFER_PARAMS usampler2D prevIdsTex, sampler2D prevDepthTex, sampler2D prevNormalTex
+
+bool tapConsistent(TaaSettings s, TaaUniforms u, TAA_PREV_GBUFFER_PARAMS, ivec2 historyPixel, uint ids,
+                   float expectedDepth, vec3 normal) {
   // History pixels map to last frame's render pixels by their centres.
-  vec2 uv = (vec2(historyPixel) + 0.5) * taaUniforms.outputSize.zw;
-  ivec2 q = prevRenderPixel(uv);
+  vec2 uv = (vec2(historyPixel) + 0.5) * u.outputSize.zw;
+  ivec2 q = prevRenderPixel(u, uv);
   if ((texelFetch(prevIdsTex, q, 0).r & 0x7fffffffu) != (ids & 0x7fffffffu)) return false;
-  float prevDepth = linearDepth(texelFetch(prevDepthTex, q, 0).r);
-  if (abs(prevDepth - expectedDepth) > taaUniforms.planes.z * max(expectedDepth, 1e-20)) return false;
-  return dot(texelFetch(prevNormalTex, q, 0).xyz, normal) >= taaUniforms.planes.w;
+  float prevDepth = linearDepth(u, texelFetch(prevDepthTex, q, 0).r);
+  if (abs(prevDepth - expectedDepth) > s.consistency_depth * max(expectedDepth, 1e-20)) return false;
+  return dot(texelFetch(prevNormalTex, q, 0).xyz, normal) >= s.consistency_normal;
 }
 
-Consistent consistentHistory(vec2 prevUv, uint ids, float expectedDepth, vec3 normal) {
-  ivec2 hi = ivec2(taaUniforms.outputSize.xy) - 1;
-  vec2 p = prevUv * taaUniforms.outputSize.xy - 0.5;
+Consistent consistentHistory(TaaSettings s, TaaUniforms u, sampler2D historyTex, TAA_PREV_GBUFFER_PARAMS,
+                             vec2 prevUv, uint ids, float expectedDepth, vec3 normal) {
+  ivec2 hi = ivec2(u.outputSize.xy) - 1;
+  vec2 p = prevUv * u.outputSize.xy - 0.5;
   ivec2 base = ivec2(floor(p));
   vec2 f = p - floor(p);
   vec3 sum = vec3(0.0);
@@ -31,21 +36,21 @@ Consistent consistentHistory(vec2 prevUv, uint ids, float expectedDepth, vec3 no
     for (int i = 0; i < 2; ++i) {
       ivec2 t = base + ivec2(i, j);
       if (any(lessThan(t, ivec2(0))) || any(greaterThan(t, hi))) continue;
-      if (!tapConsistent(t, ids, expectedDepth, normal)) continue;
+      if (!tapConsistent(s, u, prevIdsTex, prevDepthTex, prevNormalTex, t, ids, expectedDepth, normal)) continue;
       float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       sum += texelFetch(historyTex, t, 0).rgb * w;
       weight += w;
     }
   if (weight > 1e-6) return Consistent(sum / weight, 0);
   // Thin geometry (foliage, wires) often misses the 2x2 footprint: widen to 3x3.
-  ivec2 center = ivec2(floor(prevUv * taaUniforms.outputSize.xy));
+  ivec2 center = ivec2(floor(prevUv * u.outputSize.xy));
   sum = vec3(0.0);
   float n = 0.0;
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
       ivec2 t = center + ivec2(i, j);
       if (any(lessThan(t, ivec2(0))) || any(greaterThan(t, hi))) continue;
-      if (!tapConsistent(t, ids, expectedDepth, normal)) continue;
+      if (!tapConsistent(s, u, prevIdsTex, prevDepthTex, prevNormalTex, t, ids, expectedDepth, normal)) continue;
       sum += texelFetch(historyTex, t, 0).rgb;
       n += 1.0;
     }

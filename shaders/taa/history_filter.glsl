@@ -88,12 +88,12 @@ vec3 historyCatmullRom16(sampler2D tex, vec2 uv, vec4 size) {
   return r;
 }
 
-vec3 sampleHistory(sampler2D tex, vec2 uv, vec4 size) {
+vec3 sampleHistory(TaaSettings s, sampler2D tex, vec2 uv, vec4 size) {
   vec3 h;
-  if (kHistoryFilter == 1) h = historyBSpline(tex, uv, size);
-  else if (kHistoryFilter == 2) h = historyCatmullRom9(tex, uv, size);
-  else if (kHistoryFilter == 3) h = historyCatmullRom5(tex, uv, size);
-  else if (kHistoryFilter == 4) h = historyCatmullRom16(tex, uv, size);
+  if (s.history_filter == HISTORY_FILTER_BSPLINE) h = historyBSpline(tex, uv, size);
+  else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_9) h = historyCatmullRom9(tex, uv, size);
+  else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_5) h = historyCatmullRom5(tex, uv, size);
+  else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_16) h = historyCatmullRom16(tex, uv, size);
   else h = historyBilinear(tex, uv);
   // Catmull-Rom's negative lobes can undershoot below zero next to bright edges.
   return max(h, vec3(0.0));

@@ -20,9 +20,9 @@ vec3 clipToBox(vec3 h, Box b) {
   return m > 1.0 ? center + offset / m : h;
 }
 
-vec3 rectifyHistory(vec3 h, Box b) {
-  if (kRectify == 1) return clampToBox(h, b);
-  if (kRectify == 2) return clipToBox(h, b);
+vec3 rectifyHistory(TaaSettings s, vec3 h, Box b) {
+  if (s.rectify == RECTIFY_CLAMP) return clampToBox(h, b);
+  if (s.rectify == RECTIFY_CLIP) return clipToBox(h, b);
   return h;
 }
 

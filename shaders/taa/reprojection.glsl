@@ -4,22 +4,22 @@
 #define TAA_REPROJECTION_GLSL
 
 // Linear view distance from a reversed-Z depth value (1 at near, 0 at far).
-float linearDepth(float d) {
-  float n = taaUniforms.planes.x, f = taaUniforms.planes.y;
+float linearDepth(TaaUniforms u, float d) {
+  float n = u.view.x, f = u.view.y;
   return n * f / (n + d * (f - n));
 }
 
 // The render pixel whose velocity this pixel uses: itself, the longest motion in
 // 3x3, or the nearest surface in 3x3 (largest reversed-Z depth), which keeps
 // silhouettes of moving objects from trailing.
-ivec2 velocityPixel(ivec2 p, ivec2 hi) {
-  if (kVelocitySampling == 0) return p;
+ivec2 velocityPixel(TaaSettings s, sampler2D velocityTex, sampler2D depthTex, ivec2 p, ivec2 hi) {
+  if (s.velocity_sampling == VELOCITY_SAMPLING_PIXEL) return p;
   ivec2 best = p;
   float bestKey = -1.0;
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
       ivec2 q = clamp(p + ivec2(i, j), ivec2(0), hi);
-      float key = kVelocitySampling == 1 ? dot(texelFetch(velocityTex, q, 0).xy, texelFetch(velocityTex, q, 0).xy)
+      float key = s.velocity_sampling == VELOCITY_SAMPLING_LONGEST_3X3 ? dot(texelFetch(velocityTex, q, 0).xy, texelFetch(velocityTex, q, 0).xy)
                                          : texelFetch(depthTex, q, 0).r;
       if (key > bestKey) {
         bestKey = key;
@@ -35,32 +35,34 @@ struct Reprojection {
   vec2 motionPx;       // screen motion in output pixels, for velocity-driven alpha
 };
 
-Reprojection reprojectDepth(vec2 uv, float depth) {
-  vec4 world = taaUniforms.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-  vec4 prevClip = taaUniforms.prevViewProj * vec4(world.xyz / world.w, 1.0);
+Reprojection reprojectDepth(TaaUniforms u, vec2 uv, float depth) {
+  vec4 world = u.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
+  vec4 prevClip = u.prevViewProj * vec4(world.xyz / world.w, 1.0);
   Reprojection r;
   r.prevUv = prevClip.w > 0.0 ? prevClip.xy / prevClip.w * 0.5 + 0.5 : vec2(-1.0);
   r.expectedDepth = prevClip.w;
-  r.motionPx = (uv - r.prevUv) * taaUniforms.outputSize.xy;
+  r.motionPx = (uv - r.prevUv) * u.outputSize.xy;
   return r;
 }
 
 // Velocity is in pixels of this frame's render size, so dividing by that size
 // (not the output or allocation size) keeps it right under dynamic resolution.
-Reprojection reprojectVelocity(vec2 uv, vec2 velocityPx, float depth) {
+Reprojection reprojectVelocity(TaaUniforms u, vec2 uv, vec2 velocityPx, float depth) {
   Reprojection r;
-  r.prevUv = uv - velocityPx * taaUniforms.renderSize.zw;
-  r.expectedDepth = linearDepth(depth);
-  r.motionPx = velocityPx * taaUniforms.outputSize.xy * taaUniforms.renderSize.zw;
+  r.prevUv = uv - velocityPx * u.renderSize.zw;
+  r.expectedDepth = linearDepth(u, depth);
+  r.motionPx = velocityPx * u.outputSize.xy * u.renderSize.zw;
   return r;
 }
 
-Reprojection reproject(vec2 uv, ivec2 p, ivec2 hi) {
-  ivec2 vp = velocityPixel(p, hi);
+Reprojection reproject(TaaSettings s, TaaUniforms u, sampler2D depthTex, sampler2D velocityTex, usampler2D idsTex,
+                       vec2 uv, ivec2 p, ivec2 hi) {
+  ivec2 vp = velocityPixel(s, velocityTex, depthTex, p, hi);
   float depth = texelFetch(depthTex, vp, 0).r;
-  bool useVelocity = kUseVelocity == 2 || (kUseVelocity == 1 && (texelFetch(idsTex, vp, 0).r & IDS_MOVER_BIT) != 0u);
-  if (useVelocity) return reprojectVelocity(uv, texelFetch(velocityTex, vp, 0).xy, depth);
-  return reprojectDepth(uv, depth);
+  bool useVelocity = s.use_velocity == USE_VELOCITY_ALL ||
+                     (s.use_velocity == USE_VELOCITY_MOVERS && (texelFetch(idsTex, vp, 0).r & IDS_MOVER_BIT) != 0u);
+  if (useVelocity) return reprojectVelocity(u, uv, texelFetch(velocityTex, vp, 0).xy, depth);
+  return reprojectDepth(u, uv, depth);
 }
 
 #endif

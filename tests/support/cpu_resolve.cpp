@@ -5,7 +5,9 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <iterator>
 #include <stdexcept>
+#include <string_view>
 
 namespace taa::test::cpu {
 
@@ -299,8 +301,29 @@ void requireMirrored(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
   if (taa.mode != spec::TaaMode::Full) refuse("modes other than full");
   if (taa.use_velocity != spec::UseVelocity::All) refuse("use_velocity other than all");
   if (taa.velocity_sampling != spec::VelocitySampling::Pixel) refuse("3x3 velocity sampling");
-  if (taa.depth_culling || taa.consistency || taa.anti_ghosting) refuse("geometric rejection");
-  if (taa.velocity_in_alpha) refuse("velocity_in_alpha");
+  // Any other declared setting (common/taa_settings.h) the mirror does not implement must keep
+  // its default, so a new technique is refused here rather than silently left out.
+  static constexpr std::string_view kMirrored[] = {
+      "alpha",          "tonemap_weighting", "use_velocity",  "velocity_sampling",
+      "history_filter", "reject_offscreen",  "rejection_alpha", "rectify",
+      "variance_clip",  "variance_gamma",    "shaped_neighborhood", "color_space",
+      "shrink_chroma",  "luma_weight",       "alpha_min",     "alpha_max",
+      "velocity_alpha", "velocity_alpha_px", "reduce_blend_near_clamp", "history_format"};
+  const spec::TaaSpec defaults;
+  auto check = [&](const char* key, bool isDefault) {
+    const auto* end = std::end(kMirrored);
+    if (!isDefault && std::find(std::begin(kMirrored), end, key) == end) refuse(key);
+  };
+#define CPU_MIRROR_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+  check(#key, taa.key == defaults.key);
+#define CPU_MIRROR_B(key, def, id, name, modes, rule, text, doc, impl) \
+  check(#key, taa.key == defaults.key);
+#define CPU_MIRROR_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  check(#key, taa.key == defaults.key);
+  TAA_SETTINGS(CPU_MIRROR_E, CPU_MIRROR_B, CPU_MIRROR_F)
+#undef CPU_MIRROR_E
+#undef CPU_MIRROR_B
+#undef CPU_MIRROR_F
   if (in.current.width != in.history.width || in.current.height != in.history.height)
     refuse("upsampling (history and current sizes differ)");
   if (in.current.channels < 3 || in.history.channels < 3)

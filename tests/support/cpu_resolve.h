@@ -4,6 +4,16 @@
 // upsampling, with velocity reprojection from one constant velocity (use_velocity all, velocity
 // sampling pixel); the geometric rejection tests (depth, consistency, anti-ghosting) are not
 // mirrored and cpuResolve refuses specs that enable them.
+//
+// Why a mirror at all, when the GPU tests run the real shader: it checks what they cannot.
+// (1) The filters' algebra to 1e-6 (cpu_history_filter_test: merged taps reproduce ramps and
+// texel centres exactly); the GPU's bilinear hardware filter quantises its weights, so exactness
+// is not observable there. (2) Intermediate values the shader never writes out: the box's lo /
+// hi / mean, the rectified history, the alpha of each dynamic-alpha technique (cpu_resolve_test).
+// (3) That the shader computes the published formula rather than merely the same image as
+// yesterday (ResolveAgreement): a golden says "unchanged", not "right". Techniques without
+// such a need are tested through the GPU against their properties (e.g.
+// motion_adaptive_gamma_test.cpp), and the mirror refuses settings it does not cover.
 #pragma once
 
 #include <array>

@@ -1,13 +1,9 @@
 #include "passes/adaptive/adaptive.h"
 
-#include "vk/barrier.h"
-
 #include <cstdio>
-#include <cstring>
 
-#include "readback.h"
+#include "vk/barrier.h"
 #include "vk/context.h"
-#include "vk/transfer.h"
 
 namespace taa {
 
@@ -33,8 +29,7 @@ void hostReadBarrier(VkCommandBuffer cmd) {
 }
 
 void copyImage(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
-  from.use(cmd, vk::Use::TransferSrc);
-  to.use(cmd, vk::Use::TransferDst);
+  vk::BarrierBatch().use(from, vk::Use::TransferSrc).use(to, vk::Use::TransferDst).flush(cmd);
   VkImageCopy region{};
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.dstSubresource = region.srcSubresource;
@@ -47,7 +42,7 @@ void copyImage(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
 
 AdaptivePass::AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
                            const DrawList& firstFrame, bool capture)
-    : ctx_(ctx), spec_(spec), segmentation_(ctx, spec), trace_(ctx, spec, scene, firstFrame) {
+    : spec_(spec), segmentation_(ctx, spec), trace_(ctx, spec, scene, firstFrame) {
   if (spec.adaptive.fxaa_out_of_history && !spec.adaptive.trace_all) {
     fxaa_ = std::make_unique<FxaaPass>(ctx, FxaaSettings{}, true);
     filtered_ = outputImage(ctx, "adaptive_fxaa", spec, VK_IMAGE_USAGE_STORAGE_BIT);
@@ -86,23 +81,9 @@ std::vector<std::pair<std::string, double>> AdaptivePass::stats() const {
   return {{"traced_share", double(c.traced) / pixels}, {"fxaa_share", double(c.fxaa) / pixels}};
 }
 
-std::vector<NamedImage> AdaptivePass::readCaptures(glm::ivec2 size) {
-  std::vector<NamedImage> out;
-  if (!beforeTrace_) return out;
-  const int tw = int(beforeTrace_.desc().width);
-  out.push_back({"taa_resolve", decodeTarget(vk::readImage(ctx_, beforeTrace_),
-                                             beforeTrace_.desc().format, tw, size.x, size.y)});
-  vk::Image& mask = segmentation_.mask();
-  const auto bytes = vk::readImage(ctx_, mask);
-  Image m(size.x, size.y, 1);
-  for (int y = 0; y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x) {
-      uint32_t v;
-      std::memcpy(&v, &bytes[(size_t(y) * mask.desc().width + size_t(x)) * 4], 4);
-      m.at(x, y, 0) = float(v);
-    }
-  out.push_back({"segmentation", std::move(m)});
-  return out;
+std::vector<AdaptiveCapture> AdaptivePass::captures() {
+  if (!beforeTrace_) return {};
+  return {{"taa_resolve", &beforeTrace_, false}, {"segmentation", &segmentation_.mask(), true}};
 }
 
 std::vector<std::string> AdaptivePass::describe() const {

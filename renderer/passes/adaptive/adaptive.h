@@ -18,6 +18,13 @@
 
 namespace taa {
 
+// An image the harness reads back; `bits`: an integer mask read as float bit values.
+struct AdaptiveCapture {
+  const char* name;
+  vk::Image* image;
+  bool bits;
+};
+
 struct AdaptiveFrame {
   const script::FrameState* state = nullptr;
   const DrawList* draws = nullptr;
@@ -39,13 +46,12 @@ class AdaptivePass {
 
   // After the frame completed: the shares of pixels traced and FXAA'd.
   std::vector<std::pair<std::string, double>> stats() const;
-  // After the frame completed: "taa_resolve" (before tracing) and "segmentation"
-  // (the ADAPTIVE_MASK_* value per pixel), when capturing.
-  std::vector<NamedImage> readCaptures(glm::ivec2 size);
+  // "taa_resolve" (before tracing) and "segmentation" (the ADAPTIVE_MASK_* value per
+  // pixel), when capturing; read back at render size with the frame.
+  std::vector<AdaptiveCapture> captures();
   std::vector<std::string> describe() const;
 
  private:
-  vk::Context& ctx_;
   const spec::CaseSpec& spec_;
   SegmentationPass segmentation_;
   TracePass trace_;

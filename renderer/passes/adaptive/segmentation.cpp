@@ -4,6 +4,7 @@
 
 #include "passes/storage_image.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
@@ -18,16 +19,6 @@ vk::SpecConstants specConstants(const spec::CaseSpec& spec, bool hasHistory) {
       .set(SEG_SPEC_TRACE_DISOCCLUDED, a.trace_disoccluded)
       .set(SEG_SPEC_DEBUG, spec.debug.output == spec::DebugOutput::Segmentation);
   return c;
-}
-
-std::vector<VkDescriptorType> segmentationBindings() {
-  std::vector<VkDescriptorType> b(SEG_BINDING_COUNT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  b[SEG_BINDING_UNIFORMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  b[SEG_BINDING_COUNTER] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  b[SEG_BINDING_MASK] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  b[SEG_BINDING_COUNTS] = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  b[SEG_BINDING_DEBUG] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  return b;
 }
 
 }  // namespace
@@ -47,10 +38,10 @@ gpu::SegmentationUniforms makeSegmentationUniforms(const spec::CaseSpec& spec,
 SegmentationPass::SegmentationPass(vk::Context& ctx, const spec::CaseSpec& spec)
     : ctx_(ctx),
       spec_(spec),
-      withHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", segmentationBindings(), 0,
-                                             specConstants(spec, true))),
-      withoutHistory_(vk::createComputePipeline(ctx, "adaptive_segmentation.comp", segmentationBindings(),
-                                                0, specConstants(spec, false))),
+      withHistory_(
+          vk::createComputePipeline(ctx, "adaptive_segmentation.comp", specConstants(spec, true))),
+      withoutHistory_(
+          vk::createComputePipeline(ctx, "adaptive_segmentation.comp", specConstants(spec, false))),
       uniforms_(ctx, sizeof(gpu::SegmentationUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       counts_(ctx, sizeof(gpu::AdaptiveCounts), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
@@ -75,32 +66,21 @@ void SegmentationPass::record(VkCommandBuffer cmd, const script::FrameState& sta
   std::memcpy(uniforms_.mapped(), &u, sizeof(u));
   std::memset(counts_.mapped(), 0, sizeof(gpu::AdaptiveCounts));
 
-  vk::Bindings b;
-  b.uniform(SEG_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(u));
-  auto sampled = [&](uint32_t binding, vk::Image* image) {
-    image->use(cmd, vk::Use::SampledCompute);
-    b.sampled(binding, image->view(), point_.handle());
-  };
-  sampled(SEG_BINDING_COLOR, in.color);
-  sampled(SEG_BINDING_DEPTH, in.depth);
-  sampled(SEG_BINDING_NORMAL, in.normal);
-  sampled(SEG_BINDING_IDS, in.ids);
-  sampled(SEG_BINDING_REJECTION, in.rejection);
-  sampled(SEG_BINDING_RESOLVED, in.resolved);
-  // The counter is read and written in place, one pixel per invocation.
-  counter_.use(cmd, vk::Use::StorageWrite);
-  b.storage(SEG_BINDING_COUNTER, counter_.view());
-  mask_.use(cmd, vk::Use::StorageWrite);
-  b.storage(SEG_BINDING_MASK, mask_.view());
-  b.storageBuffer(SEG_BINDING_COUNTS, counts_.handle(), 0, sizeof(gpu::AdaptiveCounts));
-  vk::Image& debug = debug_ ? debug_ : noDebug_;
-  debug.use(cmd, vk::Use::StorageWrite);
-  b.storage(SEG_BINDING_DEBUG, debug.view());
-
-  const vk::Pipeline& pipeline = state.resetHistory ? withoutHistory_ : withHistory_;
-  pipeline.bind(cmd);
-  b.push(ctx_, cmd, pipeline);
-  vk::dispatch2d(cmd, uint32_t(state.renderSize.x), uint32_t(state.renderSize.y));
+  const VkSampler point = point_.handle();
+  vk::Dispatch(state.resetHistory ? withoutHistory_ : withHistory_)
+      .uniform(SEG_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(u))
+      .sample(SEG_BINDING_COLOR, *in.color, point)
+      .sample(SEG_BINDING_DEPTH, *in.depth, point)
+      .sample(SEG_BINDING_NORMAL, *in.normal, point)
+      .sample(SEG_BINDING_IDS, *in.ids, point)
+      .sample(SEG_BINDING_REJECTION, *in.rejection, point)
+      .sample(SEG_BINDING_RESOLVED, *in.resolved, point)
+      // The counter is read and written in place, one pixel per invocation.
+      .store(SEG_BINDING_COUNTER, counter_)
+      .store(SEG_BINDING_MASK, mask_)
+      .storageBuffer(SEG_BINDING_COUNTS, counts_.handle(), 0, sizeof(gpu::AdaptiveCounts))
+      .store(SEG_BINDING_DEBUG, debug_ ? debug_ : noDebug_)
+      .record(ctx_, cmd, uint32_t(state.renderSize.x), uint32_t(state.renderSize.y));
 }
 
 }  // namespace taa

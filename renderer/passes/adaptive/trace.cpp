@@ -8,26 +8,11 @@
 #include "passes/adaptive/trace_geometry.h"
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/dispatch.h"
 
 namespace taa {
 
 namespace {
-
-std::vector<VkDescriptorType> traceBindings() {
-  std::vector<VkDescriptorType> b(TRACE_BINDING_COUNT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  b[TRACE_BINDING_FRAME] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  b[TRACE_BINDING_PARAMS] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  b[TRACE_BINDING_MASK] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  b[TRACE_BINDING_OUT] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  b[TRACE_BINDING_TEXTURES] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  return b;
-}
-
-std::vector<uint32_t> bindingCounts() {
-  std::vector<uint32_t> c(TRACE_BINDING_COUNT, 1u);
-  c[TRACE_BINDING_TEXTURES] = TRACE_MAX_TEXTURES;
-  return c;
-}
 
 template <class T>
 void write(vk::Buffer& buffer, size_t first, const std::vector<T>& items) {
@@ -131,8 +116,7 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
 
   vk::SpecConstants c;
   c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples).set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod);
-  pipeline_ =
-      vk::createComputePipeline(ctx, "adaptive_trace.comp", traceBindings(), 0, c, bindingCounts());
+  pipeline_ = vk::createComputePipeline(ctx, "adaptive_trace.comp", c);
 }
 
 std::string TracePass::describe() const {
@@ -160,21 +144,17 @@ void TracePass::record(VkCommandBuffer cmd, const script::FrameState& state, con
   const gpu::TraceUniforms u = makeTraceUniforms(spec_, state, lodBias, staticRoot, moverRoot);
   std::memcpy(uniforms_.mapped(), &u, sizeof(u));
 
-  mask.use(cmd, vk::Use::SampledCompute);
-  target.use(cmd, vk::Use::StorageWrite);
-  pipeline_.bind(cmd);
-  vk::Bindings()
+  vk::Dispatch(pipeline_)
       .uniform(TRACE_BINDING_FRAME, frameUniforms, 0, sizeof(gpu::FrameUniforms))
       .uniform(TRACE_BINDING_PARAMS, uniforms_.handle(), 0, sizeof(u))
-      .storageBuffer(TRACE_BINDING_NODES, nodes_.handle(), 0, VK_WHOLE_SIZE)
-      .storageBuffer(TRACE_BINDING_TRIANGLES, triangles_.handle(), 0, VK_WHOLE_SIZE)
-      .storageBuffer(TRACE_BINDING_SHADING, shading_.handle(), 0, VK_WHOLE_SIZE)
-      .storageBuffer(TRACE_BINDING_MATERIALS, materials_.handle(), 0, VK_WHOLE_SIZE)
-      .sampled(TRACE_BINDING_MASK, mask.view(), point_.handle())
-      .storage(TRACE_BINDING_OUT, target.view())
+      .storageBuffer(TRACE_BINDING_NODES, nodes_.handle())
+      .storageBuffer(TRACE_BINDING_TRIANGLES, triangles_.handle())
+      .storageBuffer(TRACE_BINDING_SHADING, shading_.handle())
+      .storageBuffer(TRACE_BINDING_MATERIALS, materials_.handle())
+      .sample(TRACE_BINDING_MASK, mask, point_.handle())
+      .store(TRACE_BINDING_OUT, target)
       .sampledArray(TRACE_BINDING_TEXTURES, views_, samplers_)
-      .push(ctx_, cmd, pipeline_);
-  vk::dispatch2d(cmd, uint32_t(state.renderSize.x), uint32_t(state.renderSize.y));
+      .record(ctx_, cmd, uint32_t(state.renderSize.x), uint32_t(state.renderSize.y));
 }
 
 }  // namespace taa

@@ -1,0 +1,106 @@
+// The one place that says what each taa.mode runs: which passes replace or follow the
+// resolve, which path of taa_resolve.comp it takes, and which settings it fixes. Pass
+// planning (renderer/pass_plan.cpp), the renderer, the resolve pass and validation
+// (harness/case/validate_taa.cpp) ask here instead of testing modes themselves.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "spec/taa_spec.h"
+
+namespace taa::spec {
+
+struct ModeRule {
+  TaaMode mode;
+  bool resolve;     // runs taa_resolve.comp ...
+  Resolve path;     // ... on this path
+  bool tscmaa;      // TSCMAA's passes replace the resolve
+  bool adaptive;    // segmentation and ray tracing follow the resolve
+  bool accumulate;  // consistency is the only history validation (see effectiveTaa)
+  float alpha;      // taa.alpha when the case leaves it out (0: the declared default)
+};
+
+// Temporal accumulation's published blend weight is 0.2 (seed 003).
+inline constexpr ModeRule kModeRules[] = {
+    {TaaMode::Off, false, Resolve::PassThrough, false, false, false, 0.0f},
+    {TaaMode::PassThrough, true, Resolve::PassThrough, false, false, false, 0.0f},
+    {TaaMode::Basic, true, Resolve::Basic, false, false, false, 0.0f},
+    {TaaMode::Full, true, Resolve::Full, false, false, false, 0.0f},
+    {TaaMode::Accumulate, true, Resolve::Full, false, false, true, 0.2f},
+    {TaaMode::Tscmaa, false, Resolve::PassThrough, true, false, false, 0.0f},
+    {TaaMode::Adaptive, true, Resolve::Full, false, true, false, 0.0f},
+};
+
+constexpr const ModeRule& modeRule(TaaMode m) {
+  for (const auto& r : kModeRules)
+    if (r.mode == m) return r;
+  return kModeRules[0];
+}
+
+constexpr uint32_t modeBit(TaaMode m) {
+  return 1u << unsigned(m);
+}
+
+// Which taa.mode values a setting may be set in (the `modes` column of taa_settings.h).
+inline constexpr uint32_t kFullOnly = modeBit(TaaMode::Full) | modeBit(TaaMode::Adaptive);
+inline constexpr uint32_t kReprojecting = kFullOnly | modeBit(TaaMode::Accumulate);
+inline constexpr uint32_t kBlendingNotAccumulate = kFullOnly | modeBit(TaaMode::Basic);
+inline constexpr uint32_t kBlending = kReprojecting | modeBit(TaaMode::Basic);
+inline constexpr uint32_t kResolving = kBlending | modeBit(TaaMode::PassThrough);
+
+// The modes whose resolve takes `path`: a setting reaches that path's shader only if
+// its modes meet these.
+constexpr uint32_t pathModes(Resolve path) {
+  uint32_t bits = 0;
+  for (const auto& r : kModeRules)
+    if (r.resolve && r.path == path) bits |= modeBit(r.mode);
+  return bits;
+}
+
+// The `rule` of a setting that means something whenever its mode allows it.
+constexpr bool kAlways(const TaaSpec&) {
+  return true;
+}
+
+// "taa.mode is basic, full or adaptive": the modes of a mask, in words.
+inline std::string modesText(uint32_t modes) {
+  std::string names;
+  int count = 0, seen = 0;
+  for (const auto& n : enumNames(TaaMode{}))
+    if (modes & modeBit(n.value)) ++count;
+  for (const auto& n : enumNames(TaaMode{})) {
+    if (!(modes & modeBit(n.value))) continue;
+    ++seen;
+    if (seen > 1) names += seen == count ? " or " : ", ";
+    names += n.name;
+  }
+  return "taa.mode is " + names;
+}
+
+// The settings the resolve runs with: a setting outside its modes keeps its default
+// (validation refuses to set it), and accumulation, the full resolve with per-tap
+// geometric consistency as its only history validation and no colour rectification,
+// turns consistency on and rectification off.
+inline TaaSpec effectiveTaa(const TaaSpec& user) {
+#define TAA_RESET_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+  if (!(modes & bit)) t.key = defaults.key;
+#define TAA_RESET_B(key, def, id, name, modes, rule, text, doc, impl) \
+  if (!(modes & bit)) t.key = defaults.key;
+#define TAA_RESET_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  if (!(modes & bit)) t.key = defaults.key;
+  TaaSpec t = user;
+  const TaaSpec defaults;
+  const uint32_t bit = modeBit(user.mode);
+  TAA_SETTINGS(TAA_RESET_E, TAA_RESET_B, TAA_RESET_F)
+  if (modeRule(user.mode).accumulate) {
+    t.consistency = true;
+    t.rectify = Rectify::None;
+  }
+  return t;
+#undef TAA_RESET_E
+#undef TAA_RESET_B
+#undef TAA_RESET_F
+}
+
+}  // namespace taa::spec

@@ -8,7 +8,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -36,16 +35,16 @@ struct TscmaaFrame {
   }
 };
 
-spec::CaseSpec tscmaaCase() {
+spec::CheckedCase tscmaaCase() {
   auto s = staticCase();
   s.taa.mode = spec::TaaMode::Tscmaa;
   return s;
 }
 
 Outcome run(const std::vector<TscmaaFrame>& frames) {
-  auto inv = makeInvariant(InvariantKind::TscmaaNonEdge, tscmaaCase());
-  for (size_t i = 0; i < frames.size(); ++i) inv->observe(frames[i].view(int(i)));
-  return inv->finish();
+  std::vector<FrameView> views;
+  for (size_t i = 0; i < frames.size(); ++i) views.push_back(frames[i].view(int(i)));
+  return runViews("tscmaa_non_edge", tscmaaCase(), views);
 }
 
 }  // namespace
@@ -76,9 +75,9 @@ TEST(TscmaaNonEdgeInvariant, CmaaOffTheEdgeListFails) {
 }
 
 TEST(TscmaaNonEdgeInvariant, OnlyTscmaaCasesMayListIt) {
-  EXPECT_NE(inapplicable(InvariantKind::TscmaaNonEdge, staticCase()), "");
-  EXPECT_EQ(inapplicable(InvariantKind::TscmaaNonEdge, tscmaaCase()), "");
+  EXPECT_NE(inapplicable("tscmaa_non_edge", staticCase()), "");
+  EXPECT_EQ(inapplicable("tscmaa_non_edge", tscmaaCase()), "");
   auto fxaa = tscmaaCase();
   fxaa.post.fxaa = true;
-  EXPECT_NE(inapplicable(InvariantKind::TscmaaNonEdge, fxaa), "");
+  EXPECT_NE(inapplicable("tscmaa_non_edge", fxaa), "");
 }

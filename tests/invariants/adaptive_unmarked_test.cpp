@@ -31,7 +31,7 @@ spec::CheckedCase adaptiveCase() {
   return s;
 }
 
-Outcome run(const std::vector<AdaptiveFrame>& frames) {
+Outcome runAdaptive(const std::vector<AdaptiveFrame>& frames) {
   std::vector<FrameView> views;
   for (size_t i = 0; i < frames.size(); ++i) views.push_back(frames[i].view(int(i)));
   return runViews("adaptive_unmarked", adaptiveCase(), views);
@@ -47,7 +47,7 @@ TEST(AdaptiveUnmarkedInvariant, PassesWhenOnlyMarkedPixelsChange) {
     setRgb(f.output, 5, 4, 9.0f, 9.0f, 9.0f);
     setRgb(f.output, 0, 0, 0.5f, 0.5f, 0.5f);
   }
-  const auto o = run(frames);
+  const auto o = runAdaptive(frames);
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_NEAR(valueOf(o, "traced_share"), 2.0 / (kW * kH), 1e-9);
   EXPECT_NEAR(valueOf(o, "fxaa_share"), 1.0 / (kW * kH), 1e-9);
@@ -57,7 +57,7 @@ TEST(AdaptiveUnmarkedInvariant, FailsOnOneUnmarkedPixelChangedByOneUlp) {
   std::vector<AdaptiveFrame> frames(2);
   float& g = frames[1].output.at(7, 2, 1);
   g = std::nextafter(g, 2.0f);
-  const auto o = run(frames);
+  const auto o = runAdaptive(frames);
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "frame 1 pixel (7, 2)")) << o.detail;
   EXPECT_EQ(valueOf(o, "differing_unmarked_pixels"), 1.0);

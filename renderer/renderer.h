@@ -13,6 +13,7 @@
 
 namespace taa {
 
+class Device;
 namespace vk {
 class Context;
 }
@@ -42,6 +43,9 @@ struct RenderOptions {
 class Renderer {
  public:
   Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene, RenderOptions options = {});
+  // The harness's way in (device.h): no Vulkan type in its signature.
+  Renderer(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
+           RenderOptions options = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -10,6 +10,7 @@
 #include "core/input_file.h"
 #include "core/json_guard.h"
 #include "core/sha256.h"
+#include "invariants/registry.h"
 
 namespace taa::cases {
 
@@ -109,7 +110,7 @@ LoadedCase loadCase(const std::filesystem::path& file) {
   }
 }
 
-nlohmann::json resolvedJson(const spec::CaseSpec& spec) {
+nlohmann::json resolvedJson(const spec::CheckedCase& spec) {
   nlohmann::json out;
   JsonWriter writer(out);
   auto copy = spec;
@@ -120,8 +121,15 @@ nlohmann::json resolvedJson(const spec::CaseSpec& spec) {
 nlohmann::json settingsSchema() {
   auto rows = nlohmann::json::array();
   SchemaLister lister(rows, "");
-  spec::CaseSpec defaults;
+  spec::CheckedCase defaults;
   fields(lister, defaults);
+  // The spec holds invariant names as strings (the renderer does not know the harness's
+  // invariants); their allowed values come from the invariant table.
+  for (auto& row : rows)
+    if (row["key"] == "checks.invariants") {
+      row["type"] = "list of enum";
+      row["allowed"] = invariants::invariantNames();
+    }
   return rows;
 }
 

@@ -1,4 +1,5 @@
-// Case files: JSON in, a fully resolved CaseSpec out, or a CaseError listing every
+// Case files: JSON in, a fully resolved CheckedCase (the renderer's CaseSpec and the
+// harness's checks) out, or a CaseError listing every
 // problem with its file, key path and fix.
 #pragma once
 
@@ -7,12 +8,12 @@
 #include <set>
 #include <string>
 
-#include "spec/case_spec.h"
+#include "spec/checked_case.h"
 
 namespace taa::cases {
 
 struct LoadedCase {
-  spec::CaseSpec spec;
+  spec::CheckedCase spec;
   std::set<std::string> present;  // key paths the file sets; the rest are defaults
   // Of the file's bytes and of every file it references (scene, mover models, tracks),
   // for stale-golden detection.
@@ -25,7 +26,7 @@ LoadedCase loadCase(const std::filesystem::path& file);
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file);
 
 // Every value in force, as JSON (taa-harness validate --print).
-nlohmann::json resolvedJson(const spec::CaseSpec& spec);
+nlohmann::json resolvedJson(const spec::CheckedCase& spec);
 
 // One row per setting of the case format (taa-harness techniques --json).
 nlohmann::json settingsSchema();

@@ -147,7 +147,7 @@ std::string assetPathProblem(const std::string& value) {
   return "";
 }
 
-void validateCase(CaseSpec& spec, const std::set<std::string>& present) {
+void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   Problems p(spec.file.string());
   const int frames = spec.script.frames;
   if (!spec.scene.gltf.empty()) {

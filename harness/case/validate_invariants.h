@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "spec/case_spec.h"
+#include "spec/checked_case.h"
 
 namespace taa::cases {
 
 // (key path, message) per problem.
 std::vector<std::pair<std::string, std::string>> invariantProblems(
-    const spec::CaseSpec& spec, const std::set<std::string>& present);
+    const spec::CheckedCase& spec, const std::set<std::string>& present);
 
 }  // namespace taa::cases

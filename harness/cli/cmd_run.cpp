@@ -8,6 +8,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "compare/metric_table.h"
 #include "compare/tolerance.h"
 #include "core/output_file.h"
 #include "report/html_report.h"
@@ -19,17 +20,22 @@ namespace taa::cli {
 namespace fs = std::filesystem;
 
 namespace {
-const char* kRunUsage =
-    "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] [--validate]\n"
-    "                        [--metric NAME --above X] [--fail-fast]\n"
-    "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants and\n"
-    "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
-    "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices.\n"
-    "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
-    "  cover the cases run so far.\n"
-    "  --metric NAME --above X: exit 1 when a checked frame's NAME (max_abs, rmse, psnr, share_over,\n"
-    "  flip_mean, flip_p99) against its golden exceeds X, else 0 (bit-exactness is not required).\n"
-    "exit: 0 pass, 1 regression, 2 bad input, 3 environment";
+std::string runUsage() {
+  return "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] "
+         "[--validate]\n"
+         "                        [--metric NAME --above X] [--fail-fast]\n"
+         "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants "
+         "and\n"
+         "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
+         "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices.\n"
+         "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
+         "  cover the cases run so far.\n"
+         "  --metric NAME --above X: exit 1 when a checked frame's NAME (" +
+         compare::metricList(compare::goldenMetrics()) +
+         ")\n  against its golden is past X (below X for psnr), else 0 (bit-exactness is not "
+         "required).\n"
+         "exit: 0 pass, 1 regression, 2 bad input, 3 environment";
+}
 
 // Applies --metric/--above: quality drift past a bound, ignoring bit-exactness.
 int metricVerdict(const run::RunResults& results, const std::string& metric, double above) {
@@ -42,9 +48,11 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
         continue;
       }
       const double v = compare::metricByName(f.metrics, metric);
-      const bool over = metric == "psnr" ? v < above : !(v <= above);
-      std::cout << (over ? "ABOVE " : "OK ") << c.name << " frame " << f.frame << " " << metric << " " << v
-                << (metric == "psnr" ? " (bound: at least " : " (bound: at most ") << above << ")\n";
+      const bool higherIsBetter = compare::findMetric(metric)->better == compare::Better::Higher;
+      const bool over = compare::violates(*compare::findMetric(metric), v, above);
+      std::cout << (over ? "ABOVE " : "OK ") << c.name << " frame " << f.frame << " " << metric
+                << " " << v << (higherIsBetter ? " (bound: at least " : " (bound: at most ")
+                << above << ")\n";
       bad |= over;
     }
   return bad ? kRegression : kPass;
@@ -54,10 +62,10 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
 int cmdRun(const Args& args) {
   const auto a =
       parseArgs(args, {"--validate", "--fail-fast"},
-                {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, kRunUsage);
-  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kRunUsage);
+                {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, runUsage());
+  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + runUsage());
   if (a.values.count("--metric") != a.values.count("--above"))
-    throw UsageError(std::string("--metric and --above go together\nusage: ") + kRunUsage);
+    throw UsageError(std::string("--metric and --above go together\nusage: ") + runUsage());
   if (a.values.count("--metric")) {
     try {
       run::ImageMetrics probe;

@@ -8,8 +8,8 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "device.h"
 #include "sweep/sweep.h"
-#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
@@ -61,11 +61,10 @@ int cmdSweep(const Args& args) {
     };
   const fs::path out = a.value("--out", (fs::path("out/sweep") / caseFile.stem()).string());
   refuseOutputInGoldens(out, run::defaultGoldensRoot(caseFile));
-  vk::ContextOptions co;
+  DeviceOptions co;
   co.device = a.value("--device");
-  co.shaderCacheDir = vk::shaderCacheDir();
-  vk::Context ctx(co);
-  const auto result = sweep::runSweep(ctx, caseFile, presets, names, options);
+  Device device(co);
+  const auto result = sweep::runSweep(device, caseFile, presets, names, options);
   if (options.progress) std::cerr << "\r\033[K";
   sweep::writeSweep(out, result);
   std::cout << "sweep of " << result.caseName << " on " << result.device << ", frames " << result.fromFrame << ".."

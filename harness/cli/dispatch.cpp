@@ -8,12 +8,12 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
-#include "golden/manifest.h"
 #include "core/output_file.h"
+#include "device.h"
+#include "device_error.h"
+#include "golden/manifest.h"
 #include "scene/scene_error.h"
 #include "script/track.h"
-#include "vk/check.h"
-#include "vk/pipeline.h"
 
 namespace taa::cli {
 
@@ -59,7 +59,7 @@ int dispatch(int argc, char** argv) {
   }
   if (name == "--version" || name == "version") {
     // Where the SPIR-V comes from tells an installed binary from one in a build tree.
-    std::cout << "taa-harness " << TAA_VERSION << "\nshaders: " << vk::shaderDir() << "\n";
+    std::cout << "taa-harness " << TAA_VERSION << "\nshaders: " << shaderFolder() << "\n";
     return kPass;
   }
   const auto it = commands().find(name);
@@ -88,7 +88,7 @@ int dispatch(int argc, char** argv) {
   } catch (const golden::GoldenError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
-  } catch (const vk::EnvironmentError& e) {
+  } catch (const EnvironmentError& e) {
     std::cerr << "environment: " << e.what() << "\n";
     return kEnvironment;
   } catch (const ImageWriteError& e) {
@@ -100,7 +100,7 @@ int dispatch(int argc, char** argv) {
   } catch (const ImageIoError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kEnvironment;
-  } catch (const vk::VulkanError& e) {
+  } catch (const DeviceError& e) {
     std::cerr << "vulkan: " << e.what() << "\n";
     return kEnvironment;
   } catch (const std::exception& e) {

@@ -13,11 +13,11 @@
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "core/output_file.h"
+#include "device.h"
+#include "device_error.h"
 #include "golden/environment.h"
 #include "run/console.h"
 #include "scene/scene_error.h"
-#include "vk/check.h"
-#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
@@ -113,13 +113,12 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
                       const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs) {
   BatchOutcome out;
-  vk::ContextOptions co;
+  DeviceOptions co;
   co.device = options.device;
   co.validate = options.validate;
-  co.shaderCacheDir = vk::shaderCacheDir();
-  vk::Context ctx(co);
-  out.results.device = ctx.info().name;
-  out.environment = golden::currentEnvironment(ctx.info());
+  Device device(co);
+  out.results.device = device.identity().name;
+  out.environment = golden::currentEnvironment(device.identity());
   out.results.fingerprint = out.environment.fingerprint();
   bool regression = false, badInput = false;
   for (size_t k = 0; k < batch.cases.size(); ++k) {
@@ -128,13 +127,14 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
     ro.progress = terminalProgress(loaded.spec.name, k, batch.cases.size());
     run::CaseResult result;
     try {
-      const int before = ctx.validationMessages();
+      const int before = device.validationMessages();
       std::map<int, Image>* keep = keepOutputs ? &out.outputs[loaded.spec.name] : nullptr;
-      result = run::runCase(ctx, loaded, ro, keep);
-      if (ctx.validationMessages() > before) {
+      result = run::runCase(device, loaded, ro, keep);
+      if (device.validationMessages() > before) {
         result.status = run::CaseStatus::Fail;
         result.message += std::string(result.message.empty() ? "" : "; ") +
-                          std::to_string(ctx.validationMessages() - before) + " validation message(s) (see stderr)";
+                          std::to_string(device.validationMessages() - before) +
+                          " validation message(s) (see stderr)";
       }
     } catch (const scene::SceneError& e) {
       result.name = loaded.spec.name;
@@ -155,7 +155,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       result.message = e.what();
       regression = true;
     } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const vk::EnvironmentError*>(&e) || dynamic_cast<const vk::VulkanError*>(&e)) throw;
+      if (dynamic_cast<const EnvironmentError*>(&e) || dynamic_cast<const DeviceError*>(&e)) throw;
       result.name = loaded.spec.name;
       result.file = loaded.spec.file.string();
       result.status = run::CaseStatus::Error;

@@ -6,20 +6,18 @@
 
 #include "cli/exit_codes.h"
 #include "scene/build_scene.h"
-#include "vk/shader_cache.h"
 
 namespace taa::cli {
 
 RunContext::RunContext(const spec::CaseSpec& spec, const std::string& device, bool validate,
                        RenderOptions renderOptions)
     : spec_(spec), validate_(validate) {
-  vk::ContextOptions options;
+  DeviceOptions options;
   options.device = device;
   options.validate = validate;
-  options.shaderCacheDir = vk::shaderCacheDir();
   scene_ = scene::buildScene(spec);
-  ctx_ = std::make_unique<vk::Context>(options);
-  renderer_ = std::make_unique<Renderer>(*ctx_, spec, scene_, renderOptions);
+  device_ = std::make_unique<Device>(options);
+  renderer_ = std::make_unique<Renderer>(*device_, spec, scene_, renderOptions);
 }
 
 RunContext::~RunContext() = default;
@@ -34,8 +32,8 @@ std::function<void(int)> RunContext::progress() const {
 }
 
 int RunContext::finish() const {
-  if (validate_ && ctx_->validationMessages() > 0) {
-    std::cerr << spec_.name << ": " << ctx_->validationMessages() << " validation message(s)\n";
+  if (validate_ && device_->validationMessages() > 0) {
+    std::cerr << spec_.name << ": " << device_->validationMessages() << " validation message(s)\n";
     return kRegression;
   }
   return kPass;

@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
+#include "device.h"
 #include "renderer.h"
 #include "scene/scene.h"
 #include "spec/case_spec.h"
-#include "vk/context.h"
 
 namespace taa::cli {
 
@@ -19,7 +19,7 @@ class RunContext {
   RunContext(const spec::CaseSpec& spec, const std::string& device, bool validate, RenderOptions options = {});
   ~RunContext();
 
-  vk::Context& context() { return *ctx_; }
+  Device& device() { return *device_; }
   Renderer& renderer() { return *renderer_; }
   // Prints "case: frame i/n" on a terminal; silent otherwise (CI logs stay line-per-check).
   std::function<void(int)> progress() const;
@@ -29,7 +29,7 @@ class RunContext {
  private:
   const spec::CaseSpec& spec_;
   bool validate_;
-  std::unique_ptr<vk::Context> ctx_;
+  std::unique_ptr<Device> device_;
   scene::Scene scene_;
   std::unique_ptr<Renderer> renderer_;
 };

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "compare/metric_table.h"
 #include "compare/metrics.h"
 #include "core/image_io.h"
 
@@ -50,9 +51,11 @@ std::string violation(const Bound& b, double value) {
 }  // namespace
 
 const std::vector<std::string>& metricNames() {
-  static const std::vector<std::string> names = {"max_abs",    "mean_abs",  "rmse",     "psnr",
-                                                 "share_over", "flip_mean", "flip_p50", "flip_p95",
-                                                 "flip_p99",   "flip_max"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& row : metricTable()) out.emplace_back(row.name);
+    return out;
+  }();
   return names;
 }
 
@@ -104,22 +107,22 @@ CompareOutcome compareFiles(const CompareRequest& r) {
   CompareOutcome out;
   out.width = ref.width;
   out.height = ref.height;
-  std::vector<std::pair<std::string, double>> all;
-  if (wanted(r, "max_abs") || wanted(r, "mean_abs") || wanted(r, "rmse") || wanted(r, "psnr") ||
-      wanted(r, "share_over")) {
+  bool anyLinear = false, anyFlip = r.wantHeatmap;
+  for (const auto& row : metricTable()) {
+    if (!wanted(r, row.name)) continue;
+    if (row.source == MetricSource::Linear)
+      anyLinear = true;
+    else
+      anyFlip = true;
+  }
+  Metrics m;
+  if (anyLinear) {
     MetricOptions mo;
     mo.threshold = r.pixelThreshold;
-    const Metrics m = computeMetrics(ref, test, mo);
-    all.insert(all.end(), {{"max_abs", m.maxAbsError},
-                           {"mean_abs", m.meanAbsError},
-                           {"rmse", m.rmse},
-                           {"psnr", m.psnr},
-                           {"share_over", m.shareOverThreshold}});
+    m = computeMetrics(ref, test, mo);
   }
-  const bool anyFlip = r.wantHeatmap || wanted(r, "flip_mean") || wanted(r, "flip_p50") ||
-                       wanted(r, "flip_p95") || wanted(r, "flip_p99") || wanted(r, "flip_max");
+  FlipResult f;
   if (anyFlip) {
-    FlipResult f;
     if (r.hdr) {
       HdrFlipResult h = flipHdr(ref, test, r.flip);
       out.startExposure = h.startExposure;
@@ -134,13 +137,13 @@ CompareOutcome compareFiles(const CompareRequest& r) {
       f = flipLdr(ref, test, r.flip);
       out.flipKind = "ldr";
     }
-    all.insert(all.end(), {{"flip_mean", f.mean},
-                           {"flip_p50", f.p50},
-                           {"flip_p95", f.p95},
-                           {"flip_p99", f.p99},
-                           {"flip_max", f.max}});
-    out.flipMap = std::move(f.errorMap);
   }
+  // Only what was computed: a metric of a computation that did not run is never wanted.
+  std::vector<std::pair<std::string, double>> all;
+  for (const auto& row : metricTable())
+    if (row.source == MetricSource::Linear ? anyLinear : anyFlip)
+      all.emplace_back(row.name, row.value(m, f));
+  out.flipMap = std::move(f.errorMap);
   for (const auto& [name, value] : all) {
     if (wanted(r, name)) out.values.emplace_back(name, value);
   }

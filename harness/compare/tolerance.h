@@ -27,8 +27,8 @@ Measured measureAgainstGolden(const Image& golden, const Image& actual, float pi
 // "rmse 0.021 > 0.01"-style lines, one per bound the metrics exceed.
 std::vector<std::string> toleranceViolations(const run::ImageMetrics& m, const spec::ToleranceSpec& t);
 
-// The value of a named metric ("max_abs", "rmse", "psnr", "share_over", "flip_mean",
-// "flip_p99"); throws std::invalid_argument listing the names for anything else.
+// The value of a named metric of a golden comparison (the rows of compare/metric_table.h with
+// a golden field); throws std::invalid_argument listing the names for anything else.
 double metricByName(const run::ImageMetrics& m, const std::string& name);
 
 }  // namespace taa::compare

@@ -60,14 +60,12 @@ Environment Environment::fromJson(const nlohmann::json& j) {
   return e;
 }
 
-Environment currentEnvironment(const vk::DeviceInfo& d) {
+Environment currentEnvironment(const DeviceIdentity& d) {
   Environment e;
   e.device = d.name;
   e.driverName = d.driverName;
   e.driverInfo = d.driverInfo;
-  e.apiVersion = std::to_string(VK_API_VERSION_MAJOR(d.apiVersion)) + "." +
-                 std::to_string(VK_API_VERSION_MINOR(d.apiVersion)) + "." +
-                 std::to_string(VK_API_VERSION_PATCH(d.apiVersion));
+  e.apiVersion = d.apiVersion;
   e.cpuFeatures = cpuFeatureLevel();
   return e;
 }

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "vk/context.h"
+#include "device.h"
 
 namespace taa::golden {
 
@@ -28,6 +28,6 @@ struct Environment {
 // Gallium override in force, which is what lavapipe's code generation follows.
 std::string cpuFeatureLevel();
 
-Environment currentEnvironment(const vk::DeviceInfo& device);
+Environment currentEnvironment(const DeviceIdentity& device);
 
 }  // namespace taa::golden

@@ -49,7 +49,7 @@ class AdaptiveUnmarked : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"adaptive_unmarked", false, "", {}};
+    Outcome o;
     const double n = pixels_ > 0 ? double(pixels_) : 1.0;
     o.values = {{"frames", double(frames_)},
                 {"differing_unmarked_pixels", double(differing_)},
@@ -79,9 +79,7 @@ class AdaptiveUnmarked : public Invariant {
   long long pixels_ = 0, traced_ = 0, fxaa_ = 0, differing_ = 0;
 };
 
-}  // namespace
-
-std::string adaptiveUnmarkedInapplicable(const CaseSpec& spec) {
+std::string adaptiveUnmarkedInapplicable(const CheckedCase& spec) {
   const std::string name = "adaptive_unmarked";
   if (spec.taa.mode != TaaMode::Adaptive)
     return name + " checks adaptive ray tracing, but taa.mode is " + enumToString(spec.taa.mode) +
@@ -95,8 +93,14 @@ std::string adaptiveUnmarkedInapplicable(const CaseSpec& spec) {
   return "";
 }
 
-std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CaseSpec&) {
+std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CheckedCase&) {
   return std::make_unique<AdaptiveUnmarked>();
 }
+
+}  // namespace
+
+const InvariantInfo adaptive_unmarked_invariant = {
+    "adaptive_unmarked",          {.adaptive = true},  Frames::FromFrame, nullptr,
+    adaptiveUnmarkedInapplicable, makeAdaptiveUnmarked};
 
 }  // namespace taa::invariants

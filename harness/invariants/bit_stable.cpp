@@ -11,7 +11,7 @@ using namespace taa::spec;
 
 class BitStable : public Invariant {
  public:
-  explicit BitStable(const CaseSpec& spec) : after_(spec.checks.bit_stable.after_frame) {}
+  explicit BitStable(const CheckedCase& spec) : after_(spec.checks.bit_stable.after_frame) {}
 
   void observe(const FrameView& f) override {
     if (f.frame < after_) return;
@@ -33,7 +33,7 @@ class BitStable : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"bit_stable", false, "", {}};
+    Outcome o;
     o.values = {{"after_frame", after_},
                 {"frames_compared", double(compared_)},
                 {"changes", double(changes_)}};
@@ -62,9 +62,7 @@ class BitStable : public Invariant {
   int prevFrame_ = -1, compared_ = 0, changes_ = 0, firstChange_ = -1;
 };
 
-}  // namespace
-
-std::string bitStableInapplicable(const CaseSpec& spec) {
+std::string bitStableInapplicable(const CheckedCase& spec) {
   const std::string name = "bit_stable";
   const int after = spec.checks.bit_stable.after_frame;
   if (after >= spec.script.frames - 1)
@@ -88,8 +86,13 @@ std::string bitStableInapplicable(const CaseSpec& spec) {
   return "";
 }
 
-std::unique_ptr<Invariant> makeBitStable(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeBitStable(const CheckedCase& spec) {
   return std::make_unique<BitStable>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo bit_stable_invariant = {
+    "bit_stable", {}, Frames::FromFrame, "bit_stable", bitStableInapplicable, makeBitStable};
 
 }  // namespace taa::invariants

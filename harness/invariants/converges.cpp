@@ -17,11 +17,10 @@ using namespace taa::spec;
 
 class Converges : public Invariant {
  public:
-  explicit Converges(const CaseSpec& spec)
-      : ratio_(spec.checks.converges.ratio), fromFrame_(spec.checks.from_frame) {}
+  explicit Converges(const CheckedCase& spec) : ratio_(spec.checks.converges.ratio) {}
 
   void observe(const FrameView& f) override {
-    if (!error_.empty() || f.frame < fromFrame_) return;
+    if (!error_.empty()) return;
     error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
     if (!error_.empty()) return;
     if (f.historyReset || rmse_.empty()) {
@@ -32,7 +31,7 @@ class Converges : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"converges", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -65,15 +64,12 @@ class Converges : public Invariant {
 
  private:
   double ratio_;
-  int fromFrame_;
   std::string error_;
   std::vector<double> rmse_;  // of the current accumulation run
   int start_ = 0;
 };
 
-}  // namespace
-
-std::string convergesInapplicable(const CaseSpec& spec) {
+std::string convergesInapplicable(const CheckedCase& spec) {
   const std::string name = "converges";
   if (auto what = whatMoves(spec); !what.empty())
     return name + " needs a static scene, but " + what +
@@ -87,8 +83,13 @@ std::string convergesInapplicable(const CaseSpec& spec) {
   return debugViewReason(name, spec);
 }
 
-std::unique_ptr<Invariant> makeConverges(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeConverges(const CheckedCase& spec) {
   return std::make_unique<Converges>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo converges_invariant = {"converges", {.reference = true},   Frames::FromFrame,
+                                           "converges", convergesInapplicable, makeConverges};
 
 }  // namespace taa::invariants

@@ -31,7 +31,7 @@ class Determinism : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"determinism", false, "", {}};
+    Outcome o;
     for (const auto& [frame, hash] : first_)
       if (!seen_.count(frame)) {
         ++mismatches_;
@@ -61,10 +61,13 @@ class Determinism : public Invariant {
   std::string why_;
 };
 
-}  // namespace
-
-std::unique_ptr<Invariant> makeDeterminism(const spec::CaseSpec&) {
+std::unique_ptr<Invariant> makeDeterminism(const spec::CheckedCase&) {
   return std::make_unique<Determinism>();
 }
+
+}  // namespace
+
+const InvariantInfo determinism_invariant = {
+    "determinism", {.secondRun = true}, Frames::FromFrame, nullptr, nullptr, makeDeterminism};
 
 }  // namespace taa::invariants

@@ -22,11 +22,11 @@ double meanLuminance(const Image& img) {
 
 class Energy : public Invariant {
  public:
-  explicit Energy(const CaseSpec& spec)
+  explicit Energy(const CheckedCase& spec)
       : epsilon_(spec.checks.energy.epsilon), fromFrame_(spec.checks.from_frame) {}
 
   void observe(const FrameView& f) override {
-    if (!error_.empty() || f.frame < fromFrame_ || f.historyReset) return;
+    if (!error_.empty() || f.historyReset) return;
     error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
     if (!error_.empty()) return;
     const double out = meanLuminance(*f.output), ref = meanLuminance(*f.reference);
@@ -39,7 +39,7 @@ class Energy : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"energy", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -73,14 +73,17 @@ class Energy : public Invariant {
   int worstFrame_ = -1;
 };
 
-}  // namespace
-
-std::string energyInapplicable(const CaseSpec& spec) {
+std::string energyInapplicable(const CheckedCase& spec) {
   return debugViewReason("energy", spec);
 }
 
-std::unique_ptr<Invariant> makeEnergy(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeEnergy(const CheckedCase& spec) {
   return std::make_unique<Energy>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo energy_invariant = {"energy", {.reference = true}, Frames::FromFrame,
+                                        "energy", energyInapplicable,  makeEnergy};
 
 }  // namespace taa::invariants

@@ -30,7 +30,7 @@ class Finite : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"finite", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -68,10 +68,12 @@ class Finite : public Invariant {
   std::string firstValue_;
 };
 
-}  // namespace
-
-std::unique_ptr<Invariant> makeFinite(const spec::CaseSpec&) {
+std::unique_ptr<Invariant> makeFinite(const spec::CheckedCase&) {
   return std::make_unique<Finite>();
 }
+
+}  // namespace
+
+const InvariantInfo finite_invariant = {"finite", {}, Frames::All, nullptr, nullptr, makeFinite};
 
 }  // namespace taa::invariants

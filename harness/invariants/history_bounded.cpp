@@ -29,7 +29,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class HistoryBounded : public Invariant {
  public:
-  explicit HistoryBounded(const CaseSpec& spec)
+  explicit HistoryBounded(const CheckedCase& spec)
       : ycocg_(spec.taa.color_space == ColorSpace::YCoCg),
         clip_(spec.taa.rectify == Rectify::Clip),
         shrinkChroma_(ycocg_ && spec.taa.shrink_chroma),
@@ -46,7 +46,7 @@ class HistoryBounded : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"history_bounded", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -110,9 +110,7 @@ class HistoryBounded : public Invariant {
   int worstFrame_ = -1, worstX_ = -1, worstY_ = -1;
 };
 
-}  // namespace
-
-std::string historyBoundedInapplicable(const CaseSpec& spec) {
+std::string historyBoundedInapplicable(const CheckedCase& spec) {
   const std::string name = "history_bounded";
   const TaaSpec& t = spec.taa;
   auto because = [&](const std::string& why, const std::string& fix) {
@@ -145,8 +143,14 @@ std::string historyBoundedInapplicable(const CaseSpec& spec) {
   return "";
 }
 
-std::unique_ptr<Invariant> makeHistoryBounded(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeHistoryBounded(const CheckedCase& spec) {
   return std::make_unique<HistoryBounded>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo history_bounded_invariant = {"history_bounded",          {.current = true},
+                                                 Frames::FromFrame,          nullptr,
+                                                 historyBoundedInapplicable, makeHistoryBounded};
 
 }  // namespace taa::invariants

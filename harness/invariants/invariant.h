@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "spec/case_spec.h"
+#include "spec/checked_case.h"
 
 namespace taa::invariants {
 
@@ -41,12 +41,15 @@ struct Needs {
 };
 
 struct Outcome {
-  std::string name;
+  std::string name;  // set by the runner from the invariant's table row
   bool passed = false;
   std::string detail;  // one line: what was measured against what bound, where it failed
   std::vector<std::pair<std::string, double>> values;  // measured figures for the report
 };
 
+// Built by its row in invariants/registry.h. The runner decides which frames reach
+// observe() (checks.from_frame and the row's Frames), so an invariant judges every frame
+// it is given.
 class Invariant {
  public:
   virtual ~Invariant() = default;
@@ -55,13 +58,5 @@ class Invariant {
   virtual void observeRepeat(const FrameView&) {}
   virtual Outcome finish() = 0;
 };
-
-Needs needsOf(spec::InvariantKind kind);
-
-// Why the case cannot use this invariant (it checks a technique the case does not
-// enable, or the case lacks what it measures), or "" when it can.
-std::string inapplicable(spec::InvariantKind kind, const spec::CaseSpec& spec);
-
-std::unique_ptr<Invariant> makeInvariant(spec::InvariantKind kind, const spec::CaseSpec& spec);
 
 }  // namespace taa::invariants

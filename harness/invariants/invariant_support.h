@@ -1,5 +1,5 @@
-// Shared by the invariant files: the per-invariant factories and applicability rules the
-// factory dispatches to, tonemapped luma, and the spec predicates several invariants use.
+// Shared by the invariant files: their table row type, tonemapped luma, and the spec
+// predicates several invariants use.
 #pragma once
 
 #include <cmath>
@@ -9,31 +9,10 @@
 
 #include "core/image.h"
 #include "invariants/invariant.h"
+#include "invariants/registry.h"
 #include "spec/case_spec.h"
 
 namespace taa::invariants {
-
-// One pair per invariant, defined in the file named after it.
-std::unique_ptr<Invariant> makeHistoryBounded(const spec::CaseSpec& spec);
-std::string historyBoundedInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeNoGhosting(const spec::CaseSpec& spec);
-std::string noGhostingInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeConverges(const spec::CaseSpec& spec);
-std::string convergesInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeTemporalStability(const spec::CaseSpec& spec);
-std::string temporalStabilityInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeFinite(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeEnergy(const spec::CaseSpec& spec);
-std::string energyInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeDeterminism(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeBitStable(const spec::CaseSpec& spec);
-std::string bitStableInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeMatchesInput(const spec::CaseSpec& spec);
-std::string matchesInputInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeAdaptiveUnmarked(const spec::CaseSpec& spec);
-std::string adaptiveUnmarkedInapplicable(const spec::CaseSpec& spec);
-std::unique_ptr<Invariant> makeTscmaaNonEdge(const spec::CaseSpec& spec);
-std::string tscmaaNonEdgeInapplicable(const spec::CaseSpec& spec);
 
 // Rec. 709 luma of the per-channel Reinhard curve c / (1 + c), the mapping toDisplaySrgb
 // applies before the sRGB transfer (c <= 0 -> 0, +Inf -> 1). It lies in [0, 1), so a few

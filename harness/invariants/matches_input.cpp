@@ -35,7 +35,8 @@ class MatchesInput : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"matches_input", false, error_, {}};
+    Outcome o;
+    o.detail = error_;
     if (!error_.empty()) return o;
     o.values = {{"differing_samples", double(differing_)}, {"frames", double(frames_)}};
     if (frames_ == 0) {
@@ -55,11 +56,11 @@ class MatchesInput : public Invariant {
   int frames_ = 0;
 };
 
-}  // namespace
+std::unique_ptr<Invariant> makeMatchesInput(const spec::CheckedCase&) {
+  return std::make_unique<MatchesInput>();
+}
 
-std::unique_ptr<Invariant> makeMatchesInput(const spec::CaseSpec&) { return std::make_unique<MatchesInput>(); }
-
-std::string matchesInputInapplicable(const spec::CaseSpec& spec) {
+std::string matchesInputInapplicable(const spec::CheckedCase& spec) {
   const std::string name = "matches_input";
   if (auto r = renderSizeReason(name, spec); !r.empty()) return r;
   if (spec.post.sharpen != spec::Sharpen::None || spec.post.fxaa || spec.post.motion_blur)
@@ -69,5 +70,11 @@ std::string matchesInputInapplicable(const spec::CaseSpec& spec) {
     return name + " compares the output with the input, but debug.output replaces the output";
   return "";
 }
+
+}  // namespace
+
+const InvariantInfo matches_input_invariant = {"matches_input",          {.current = true},
+                                               Frames::FromFrame,        nullptr,
+                                               matchesInputInapplicable, makeMatchesInput};
 
 }  // namespace taa::invariants

@@ -19,10 +19,8 @@ using namespace taa::spec;
 
 class NoGhosting : public Invariant {
  public:
-  explicit NoGhosting(const CaseSpec& spec)
-      : k_(spec.checks.no_ghosting.frames),
-        maxError_(spec.checks.no_ghosting.max_error),
-        fromFrame_(spec.checks.from_frame) {}
+  explicit NoGhosting(const CheckedCase& spec)
+      : k_(spec.checks.no_ghosting.frames), maxError_(spec.checks.no_ghosting.max_error) {}
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
@@ -39,7 +37,6 @@ class NoGhosting : public Invariant {
       for (int x = 0; x < ids.width; ++x)
         if (ids.at(x, y, 2) != 0.0f)
           lastCovered_[size_t(y) * size_t(ids.width) + size_t(x)] = f.frame;
-    if (f.frame < fromFrame_) return;
 
     double sum = 0.0;
     long long count = 0;
@@ -60,7 +57,7 @@ class NoGhosting : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"no_ghosting", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -88,7 +85,6 @@ class NoGhosting : public Invariant {
   static constexpr int kNever = std::numeric_limits<int>::min() / 2;
   int k_;
   double maxError_;
-  int fromFrame_;
   std::string error_;
   std::vector<int> lastCovered_;
   int framesWithPixels_ = 0;
@@ -102,9 +98,7 @@ bool moverMoves(const MoverSpec& m) {
          (m.shape == MoverShape::Gltf && m.animation_speed > 0.0f);
 }
 
-}  // namespace
-
-std::string noGhostingInapplicable(const CaseSpec& spec) {
+std::string noGhostingInapplicable(const CheckedCase& spec) {
   const std::string name = "no_ghosting";
   if (spec.movers.empty())
     return name +
@@ -119,8 +113,14 @@ std::string noGhostingInapplicable(const CaseSpec& spec) {
   return debugViewReason(name, spec);
 }
 
-std::unique_ptr<Invariant> makeNoGhosting(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeNoGhosting(const CheckedCase& spec) {
   return std::make_unique<NoGhosting>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo no_ghosting_invariant = {
+    "no_ghosting", {.reference = true, .ids = true}, Frames::FromFrame,
+    "no_ghosting", noGhostingInapplicable,           makeNoGhosting};
 
 }  // namespace taa::invariants

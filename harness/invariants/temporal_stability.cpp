@@ -22,10 +22,9 @@ constexpr float kStaticPx = 0.01f;
 
 class TemporalStability : public Invariant {
  public:
-  explicit TemporalStability(const CaseSpec& spec)
+  explicit TemporalStability(const CheckedCase& spec)
       : factor_(spec.checks.temporal_stability.factor),
-        epsilon_(spec.checks.temporal_stability.epsilon),
-        fromFrame_(spec.checks.from_frame) {}
+        epsilon_(spec.checks.temporal_stability.epsilon) {}
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
@@ -47,7 +46,7 @@ class TemporalStability : public Invariant {
         still[i] = std::sqrt(vx * vx + vy * vy) < kStaticPx && f.ids->at(x, y, 2) == 0.0f;
       }
     const bool comparable = havePrev_ && prevOut_.size() == n && prevFrame_ == f.frame - 1;
-    if (comparable && !f.historyReset && f.frame >= fromFrame_) {
+    if (comparable && !f.historyReset) {
       ++framesSeen_;
       double dOut = 0.0, dRef = 0.0;
       long long count = 0;
@@ -72,7 +71,7 @@ class TemporalStability : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"temporal_stability", false, "", {}};
+    Outcome o;
     if (!error_.empty()) {
       o.detail = error_;
       return o;
@@ -99,7 +98,6 @@ class TemporalStability : public Invariant {
 
  private:
   double factor_, epsilon_;
-  int fromFrame_;
   std::string error_;
   std::vector<float> prevOut_, prevRef_;
   std::vector<char> prevStill_;
@@ -110,17 +108,25 @@ class TemporalStability : public Invariant {
   double sumOut_ = 0.0, sumRef_ = 0.0;
 };
 
-}  // namespace
-
-std::string temporalStabilityInapplicable(const CaseSpec& spec) {
+std::string temporalStabilityInapplicable(const CheckedCase& spec) {
   const std::string name = "temporal_stability";
   if (auto r = noHistoryReason(name, spec); !r.empty()) return r;
   if (auto r = renderSizeReason(name, spec); !r.empty()) return r;
   return debugViewReason(name, spec);
 }
 
-std::unique_ptr<Invariant> makeTemporalStability(const CaseSpec& spec) {
+std::unique_ptr<Invariant> makeTemporalStability(const CheckedCase& spec) {
   return std::make_unique<TemporalStability>(spec);
 }
+
+}  // namespace
+
+const InvariantInfo temporal_stability_invariant = {
+    "temporal_stability",
+    {.reference = true, .ids = true, .velocity = true},
+    Frames::FromFrame,
+    "temporal_stability",
+    temporalStabilityInapplicable,
+    makeTemporalStability};
 
 }  // namespace taa::invariants

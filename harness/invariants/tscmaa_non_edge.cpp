@@ -43,7 +43,7 @@ class TscmaaNonEdge : public Invariant {
   }
 
   Outcome finish() override {
-    Outcome o{"tscmaa_non_edge", false, "", {}};
+    Outcome o;
     o.values = {{"frames", double(frames_)},
                 {"non_taa_pixels", double(nonTaa_)},
                 {"non_taa_changed", double(nonTaaBad_)},
@@ -83,13 +83,11 @@ class TscmaaNonEdge : public Invariant {
   long nonTaa_ = 0, nonTaaBad_ = 0, nonEdge_ = 0, nonEdgeBad_ = 0;
 };
 
-}  // namespace
-
-std::unique_ptr<Invariant> makeTscmaaNonEdge(const CaseSpec&) {
+std::unique_ptr<Invariant> makeTscmaaNonEdge(const CheckedCase&) {
   return std::make_unique<TscmaaNonEdge>();
 }
 
-std::string tscmaaNonEdgeInapplicable(const CaseSpec& spec) {
+std::string tscmaaNonEdgeInapplicable(const CheckedCase& spec) {
   if (spec.taa.mode != TaaMode::Tscmaa)
     return std::string("tscmaa_non_edge checks the TSCMAA passes, but taa.mode is ") +
            enumToString(spec.taa.mode) +
@@ -100,5 +98,11 @@ std::string tscmaaNonEdgeInapplicable(const CaseSpec& spec) {
            "output after TSCMAA; remove them or the invariant";
   return "";
 }
+
+}  // namespace
+
+const InvariantInfo tscmaa_non_edge_invariant = {
+    "tscmaa_non_edge", {.current = true, .tscmaa = true}, Frames::FromFrame,
+    nullptr,           tscmaaNonEdgeInapplicable,         makeTscmaaNonEdge};
 
 }  // namespace taa::invariants

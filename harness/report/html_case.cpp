@@ -1,9 +1,9 @@
 // One case of the report: status and message, metrics, invariants, curves, frames, timings, log.
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <string>
 
+#include "compare/metric_table.h"
 #include "report/html_parts.h"
 #include "report/svg_plot.h"
 #include "report/text_util.h"
@@ -37,21 +37,9 @@ bool failedMetric(const run::FrameComparison& f, std::string_view metric) {
 
 std::string metricsTable(const run::CaseResult& c, const std::string& id) {
   if (c.frames.empty()) return "<p class=\"muted\">no frames were compared</p>\n";
-  struct Column {
-    const char* title;
-    const char* key;
-    double run::ImageMetrics::*field;
-  };
-  static constexpr std::array<Column, 6> kColumns = {{
-      {"max abs", "max_abs", &run::ImageMetrics::maxAbs},
-      {"RMSE", "rmse", &run::ImageMetrics::rmse},
-      {"PSNR dB", "psnr", &run::ImageMetrics::psnr},
-      {"share over", "share_over", &run::ImageMetrics::shareOver},
-      {"FLIP mean", "flip_mean", &run::ImageMetrics::flipMean},
-      {"FLIP p99", "flip_p99", &run::ImageMetrics::flipP99},
-  }};
+  const auto columns = compare::goldenMetrics();
   std::string s = "<table class=\"metrics\"><tr><th>frame</th><th>status</th><th>mode</th>";
-  for (const auto& col : kColumns) s += std::string("<th class=\"num\">") + col.title + "</th>";
+  for (const auto* col : columns) s += std::string("<th class=\"num\">") + col->title + "</th>";
   s += "</tr>\n";
   for (const auto& f : c.frames) {
     const bool bad = f.status == run::FrameStatus::Failed;
@@ -61,15 +49,15 @@ std::string metricsTable(const run::CaseResult& c, const std::string& id) {
          "</span></td>";
     if (f.status == run::FrameStatus::MissingGolden) {
       // Nothing was compared: zeros here would read as a perfect match.
-      s += "<td colspan=\"" + std::to_string(kColumns.size() + 1) +
+      s += "<td colspan=\"" + std::to_string(columns.size() + 1) +
            "\" class=\"muted\">not compared: no golden</td></tr>\n";
       continue;
     }
     s += std::string("<td>") + (f.toleranceMode ? "tolerance" : "exact") + "</td>";
-    for (const auto& col : kColumns) {
-      const bool hit = failedMetric(f, col.key) || failedMetric(f, col.title);
+    for (const auto* col : columns) {
+      const bool hit = failedMetric(f, col->name) || failedMetric(f, col->title);
       s += std::string("<td class=\"num") + (hit ? " bad" : "") + "\">" +
-           num(f.metrics.*col.field) + "</td>";
+           num(f.metrics.*col->golden) + "</td>";
     }
     s += "</tr>\n";
   }

@@ -10,9 +10,9 @@
 
 #include "compare/metrics.h"
 #include "golden/environment.h"
-#include "invariants/invariant.h"
 #include "renderer.h"
 #include "run/golden_check.h"
+#include "run/invariant_run.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
 
@@ -36,7 +36,8 @@ invariants::FrameView viewOf(const FrameRecord& r) {
   invariants::FrameView v;
   v.frame = r.frame;
   v.historyReset = r.historyReset;
-  v.output = r.hasImages ? &r.color : nullptr;
+  // A frame whose images were not read still carries its output when every frame is hashed.
+  v.output = r.hasImages || !r.color.data.empty() ? &r.color : nullptr;
   v.reference = r.hasReference ? &r.reference : nullptr;
   v.current = findAux(r, "current");
   v.ids = findAux(r, "material_id");
@@ -49,51 +50,28 @@ invariants::FrameView viewOf(const FrameRecord& r) {
   return v;
 }
 
-struct Plan {
-  std::vector<std::unique_ptr<invariants::Invariant>> invariants;
-  invariants::Needs needs;
-  bool everyFrame = false;
-};
-
-Plan planChecks(const spec::CaseSpec& spec) {
-  Plan p;
-  for (auto kind : spec.checks.invariants) {
-    const auto n = invariants::needsOf(kind);
-    p.needs.reference |= n.reference;
-    p.needs.current |= n.current;
-    p.needs.ids |= n.ids;
-    p.needs.velocity |= n.velocity;
-    p.needs.tscmaa |= n.tscmaa;
-    p.needs.secondRun |= n.secondRun;
-    p.needs.adaptive |= n.adaptive;
-    p.invariants.push_back(invariants::makeInvariant(kind, spec));
-  }
-  p.everyFrame = !p.invariants.empty();
-  return p;
-}
-
-// Renders the case once, handing every frame to `each`; images are read for checked
-// frames and, when invariants look at the sequence, for every frame.
-void replay(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene,
-            const Plan& plan, const RunOptions& options, bool hashEveryFrame,
+// Renders the case once, handing every frame to `each`; images are read for checked frames
+// and for the frames the invariants judge with them.
+void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
+            const InvariantRun& checks, const RunOptions& options, bool hashEveryFrame,
             const std::function<void(FrameRecord&)>& each, std::vector<std::string>* log) {
   RenderOptions ro;
   ro.hashEveryFrame = hashEveryFrame;
-  ro.reference = plan.needs.reference;
-  ro.captureCurrent = plan.needs.current;
-  ro.captureIds = plan.needs.ids;
-  ro.captureVelocity = plan.needs.velocity;
-  ro.captureAdaptive = plan.needs.adaptive;
-  ro.captureTscmaa = plan.needs.tscmaa;
-  Renderer renderer(ctx, spec, scene, ro);
+  ro.reference = checks.needs().reference;
+  ro.captureCurrent = checks.needs().current;
+  ro.captureIds = checks.needs().ids;
+  ro.captureVelocity = checks.needs().velocity;
+  ro.captureAdaptive = checks.needs().adaptive;
+  ro.captureTscmaa = checks.needs().tscmaa;
+  Renderer renderer(device, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
   for (int f = 0; f < spec.script.frames; ++f) {
     if (options.progress) options.progress(f, spec.script.frames);
-    // Invariants look at frames from checks.from_frame on; long warm-ups cost no read-back
-    // (nor reference renders, which run only for frames read back).
-    const bool wanted = (plan.everyFrame && f >= spec.checks.from_frame) ||
-                        std::binary_search(checked.begin(), checked.end(), f);
+    // Long warm-ups cost no read-back (nor reference renders, which run only for frames
+    // read back).
+    const bool wanted =
+        checks.readsImages(f) || std::binary_search(checked.begin(), checked.end(), f);
     FrameRecord r = renderer.renderFrame(f, wanted);
     each(r);
   }
@@ -103,7 +81,7 @@ double rmseAgainst(const Image& a, const Image& b) { return compare::computeMetr
 
 }  // namespace
 
-CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunOptions& options,
+CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOptions& options,
                    std::map<int, Image>* keep) {
   const auto start = std::chrono::steady_clock::now();
   const auto& spec = loaded.spec;
@@ -112,20 +90,22 @@ CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunO
   result.file = spec.file.string();
   result.description = spec.description;
   result.status = CaseStatus::Pass;
-  const auto env = golden::currentEnvironment(ctx.info());
+  const auto env = golden::currentEnvironment(device.identity());
   result.fingerprint = env.fingerprint();
   fs::create_directories(options.outDir / spec.name);
 
   const scene::Scene scene = scene::buildScene(spec);
-  Plan plan = planChecks(spec);
+  InvariantRun checks(spec);
   // Goldens are loaded and verified before rendering, so every frame can be checked as it comes.
   std::optional<GoldenCheck> golden;
   if (spec.checks.golden) golden.emplace(spec, env, options);
   std::map<int, Image> outputs;
   TimingLog timing;
   const auto& checked = spec.output.frames;
+  // Every frame's output is hashed for the goldens, and read for invariants that judge
+  // warm-up frames too.
   replay(
-      ctx, spec, scene, plan, options, golden.has_value(),
+      device, spec, scene, checks, options, golden.has_value() || checks.judgesWarmUp(),
       [&](FrameRecord& r) {
         timing.add(r.gpuMs);
         result.frameMs.push_back(frameMilliseconds(r.gpuMs));
@@ -133,29 +113,21 @@ CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunO
         if (r.hasImages && r.hasReference)
           result.referenceRmse.push_back(rmseAgainst(r.reference, r.color));
         if (golden) golden->observe(r);
-        const auto view = viewOf(r);
-        if (r.frame >= spec.checks.from_frame)
-          for (auto& inv : plan.invariants) inv->observe(view);
+        checks.observe(viewOf(r));
         if (std::binary_search(checked.begin(), checked.end(), r.frame))
           outputs[r.frame] = std::move(r.color);
       },
       &result.log);
-  if (plan.needs.secondRun) {
+  if (checks.needs().secondRun) {
     replay(
-        ctx, spec, scene, plan, options, false,
-        [&](FrameRecord& r) {
-          const auto view = viewOf(r);
-          if (r.frame >= spec.checks.from_frame)
-            for (auto& inv : plan.invariants) inv->observeRepeat(view);
-        },
-        nullptr);
+        device, spec, scene, checks, options, checks.judgesWarmUp(),
+        [&](FrameRecord& r) { checks.observeRepeat(viewOf(r)); }, nullptr);
   }
   result.timings = timing.summary();
 
   // The case's status is the worst of its checks: a failed invariant fails the case whether
   // its goldens are missing, stale or match.
-  for (auto& inv : plan.invariants) {
-    const auto o = inv->finish();
+  for (const auto& o : checks.finish()) {
     result.invariants.push_back({o.name, o.passed, o.detail, o.values});
     if (!o.passed) result.status = CaseStatus::Fail;
   }

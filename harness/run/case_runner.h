@@ -11,8 +11,8 @@
 
 #include "case/case_loader.h"
 #include "core/image.h"
+#include "device.h"
 #include "run/results.h"
-#include "vk/context.h"
 
 namespace taa::run {
 
@@ -31,7 +31,7 @@ struct RunOptions {
 std::filesystem::path defaultGoldensRoot(const std::filesystem::path& caseFile);
 
 // `outputs`, when given, receives the checked frames' images (bless writes them).
-CaseResult runCase(vk::Context& ctx, const cases::LoadedCase& loaded, const RunOptions& options,
+CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOptions& options,
                    std::map<int, Image>* outputs = nullptr);
 
 }  // namespace taa::run

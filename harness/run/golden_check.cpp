@@ -63,7 +63,7 @@ void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComp
   fc.images.zoomH = region.height;
 }
 
-GoldenCheck::GoldenCheck(const spec::CaseSpec& spec, const golden::Environment& env,
+GoldenCheck::GoldenCheck(const spec::CheckedCase& spec, const golden::Environment& env,
                          const RunOptions& options)
     : spec_(spec), options_(options), environment_(env.fingerprint()) {
   const fs::path root =

@@ -15,7 +15,7 @@
 #include "golden/golden_store.h"
 #include "run/case_runner.h"
 #include "run/results.h"
-#include "spec/case_spec.h"
+#include "spec/checked_case.h"
 
 namespace taa::run {
 
@@ -29,7 +29,7 @@ class GoldenCheck {
  public:
   // Loads and verifies the case's goldens; a set that fails verification is remembered and
   // reported by finish(), so the case still renders and runs its invariants.
-  GoldenCheck(const spec::CaseSpec& spec, const golden::Environment& env,
+  GoldenCheck(const spec::CheckedCase& spec, const golden::Environment& env,
               const RunOptions& options);
 
   // Every rendered frame, in order, with its colour and hash: keeps the first frame whose
@@ -47,7 +47,7 @@ class GoldenCheck {
   // the golden's; returns whether it does.
   bool compareSequence(CaseResult& result);
 
-  const spec::CaseSpec& spec_;
+  const spec::CheckedCase& spec_;
   const RunOptions& options_;
   std::filesystem::path dir_;  // goldens/NAME
   std::string environment_;    // this run's fingerprint

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "compare/metric_table.h"
+
 namespace taa::run {
 
 const char* toString(FrameStatus s) {
@@ -58,19 +60,14 @@ double numberFrom(const nlohmann::json& j, const char* key) {
 }
 
 nlohmann::json metricsJson(const ImageMetrics& m) {
-  return {{"max_abs", number(m.maxAbs)},       {"rmse", number(m.rmse)},
-          {"psnr", number(m.psnr)},            {"share_over", number(m.shareOver)},
-          {"flip_mean", number(m.flipMean)},   {"flip_p99", number(m.flipP99)}};
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto* row : compare::goldenMetrics()) out[row->name] = number(m.*row->golden);
+  return out;
 }
 
 ImageMetrics metricsFrom(const nlohmann::json& j) {
   ImageMetrics m;
-  m.maxAbs = numberFrom(j, "max_abs");
-  m.rmse = numberFrom(j, "rmse");
-  m.psnr = numberFrom(j, "psnr");
-  m.shareOver = numberFrom(j, "share_over");
-  m.flipMean = numberFrom(j, "flip_mean");
-  m.flipP99 = numberFrom(j, "flip_p99");
+  for (const auto* row : compare::goldenMetrics()) m.*row->golden = numberFrom(j, row->name);
   return m;
 }
 

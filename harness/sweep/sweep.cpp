@@ -84,7 +84,7 @@ Presets loadPresets(const fs::path& file) {
   return out;
 }
 
-SweepResult runSweep(vk::Context& ctx, const fs::path& caseFile, const Presets& presets,
+SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& presets,
                      const std::vector<std::string>& names, const SweepOptions& options) {
   const nlohmann::json base = readJson(caseFile);
   std::vector<std::unique_ptr<Lane>> lanes;
@@ -128,12 +128,12 @@ SweepResult runSweep(vk::Context& ctx, const fs::path& caseFile, const Presets& 
     l.scene = scene::buildScene(l.loaded.spec);
     RenderOptions ro;
     ro.reference = i == 0;  // rendered once; every preset is measured against it
-    l.renderer = std::make_unique<Renderer>(ctx, l.loaded.spec, l.scene, ro);
+    l.renderer = std::make_unique<Renderer>(device, l.loaded.spec, l.scene, ro);
   }
 
   SweepResult result;
   result.caseName = caseFile.stem().string();
-  result.device = ctx.info().name;
+  result.device = device.identity().name;
   result.frames = first.script.frames;
   result.fromFrame = std::clamp(options.fromFrame, 0, first.script.frames - 1);
   result.referenceSamples = first.reference.samples;

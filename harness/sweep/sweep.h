@@ -6,13 +6,12 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "case/case_loader.h"
-#include "vk/context.h"
+#include "device.h"
 
 namespace taa::sweep {
 
@@ -52,7 +51,7 @@ struct SweepResult {
 
 // Replays `base` once per preset, all presets in lockstep frame by frame, the first
 // one also rendering the reference. Throws CaseError when a patched case is invalid.
-SweepResult runSweep(vk::Context& ctx, const std::filesystem::path& caseFile, const Presets& presets,
+SweepResult runSweep(Device& device, const std::filesystem::path& caseFile, const Presets& presets,
                      const std::vector<std::string>& names, const SweepOptions& options);
 
 // Writers: sweep.csv (one row per preset), frames.csv (per frame), sweep.md (a markdown

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "spec/checks_spec.h"
 #include "spec/fields.h"
 #include "spec/inject_spec.h"
 #include "spec/render_spec.h"
@@ -41,7 +40,6 @@ struct CaseSpec {
   OutputSpec output;
   ReferenceSpec reference;
   InjectSpec inject;
-  ChecksSpec checks;
   // The recorded tracks (camera.track, movers[].track) read and resampled to the
   // case's frames once, when the case is loaded (script::loadTracks); frame
   // evaluation only indexes them. Null when the case sets no track.
@@ -66,8 +64,8 @@ void fields(V& v, CaseSpec& s) {
   v.object("debug", s.debug, Meta{"debug views", ""});
   v.object("output", s.output, Meta{"frames and buffers written", ""});
   v.object("reference", s.reference, Meta{"supersampled ground truth", ""});
-  v.object("inject", s.inject, Meta{"stress: non-finite values written into the rendered colour", ""});
-  v.object("checks", s.checks, Meta{"golden comparison and invariants of taa-harness run", ""});
+  v.object("inject", s.inject,
+           Meta{"stress: non-finite values written into the rendered colour", ""});
 }
 
 }  // namespace taa::spec

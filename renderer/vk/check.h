@@ -4,14 +4,15 @@
 
 #include <vulkan/vulkan.h>
 
-#include <stdexcept>
 #include <string>
+
+#include "device_error.h"
 
 namespace taa::vk {
 
-class VulkanError : public std::runtime_error {
+class VulkanError : public DeviceError {
  public:
-  VulkanError(VkResult result, const std::string& what) : std::runtime_error(what), result_(result) {}
+  VulkanError(VkResult result, const std::string& what) : DeviceError(what), result_(result) {}
   VkResult result() const { return result_; }
 
  private:
@@ -20,10 +21,7 @@ class VulkanError : public std::runtime_error {
 
 // The environment cannot run the renderer (no device, missing shaders, missing
 // feature). The CLI maps it to exit code 3; the message says what to install.
-class EnvironmentError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using EnvironmentError = ::taa::EnvironmentError;
 
 const char* resultName(VkResult result);
 

@@ -35,7 +35,7 @@ TEST(Sweep, BasicGhostsMoreThanTheFullResolveAndEverythingIsWritten) {
   const fs::path file = writeCase("order");
   sweep::SweepOptions o;
   o.fromFrame = 4;
-  const auto r = sweep::runSweep(test::gpu(), file, presets(), {"default", "basic"}, o);
+  const auto r = sweep::runSweep(test::device(), file, presets(), {"default", "basic"}, o);
   ASSERT_EQ(r.presets.size(), 2u);
   EXPECT_EQ(r.presets[0].rmsePerFrame.size(), 6u);  // frames 4..9
   EXPECT_GT(r.presets[1].rmse, 1.5 * r.presets[0].rmse) << "basic " << r.presets[1].rmse << " default "
@@ -59,7 +59,7 @@ TEST(Sweep, BasicGhostsMoreThanTheFullResolveAndEverythingIsWritten) {
 TEST(Sweep, UnknownOrInvalidPresetsAreBadInputNamingThePreset) {
   const fs::path file = writeCase("bad");
   try {
-    sweep::runSweep(test::gpu(), file, presets(), {"defualt", "bad"}, {});
+    sweep::runSweep(test::device(), file, presets(), {"defualt", "bad"}, {});
     FAIL() << "expected CaseError";
   } catch (const cases::CaseError& e) {
     const std::string all = e.what();

@@ -12,7 +12,6 @@ namespace taa::invariants {
 namespace {
 
 using namespace fixtures;
-using spec::InvariantKind;
 
 struct AdaptiveFrame {
   Image output = background(), resolved = background(), mask = Image(kW, kH, 1, 0.0f);
@@ -26,16 +25,16 @@ struct AdaptiveFrame {
   }
 };
 
-spec::CaseSpec adaptiveCase() {
-  spec::CaseSpec s = staticCase();
+spec::CheckedCase adaptiveCase() {
+  spec::CheckedCase s = staticCase();
   s.taa.mode = spec::TaaMode::Adaptive;
   return s;
 }
 
-Outcome run(const std::vector<AdaptiveFrame>& frames) {
-  auto inv = makeInvariant(InvariantKind::AdaptiveUnmarked, adaptiveCase());
-  for (size_t i = 0; i < frames.size(); ++i) inv->observe(frames[i].view(int(i)));
-  return inv->finish();
+Outcome runAdaptive(const std::vector<AdaptiveFrame>& frames) {
+  std::vector<FrameView> views;
+  for (size_t i = 0; i < frames.size(); ++i) views.push_back(frames[i].view(int(i)));
+  return runViews("adaptive_unmarked", adaptiveCase(), views);
 }
 
 TEST(AdaptiveUnmarkedInvariant, PassesWhenOnlyMarkedPixelsChange) {
@@ -48,7 +47,7 @@ TEST(AdaptiveUnmarkedInvariant, PassesWhenOnlyMarkedPixelsChange) {
     setRgb(f.output, 5, 4, 9.0f, 9.0f, 9.0f);
     setRgb(f.output, 0, 0, 0.5f, 0.5f, 0.5f);
   }
-  const auto o = run(frames);
+  const auto o = runAdaptive(frames);
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_NEAR(valueOf(o, "traced_share"), 2.0 / (kW * kH), 1e-9);
   EXPECT_NEAR(valueOf(o, "fxaa_share"), 1.0 / (kW * kH), 1e-9);
@@ -58,33 +57,31 @@ TEST(AdaptiveUnmarkedInvariant, FailsOnOneUnmarkedPixelChangedByOneUlp) {
   std::vector<AdaptiveFrame> frames(2);
   float& g = frames[1].output.at(7, 2, 1);
   g = std::nextafter(g, 2.0f);
-  const auto o = run(frames);
+  const auto o = runAdaptive(frames);
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "frame 1 pixel (7, 2)")) << o.detail;
   EXPECT_EQ(valueOf(o, "differing_unmarked_pixels"), 1.0);
 }
 
 TEST(AdaptiveUnmarkedInvariant, FailsWithoutTheCapturedImages) {
-  auto inv = makeInvariant(InvariantKind::AdaptiveUnmarked, adaptiveCase());
   AdaptiveFrame f;
   FrameView v = f.view(0);
   v.segmentation = nullptr;
-  inv->observe(v);
-  const auto o = inv->finish();
+  const auto o = runViews("adaptive_unmarked", adaptiveCase(), {v});
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "segmentation")) << o.detail;
 }
 
 TEST(AdaptiveUnmarkedInvariant, AppliesToAdaptiveCasesOnly) {
-  EXPECT_TRUE(needsOf(InvariantKind::AdaptiveUnmarked).adaptive);
-  EXPECT_EQ(inapplicable(InvariantKind::AdaptiveUnmarked, adaptiveCase()), "");
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::AdaptiveUnmarked, staticCase()), "taa.mode"));
+  EXPECT_TRUE(needsOf("adaptive_unmarked").adaptive);
+  EXPECT_EQ(inapplicable("adaptive_unmarked", adaptiveCase()), "");
+  EXPECT_TRUE(contains(inapplicable("adaptive_unmarked", staticCase()), "taa.mode"));
   auto sharpened = adaptiveCase();
   sharpened.post.sharpen = spec::Sharpen::Cas;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::AdaptiveUnmarked, sharpened), "post.sharpen"));
+  EXPECT_TRUE(contains(inapplicable("adaptive_unmarked", sharpened), "post.sharpen"));
   auto debug = adaptiveCase();
   debug.debug.output = spec::DebugOutput::Segmentation;
-  EXPECT_NE(inapplicable(InvariantKind::AdaptiveUnmarked, debug), "");
+  EXPECT_NE(inapplicable("adaptive_unmarked", debug), "");
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -20,7 +19,7 @@ std::vector<Frame> hashesBitStable(int frames, int settle, int blip = -1) {
   return seq;
 }
 
-spec::CaseSpec stableCase(int after) {
+spec::CheckedCase stableCase(int after) {
   auto s = staticCase();
   s.jitter.pattern = spec::JitterPattern::None;
   s.checks.bit_stable.after_frame = after;
@@ -30,13 +29,13 @@ spec::CaseSpec stableCase(int after) {
 }  // namespace
 
 TEST(InvariantBitStable, SettledOutputPasses) {
-  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 5));
+  const auto o = runAll("bit_stable", stableCase(5), hashesBitStable(16, 5));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "frames_compared"), 10.0);
 }
 
 TEST(InvariantBitStable, ChangeAfterTheFrameFails) {
-  const auto o = runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 5, 9));
+  const auto o = runAll("bit_stable", stableCase(5), hashesBitStable(16, 5, 9));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "first_change_frame"), 9.0);
   EXPECT_EQ(valueOf(o, "changes"), 2.0);  // into the blip and out of it
@@ -44,27 +43,27 @@ TEST(InvariantBitStable, ChangeAfterTheFrameFails) {
 }
 
 TEST(InvariantBitStable, StillSettlingAtAfterFrameFails) {
-  EXPECT_FALSE(runAll(InvariantKind::BitStable, stableCase(5), hashesBitStable(16, 7)).passed);
+  EXPECT_FALSE(runAll("bit_stable", stableCase(5), hashesBitStable(16, 7)).passed);
 }
 
 TEST(InvariantBitStable, InapplicableWhenTheInputChanges) {
-  EXPECT_EQ(inapplicable(InvariantKind::BitStable, stableCase(5)), "");
+  EXPECT_EQ(inapplicable("bit_stable", stableCase(5)), "");
   EXPECT_TRUE(contains(
-      inapplicable(InvariantKind::BitStable, stableCase(15)),
+      inapplicable("bit_stable", stableCase(15)),
       "bit_stable compares frames after bit_stable.after_frame 15, but the last frame is 15"));
   auto moving = stableCase(5);
   moving.movers.emplace_back();
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, moving),
+  EXPECT_TRUE(contains(inapplicable("bit_stable", moving),
                        "needs a static scene, but movers[0].speed is 1"));
   auto jittered = stableCase(5);
   jittered.jitter.pattern = spec::JitterPattern::Halton;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, jittered),
-                       "jitter.pattern halton moves the samples"));
+  EXPECT_TRUE(
+      contains(inapplicable("bit_stable", jittered), "jitter.pattern halton moves the samples"));
   jittered.jitter.lock = 3;  // locked to one step: constant again
-  EXPECT_EQ(inapplicable(InvariantKind::BitStable, jittered), "");
+  EXPECT_EQ(inapplicable("bit_stable", jittered), "");
   auto reset = stableCase(5);
   reset.script.reset_history_at = {9};
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::BitStable, reset), "resets it at frame 9"));
+  EXPECT_TRUE(contains(inapplicable("bit_stable", reset), "resets it at frame 9"));
   reset.script.reset_history_at = {3};
-  EXPECT_EQ(inapplicable(InvariantKind::BitStable, reset), "");
+  EXPECT_EQ(inapplicable("bit_stable", reset), "");
 }

@@ -5,7 +5,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -33,7 +32,7 @@ std::vector<Frame> sequenceConverges(int frames, ErrorOf errorOf, int resetAt = 
 }  // namespace
 
 TEST(InvariantConverges, DecayingErrorPasses) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(),
+  const auto o = runAll("converges", staticCase(),
                         sequenceConverges(16, [](int f) { return 0.2f * std::pow(0.85f, f); }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_LT(valueOf(o, "last_rmse"), valueOf(o, "bound"));
@@ -41,7 +40,7 @@ TEST(InvariantConverges, DecayingErrorPasses) {
 }
 
 TEST(InvariantConverges, GrowingErrorFails) {
-  const auto o = runAll(InvariantKind::Converges, staticCase(),
+  const auto o = runAll("converges", staticCase(),
                         sequenceConverges(16, [](int f) { return 0.02f * float(1 + f); }));
   EXPECT_FALSE(o.passed);
   EXPECT_GT(valueOf(o, "last_quarter_mean"), valueOf(o, "first_quarter_mean"));
@@ -50,8 +49,7 @@ TEST(InvariantConverges, GrowingErrorFails) {
 
 // Noise that never accumulates away: the end is not below ratio x the start.
 TEST(InvariantConverges, FlatErrorFailsTheRatio) {
-  const auto o =
-      runAll(InvariantKind::Converges, staticCase(), sequenceConverges(16, [](int) { return 0.1f; }));
+  const auto o = runAll("converges", staticCase(), sequenceConverges(16, [](int) { return 0.1f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, " > 0.6 x first")) << o.detail;
 }
@@ -60,7 +58,7 @@ TEST(InvariantConverges, FlatErrorFailsTheRatio) {
 TEST(InvariantConverges, HistoryResetRestartsTheRun) {
   const auto seq = sequenceConverges(
       24, [](int f) { return 0.2f * std::pow(0.85f, f < 8 ? f : f - 8); }, 8);
-  const auto o = runAll(InvariantKind::Converges, staticCase(), seq);
+  const auto o = runAll("converges", staticCase(), seq);
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "frames"), 16.0);
   EXPECT_TRUE(contains(o.detail, "frames 8..23")) << o.detail;
@@ -71,24 +69,23 @@ TEST(InvariantConverges, FromFrameSkipsWarmUp) {
   const auto seq =
       sequenceConverges(20, [](int f) { return f < 4 ? 0.01f : 0.2f * std::pow(0.85f, f - 4); });
   auto s = staticCase();
-  EXPECT_FALSE(runAll(InvariantKind::Converges, s, seq).passed);
+  EXPECT_FALSE(runAll("converges", s, seq).passed);
   s.checks.from_frame = 4;
-  EXPECT_TRUE(runAll(InvariantKind::Converges, s, seq).passed);
+  EXPECT_TRUE(runAll("converges", s, seq).passed);
 }
 
 TEST(InvariantConverges, TooFewFramesFails) {
-  const auto o =
-      runAll(InvariantKind::Converges, staticCase(), sequenceConverges(3, [](int) { return 0.0f; }));
+  const auto o = runAll("converges", staticCase(), sequenceConverges(3, [](int) { return 0.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "needs at least 4")) << o.detail;
 }
 
 TEST(InvariantConverges, InapplicableWhenAnythingMovesOrNothingAccumulates) {
-  EXPECT_EQ(inapplicable(InvariantKind::Converges, staticCase()), "");
+  EXPECT_EQ(inapplicable("converges", staticCase()), "");
   auto expectReason = [](auto mutate, const std::string& part) {
     auto s = staticCase();
     mutate(s);
-    const auto why = inapplicable(InvariantKind::Converges, s);
+    const auto why = inapplicable("converges", s);
     EXPECT_TRUE(contains(why, part)) << "'" << why << "' lacks '" << part << "'";
   };
   expectReason([](auto& s) { s.camera.strafe.speed = 2.0f; },
@@ -120,5 +117,5 @@ TEST(InvariantConverges, InapplicableWhenAnythingMovesOrNothingAccumulates) {
   auto parked = staticCase();
   parked.movers.emplace_back();
   parked.movers[0].speed = 0.0f;
-  EXPECT_EQ(inapplicable(InvariantKind::Converges, parked), "");
+  EXPECT_EQ(inapplicable("converges", parked), "");
 }

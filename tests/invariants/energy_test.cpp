@@ -3,7 +3,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -28,15 +27,14 @@ std::vector<Frame> sequenceEnergy(int frames, Gain gain) {
 }  // namespace
 
 TEST(InvariantEnergy, SmallDifferencePasses) {
-  const auto o =
-      runAll(InvariantKind::Energy, staticCase(), sequenceEnergy(6, [](int) { return 1.01f; }));
+  const auto o = runAll("energy", staticCase(), sequenceEnergy(6, [](int) { return 1.01f; }));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_NEAR(valueOf(o, "worst_relative_difference"), 0.01, 1e-5);
 }
 
 TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
-  const auto o = runAll(InvariantKind::Energy, staticCase(),
-                        sequenceEnergy(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
+  const auto o =
+      runAll("energy", staticCase(), sequenceEnergy(6, [](int f) { return f == 4 ? 1.1f : 1.0f; }));
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "frame"), 4.0);
   EXPECT_EQ(valueOf(o, "frames_over"), 1.0);
@@ -45,8 +43,7 @@ TEST(InvariantEnergy, BrightenedOutputFailsAtItsFrame) {
 }
 
 TEST(InvariantEnergy, DarkenedOutputFails) {
-  EXPECT_FALSE(
-      runAll(InvariantKind::Energy, staticCase(), sequenceEnergy(4, [](int) { return 0.9f; })).passed);
+  EXPECT_FALSE(runAll("energy", staticCase(), sequenceEnergy(4, [](int) { return 0.9f; })).passed);
 }
 
 TEST(InvariantEnergy, ResetsAndWarmUpAreSkipped) {
@@ -54,7 +51,7 @@ TEST(InvariantEnergy, ResetsAndWarmUpAreSkipped) {
   s.checks.from_frame = 2;
   auto seq = sequenceEnergy(6, [](int f) { return f < 2 || f == 4 ? 1.5f : 1.0f; });
   seq[4].reset = true;
-  const auto o = runAll(InvariantKind::Energy, s, seq);
+  const auto o = runAll("energy", s, seq);
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "frames"), 3.0);
 }
@@ -63,8 +60,8 @@ TEST(InvariantEnergy, InapplicableOnlyToDebugViews) {
   auto s = staticCase();
   s.taa.mode = spec::TaaMode::Off;
   s.render.upsample = 2.0f;
-  EXPECT_EQ(inapplicable(InvariantKind::Energy, s), "");
+  EXPECT_EQ(inapplicable("energy", s), "");
   s.debug.output = spec::DebugOutput::Velocity;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::Energy, s),
+  EXPECT_TRUE(contains(inapplicable("energy", s),
                        "energy measures the image, but debug.output is velocity"));
 }

@@ -6,7 +6,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -25,7 +24,7 @@ std::vector<Frame> sequenceFinite(int frames) {
 }  // namespace
 
 TEST(InvariantFinite, FiniteFramesPass) {
-  const auto o = runAll(InvariantKind::Finite, staticCase(), sequenceFinite(4));
+  const auto o = runAll("finite", staticCase(), sequenceFinite(4));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "nonfinite_pixels"), 0.0);
 }
@@ -35,7 +34,7 @@ TEST(InvariantFinite, NanAndInfFailWithCountAndFirstLocation) {
   seq[2].output.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();
   seq[2].output.at(9, 7, 0) = std::numeric_limits<float>::infinity();
   seq[4].output.at(0, 0, 3) = -std::numeric_limits<float>::infinity();  // alpha counts too
-  const auto o = runAll(InvariantKind::Finite, staticCase(), seq);
+  const auto o = runAll("finite", staticCase(), seq);
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "nonfinite_pixels"), 3.0);
   EXPECT_EQ(valueOf(o, "frames_with_nonfinite"), 2.0);
@@ -51,12 +50,12 @@ TEST(InvariantFinite, IgnoresFromFrame) {
   seq[0].output.at(1, 1, 0) = std::nanf("");
   auto s = staticCase();
   s.checks.from_frame = 2;
-  EXPECT_FALSE(runAll(InvariantKind::Finite, s, seq).passed);
+  EXPECT_FALSE(runAll("finite", s, seq).passed);
 }
 
 TEST(InvariantFinite, ApplicableToEveryCase) {
   auto s = staticCase();
   s.taa.mode = spec::TaaMode::Off;
   s.debug.output = spec::DebugOutput::Velocity;
-  EXPECT_EQ(inapplicable(InvariantKind::Finite, s), "");
+  EXPECT_EQ(inapplicable("finite", s), "");
 }

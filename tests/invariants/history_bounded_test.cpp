@@ -7,7 +7,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -49,7 +48,7 @@ std::vector<Frame> boundedSequence(int frames) {
   return seq;
 }
 
-spec::CaseSpec rgbCase() {
+spec::CheckedCase rgbCase() {
   auto s = staticCase();
   s.taa.color_space = spec::ColorSpace::Rgb;
   return s;
@@ -60,7 +59,7 @@ spec::CaseSpec rgbCase() {
 TEST(InvariantHistoryBounded, ConvexBlendPassesInBothSpaces) {
   const auto seq = boundedSequence(4);
   for (auto s : {staticCase(), rgbCase()}) {
-    const auto o = runAll(InvariantKind::HistoryBounded, s, seq);
+    const auto o = runAll("history_bounded", s, seq);
     EXPECT_TRUE(o.passed) << o.detail;
     EXPECT_EQ(valueOf(o, "pixels_over"), 0.0);
     EXPECT_EQ(valueOf(o, "frames_checked"), 3.0);  // frame 0 has no history
@@ -77,7 +76,7 @@ TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
       for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
   setRgb(seq[2].output, 5, 4, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
   for (auto s : {staticCase(), rgbCase()}) {
-    const auto o = runAll(InvariantKind::HistoryBounded, s, seq);
+    const auto o = runAll("history_bounded", s, seq);
     EXPECT_FALSE(o.passed);
     EXPECT_EQ(valueOf(o, "pixels_over"), 1.0);
     EXPECT_EQ(valueOf(o, "frame"), 2.0);
@@ -90,7 +89,7 @@ TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
 TEST(InvariantHistoryBounded, ResetFramesAreNotChecked) {
   auto seq = boundedSequence(3);
   seq[0].output.at(1, 1, 0) = 50.0f;  // frame 0 resets: no history to bound
-  EXPECT_TRUE(runAll(InvariantKind::HistoryBounded, rgbCase(), seq).passed);
+  EXPECT_TRUE(runAll("history_bounded", rgbCase(), seq).passed);
 }
 
 // The box corner (max r, max g, max b) is what clamping produces; half rounding may push it
@@ -104,15 +103,14 @@ TEST(InvariantHistoryBounded, ToleranceCoversHalfRoundingOnly) {
       for (int i = 0; i <= 2; ++i)
         for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
     setRgb(seq[1].output, 1, 1, hi[0] * scale, hi[1], hi[2]);
-    EXPECT_EQ(runAll(InvariantKind::HistoryBounded, rgbCase(), seq).passed, scale < 1.001f)
-        << scale;
+    EXPECT_EQ(runAll("history_bounded", rgbCase(), seq).passed, scale < 1.001f) << scale;
   }
 }
 
 TEST(InvariantHistoryBounded, NonFiniteOutputIsOutside) {
   auto seq = boundedSequence(2);
   seq[1].output.at(3, 3, 2) = std::nanf("");
-  EXPECT_FALSE(runAll(InvariantKind::HistoryBounded, staticCase(), seq).passed);
+  EXPECT_FALSE(runAll("history_bounded", staticCase(), seq).passed);
 }
 
 // Red and yellow neighbours: the YCoCg box corner (0.25, 0.5, 0.25) is RGB (0.5, 0.5, -0.5),
@@ -128,7 +126,7 @@ TEST(InvariantHistoryBounded, YCoCgAcceptsOnlyNegativesClampedToZero) {
     f1.output = f1.current;
     setRgb(f1.output, kW / 2, 5, r, g, b);
     f0.current = f0.output = f1.current;
-    return runAll(InvariantKind::HistoryBounded, staticCase(), {f0, f1});
+    return runAll("history_bounded", staticCase(), {f0, f1});
   };
   EXPECT_TRUE(check(0.5f, 0.5f, 0.0f).passed) << check(0.5f, 0.5f, 0.0f).detail;
   EXPECT_FALSE(check(0.5f, 0.5f, 0.3f).passed);  // chroma off the box, nothing clamped
@@ -148,14 +146,14 @@ TEST(InvariantHistoryBounded, KarisAcceptsItsLiftedNegativeHistory) {
   setRgb(f1.output, kW / 2 - 1, 5, 0.45f, 0.2f, 0.1f);
   f0.current = f0.output = f1.current;
   auto s = staticCase();
-  const auto plain = runAll(InvariantKind::HistoryBounded, s, {f0, f1});
+  const auto plain = runAll("history_bounded", s, {f0, f1});
   EXPECT_FALSE(plain.passed);
   EXPECT_NEAR(valueOf(plain, "max_excess"), 0.0375, 1e-4);
   s.taa.tonemap_weighting = spec::ToneWeight::Karis;
-  const auto karis = runAll(InvariantKind::HistoryBounded, s, {f0, f1});
+  const auto karis = runAll("history_bounded", s, {f0, f1});
   EXPECT_TRUE(karis.passed) << karis.detail;
   setRgb(f1.output, kW / 2 - 1, 5, 0.45f, 0.9f, 0.1f);  // no lift explains this green
-  EXPECT_FALSE(runAll(InvariantKind::HistoryBounded, s, {f0, f1}).passed);
+  EXPECT_FALSE(runAll("history_bounded", s, {f0, f1}).passed);
 }
 
 // shrink_chroma lets the box's chroma reach an eighth of the luma extent around the current
@@ -170,29 +168,29 @@ TEST(InvariantHistoryBounded, ShrinkChromaWidensTheChromaExtent) {
   setRgb(f1.output, 7, 6, 0.28f, 0.2f, 0.12f);
   f0.current = f0.output = f1.current;
   auto s = staticCase();
-  EXPECT_FALSE(runAll(InvariantKind::HistoryBounded, s, {f0, f1}).passed);
+  EXPECT_FALSE(runAll("history_bounded", s, {f0, f1}).passed);
   s.taa.shrink_chroma = true;
-  const auto o = runAll(InvariantKind::HistoryBounded, s, {f0, f1});
+  const auto o = runAll("history_bounded", s, {f0, f1});
   EXPECT_TRUE(o.passed) << o.detail;
 }
 
 TEST(InvariantHistoryBounded, MissingCurrentFails) {
   auto seq = boundedSequence(2);
   seq[1].current = Image();
-  const auto o = runAll(InvariantKind::HistoryBounded, staticCase(), seq);
+  const auto o = runAll("history_bounded", staticCase(), seq);
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "no current image")) << o.detail;
 }
 
 TEST(InvariantHistoryBounded, InapplicableWhereTheBoxDoesNotBoundTheOutput) {
-  EXPECT_EQ(inapplicable(InvariantKind::HistoryBounded, staticCase()), "");
+  EXPECT_EQ(inapplicable("history_bounded", staticCase()), "");
   auto karis = staticCase();
   karis.taa.tonemap_weighting = spec::ToneWeight::Karis;
-  EXPECT_EQ(inapplicable(InvariantKind::HistoryBounded, karis), "");
+  EXPECT_EQ(inapplicable("history_bounded", karis), "");
   auto expectReason = [](auto mutate, const std::string& part) {
     auto s = staticCase();
     mutate(s);
-    const auto why = inapplicable(InvariantKind::HistoryBounded, s);
+    const auto why = inapplicable("history_bounded", s);
     EXPECT_TRUE(contains(why, part)) << "'" << why << "' lacks '" << part << "'";
   };
   expectReason([](auto& s) { s.taa.rectify = spec::Rectify::None; },

@@ -1,5 +1,7 @@
 // The factory and the case-file rule: listed invariants must apply to the case, and an
 // invariant's parameters may only be set when it is listed.
+#include <algorithm>
+
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "invariants/invariant_fixtures.h"
@@ -7,7 +9,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -22,25 +23,56 @@ std::vector<std::string> problemsOf(const std::string& json) {
 
 }  // namespace
 
-TEST(InvariantFactory, EveryKindHasAnInvariantNamedAfterIt) {
-  for (const auto& n : spec::enumNames(InvariantKind{})) {
-    auto inv = makeInvariant(n.value, staticCase());
-    ASSERT_NE(inv, nullptr) << n.name;
-    EXPECT_EQ(inv->finish().name, n.name);
+TEST(InvariantTable, EveryRowBuildsAnInvariantReportedUnderItsName) {
+  std::vector<std::string> seen;
+  for (const auto* row : invariantTable()) {
+    ASSERT_NE(row->make, nullptr) << row->name;
+    EXPECT_EQ(findInvariant(row->name), row);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), row->name), 0)
+        << row->name << " is in the table twice";
+    seen.push_back(row->name);
+    // Through the runner's driver: the outcome carries the row's name even with no frames.
+    EXPECT_EQ(runAll(row->name, staticCase(), {}).name, row->name);
   }
+  EXPECT_EQ(seen.size(), 11u);
+  EXPECT_EQ(findInvariant("no_such_invariant"), nullptr);
+  EXPECT_THROW(invariantInfo("no_such_invariant"), std::invalid_argument);
+}
+
+TEST(InvariantTable, EveryParameterObjectBelongsToOneRow) {
+  // checks.<params> of each row is validated against the listing (see InvariantValidation).
+  std::vector<std::string> params;
+  for (const auto* row : invariantTable())
+    if (row->params) params.push_back(row->params);
+  EXPECT_EQ(params, (std::vector<std::string>{"no_ghosting", "converges", "temporal_stability",
+                                              "energy", "bit_stable"}));
+}
+
+TEST(InvariantRunner, FromFrameHoldsBackWarmUpExceptFromInvariantsThatJudgeEveryFrame) {
+  auto s = staticCase();
+  s.checks.from_frame = 3;
+  s.checks.invariants = {"finite", "bit_stable"};
+  run::InvariantRun checks(s);
+  EXPECT_TRUE(checks.judgesWarmUp());  // finite: a NaN counts whenever it appears
+  EXPECT_FALSE(checks.readsImages(2));
+  EXPECT_TRUE(checks.readsImages(3));
+  s.checks.invariants = {"bit_stable"};
+  EXPECT_FALSE(run::InvariantRun(s).judgesWarmUp());
+  s.checks.invariants = {};
+  EXPECT_FALSE(run::InvariantRun(s).readsImages(5));
 }
 
 TEST(InvariantFactory, NeedsMatchWhatEachInvariantReads) {
-  EXPECT_TRUE(needsOf(InvariantKind::HistoryBounded).current);
-  const Needs ghost = needsOf(InvariantKind::NoGhosting);
+  EXPECT_TRUE(needsOf("history_bounded").current);
+  const Needs ghost = needsOf("no_ghosting");
   EXPECT_TRUE(ghost.reference && ghost.ids && !ghost.velocity);
-  const Needs stab = needsOf(InvariantKind::TemporalStability);
+  const Needs stab = needsOf("temporal_stability");
   EXPECT_TRUE(stab.reference && stab.ids && stab.velocity);
-  EXPECT_TRUE(needsOf(InvariantKind::Converges).reference);
-  EXPECT_TRUE(needsOf(InvariantKind::Energy).reference);
-  const Needs fin = needsOf(InvariantKind::Finite);
+  EXPECT_TRUE(needsOf("converges").reference);
+  EXPECT_TRUE(needsOf("energy").reference);
+  const Needs fin = needsOf("finite");
   EXPECT_FALSE(fin.reference || fin.current || fin.ids || fin.velocity || fin.secondRun);
-  EXPECT_FALSE(needsOf(InvariantKind::BitStable).reference);
+  EXPECT_FALSE(needsOf("bit_stable").reference);
 }
 
 TEST(InvariantValidation, InapplicableInvariantIsAProblemAtItsKey) {
@@ -90,4 +122,23 @@ TEST(InvariantValidation, EveryListedProblemIsReported) {
   EXPECT_TRUE(contains(p[0], "checks.invariants[0]: no_ghosting")) << p[0];
   EXPECT_TRUE(contains(p[1], "checks.invariants[1]: bit_stable")) << p[1];
   EXPECT_TRUE(contains(p[2], "checks.temporal_stability: ")) << p[2];
+}
+
+TEST(InvariantValidation, UnknownNameIsAProblemWithTheTableAndAGuess) {
+  const auto p = problemsOf(R"({"checks": {"invariants": ["finite", "energi"]}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_TRUE(contains(
+      p[0], "cases/t.json: checks.invariants[1]: 'energi' is not one of history_bounded, "))
+      << p[0];
+  EXPECT_TRUE(contains(p[0], "; did you mean 'energy'?")) << p[0];
+}
+
+TEST(InvariantValidation, SchemaListsTheTableAsTheAllowedNames) {
+  for (const auto& row : cases::settingsSchema())
+    if (row["key"] == "checks.invariants") {
+      EXPECT_EQ(row["type"], "list of enum");
+      EXPECT_EQ(row["allowed"].get<std::vector<std::string>>(), invariantNames());
+      return;
+    }
+  ADD_FAILURE() << "no checks.invariants row";
 }

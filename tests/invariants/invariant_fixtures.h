@@ -1,5 +1,6 @@
 // Synthetic frame sequences for the invariant tests: small images, deterministic noise from
-// an integer hash, and a driver that feeds frames and returns the outcome.
+// an integer hash, and a driver that feeds frames through the runner's InvariantRun (so
+// checks.from_frame and each invariant's frame rule apply as in a real run).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,6 +11,8 @@
 
 #include "core/image.h"
 #include "invariants/invariant.h"
+#include "invariants/registry.h"
+#include "run/invariant_run.h"
 #include "spec/case_spec.h"
 
 namespace taa::invariants::fixtures {
@@ -72,13 +75,26 @@ struct Frame {
   }
 };
 
-inline Outcome runAll(spec::InvariantKind kind, const spec::CaseSpec& spec,
+// Runs the invariant `name` alone over `frames` (and `repeat`, the second render) as the
+// runner does for a case that lists only it.
+inline Outcome runViews(const std::string& name, spec::CheckedCase spec,
+                        const std::vector<FrameView>& frames,
+                        const std::vector<FrameView>& repeat = {}) {
+  spec.checks.invariants = {name};
+  run::InvariantRun checks(spec);
+  for (const auto& f : frames) checks.observe(f);
+  for (const auto& f : repeat) checks.observeRepeat(f);
+  auto outcomes = checks.finish();
+  EXPECT_EQ(outcomes.size(), 1u);
+  return outcomes.empty() ? Outcome{} : outcomes.front();
+}
+
+inline Outcome runAll(const std::string& name, const spec::CheckedCase& spec,
                       const std::vector<Frame>& frames, const std::vector<Frame>& repeat = {}) {
-  auto inv = makeInvariant(kind, spec);
-  EXPECT_NE(inv, nullptr);
-  for (const auto& f : frames) inv->observe(f.view());
-  for (const auto& f : repeat) inv->observeRepeat(f.view());
-  return inv->finish();
+  std::vector<FrameView> views, repeats;
+  for (const auto& f : frames) views.push_back(f.view());
+  for (const auto& f : repeat) repeats.push_back(f.view());
+  return runViews(name, spec, views, repeats);
 }
 
 inline double valueOf(const Outcome& o, const std::string& name) {
@@ -93,15 +109,15 @@ inline bool contains(const std::string& text, const std::string& part) {
 }
 
 // The defaults: TAA full, clip in YCoCg, static camera, Halton jitter, no movers.
-inline spec::CaseSpec staticCase() {
-  spec::CaseSpec s;
+inline spec::CheckedCase staticCase() {
+  spec::CheckedCase s;
   s.name = "synthetic";
   s.script.frames = 16;
   return s;
 }
 
-inline spec::CaseSpec moverCase() {
-  spec::CaseSpec s = staticCase();
+inline spec::CheckedCase moverCase() {
+  spec::CheckedCase s = staticCase();
   s.movers.emplace_back();
   return s;
 }

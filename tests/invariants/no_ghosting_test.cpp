@@ -3,7 +3,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -48,7 +47,7 @@ std::vector<Frame> moverSequence(int trail, bool moving = true) {
   return seq;
 }
 
-spec::CaseSpec ghostCase() {
+spec::CheckedCase ghostCase() {
   auto s = moverCase();
   s.checks.no_ghosting.frames = kK;
   s.checks.no_ghosting.max_error = 0.05f;
@@ -58,7 +57,7 @@ spec::CaseSpec ghostCase() {
 }  // namespace
 
 TEST(InvariantNoGhosting, CleanTrailPasses) {
-  const auto o = runAll(InvariantKind::NoGhosting, ghostCase(), moverSequence(0));
+  const auto o = runAll("no_ghosting", ghostCase(), moverSequence(0));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_LT(valueOf(o, "worst_mean_error"), 0.01);
   EXPECT_EQ(valueOf(o, "pixels"), 3.0);  // one column of the block left kK frames ago
@@ -66,12 +65,12 @@ TEST(InvariantNoGhosting, CleanTrailPasses) {
 
 // A ghost that fades before K frames is allowed: only pixels vacated K frames ago count.
 TEST(InvariantNoGhosting, GhostShorterThanKPasses) {
-  const auto o = runAll(InvariantKind::NoGhosting, ghostCase(), moverSequence(kK));
+  const auto o = runAll("no_ghosting", ghostCase(), moverSequence(kK));
   EXPECT_TRUE(o.passed) << o.detail;
 }
 
 TEST(InvariantNoGhosting, GhostTrailBehindTheMoverFails) {
-  const auto o = runAll(InvariantKind::NoGhosting, ghostCase(), moverSequence(kK + 2));
+  const auto o = runAll("no_ghosting", ghostCase(), moverSequence(kK + 2));
   EXPECT_FALSE(o.passed);
   EXPECT_GT(valueOf(o, "worst_mean_error"), 0.05);
   EXPECT_TRUE(contains(o.detail, "> 0.05")) << o.detail;
@@ -81,13 +80,13 @@ TEST(InvariantNoGhosting, FromFrameSkipsEarlierFrames) {
   auto seq = moverSequence(0);
   setRgb(seq[kK + 1].output, moverLeft(1), 5, 5.0f, 5.0f, 5.0f);  // last covered at frame 1
   auto s = ghostCase();
-  EXPECT_FALSE(runAll(InvariantKind::NoGhosting, s, seq).passed);
+  EXPECT_FALSE(runAll("no_ghosting", s, seq).passed);
   s.checks.from_frame = kK + 2;
-  EXPECT_TRUE(runAll(InvariantKind::NoGhosting, s, seq).passed);
+  EXPECT_TRUE(runAll("no_ghosting", s, seq).passed);
 }
 
 TEST(InvariantNoGhosting, NoVacatedPixelsFails) {
-  const auto o = runAll(InvariantKind::NoGhosting, ghostCase(), moverSequence(0, false));
+  const auto o = runAll("no_ghosting", ghostCase(), moverSequence(0, false));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "no vacated pixels: the case does not exercise this")) << o.detail;
 }
@@ -95,27 +94,26 @@ TEST(InvariantNoGhosting, NoVacatedPixelsFails) {
 TEST(InvariantNoGhosting, MissingIdsFails) {
   auto seq = moverSequence(0);
   seq[3].ids = Image();
-  const auto o = runAll(InvariantKind::NoGhosting, ghostCase(), seq);
+  const auto o = runAll("no_ghosting", ghostCase(), seq);
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "frame 3: no ids image")) << o.detail;
 }
 
 TEST(InvariantNoGhosting, InapplicableWithoutMovingMoversOrHistory) {
-  EXPECT_EQ(inapplicable(InvariantKind::NoGhosting, moverCase()), "");
-  EXPECT_TRUE(
-      contains(inapplicable(InvariantKind::NoGhosting, staticCase()), "the case has no movers"));
+  EXPECT_EQ(inapplicable("no_ghosting", moverCase()), "");
+  EXPECT_TRUE(contains(inapplicable("no_ghosting", staticCase()), "the case has no movers"));
   auto still = moverCase();
   still.movers[0].speed = 0.0f;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, still), "no mover moves"));
+  EXPECT_TRUE(contains(inapplicable("no_ghosting", still), "no mover moves"));
   still.movers[0].rotation_speed_deg = 45.0f;  // a spinning cube uncovers pixels too
-  EXPECT_EQ(inapplicable(InvariantKind::NoGhosting, still), "");
+  EXPECT_EQ(inapplicable("no_ghosting", still), "");
   auto off = moverCase();
   off.taa.mode = spec::TaaMode::Off;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, off), "taa.mode is off"));
+  EXPECT_TRUE(contains(inapplicable("no_ghosting", off), "taa.mode is off"));
   auto up = moverCase();
   up.render.upsample = 1.5f;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, up), "render.upsample is 1.5"));
+  EXPECT_TRUE(contains(inapplicable("no_ghosting", up), "render.upsample is 1.5"));
   auto dbg = moverCase();
   dbg.debug.output = spec::DebugOutput::Rejection;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::NoGhosting, dbg), "debug.output is rejection"));
+  EXPECT_TRUE(contains(inapplicable("no_ghosting", dbg), "debug.output is rejection"));
 }

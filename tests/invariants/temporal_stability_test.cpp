@@ -3,7 +3,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -41,14 +40,14 @@ std::vector<Frame> sequence(float refAmp, float outAmp, float velocityPx = 0.0f,
 }  // namespace
 
 TEST(InvariantTemporalStability, FlickerLikeTheReferencePasses) {
-  const auto o = runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f));
+  const auto o = runAll("temporal_stability", staticCase(), sequence(0.1f, 0.1f));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_GT(valueOf(o, "reference_flicker"), 0.005);
   EXPECT_EQ(valueOf(o, "frames"), kTemporalStabilityFrames - 1.0);  // frame 0 resets
 }
 
 TEST(InvariantTemporalStability, ThreeTimesTheReferenceFlickerFails) {
-  const auto o = runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.3f));
+  const auto o = runAll("temporal_stability", staticCase(), sequence(0.1f, 0.3f));
   EXPECT_FALSE(o.passed);
   EXPECT_GT(valueOf(o, "flicker"), 2.5 * valueOf(o, "reference_flicker"));
   EXPECT_TRUE(contains(o.detail, " > 1.5 x reference")) << o.detail;
@@ -56,22 +55,19 @@ TEST(InvariantTemporalStability, ThreeTimesTheReferenceFlickerFails) {
 
 // A still reference: the bound is epsilon alone.
 TEST(InvariantTemporalStability, EpsilonBoundsFlickerOfAStillReference) {
-  EXPECT_TRUE(
-      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.002f)).passed);
-  EXPECT_FALSE(
-      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.0f, 0.05f)).passed);
+  EXPECT_TRUE(runAll("temporal_stability", staticCase(), sequence(0.0f, 0.002f)).passed);
+  EXPECT_FALSE(runAll("temporal_stability", staticCase(), sequence(0.0f, 0.05f)).passed);
 }
 
 // Movers change legitimately; only static pixels count.
 TEST(InvariantTemporalStability, MoverPixelsAreNotStatic) {
-  const auto o =
-      runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f, 0.0f, 4, 3.0f));
+  const auto o = runAll("temporal_stability", staticCase(), sequence(0.1f, 0.1f, 0.0f, 4, 3.0f));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "mean_static_pixels"), double((kW - 4) * kH));
 }
 
 TEST(InvariantTemporalStability, MovingCameraLeavesNoStaticPixels) {
-  const auto o = runAll(InvariantKind::TemporalStability, staticCase(), sequence(0.1f, 0.1f, 0.5f));
+  const auto o = runAll("temporal_stability", staticCase(), sequence(0.1f, 0.1f, 0.5f));
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "no static pixels")) << o.detail;
 }
@@ -81,23 +77,22 @@ TEST(InvariantTemporalStability, ResetFramesAreSkipped) {
   seq[5].reset = true;
   for (int f = 5; f < kTemporalStabilityFrames; ++f)  // a reset (or cut) may jump to a new level
     for (auto& v : seq[size_t(f)].output.data) v += 2.0f;
-  EXPECT_TRUE(runAll(InvariantKind::TemporalStability, staticCase(), seq).passed);
+  EXPECT_TRUE(runAll("temporal_stability", staticCase(), seq).passed);
   seq[5].reset = false;
-  EXPECT_FALSE(runAll(InvariantKind::TemporalStability, staticCase(), seq).passed);
+  EXPECT_FALSE(runAll("temporal_stability", staticCase(), seq).passed);
 }
 
 TEST(InvariantTemporalStability, InapplicableWithoutHistoryOrPerPixelBuffers) {
-  EXPECT_EQ(inapplicable(InvariantKind::TemporalStability, staticCase()), "");
-  EXPECT_EQ(inapplicable(InvariantKind::TemporalStability, moverCase()), "");  // judged at run time
+  EXPECT_EQ(inapplicable("temporal_stability", staticCase()), "");
+  EXPECT_EQ(inapplicable("temporal_stability", moverCase()), "");  // judged at run time
   auto off = staticCase();
   off.taa.mode = spec::TaaMode::Off;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, off),
+  EXPECT_TRUE(contains(inapplicable("temporal_stability", off),
                        "temporal_stability needs a temporal history, but taa.mode is off"));
   auto up = staticCase();
   up.render.upsample = 2.0f;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, up), "render.upsample is 2"));
+  EXPECT_TRUE(contains(inapplicable("temporal_stability", up), "render.upsample is 2"));
   auto dbg = staticCase();
   dbg.debug.output = spec::DebugOutput::ClampDistance;
-  EXPECT_TRUE(contains(inapplicable(InvariantKind::TemporalStability, dbg),
-                       "debug.output is clamp_distance"));
+  EXPECT_TRUE(contains(inapplicable("temporal_stability", dbg), "debug.output is clamp_distance"));
 }

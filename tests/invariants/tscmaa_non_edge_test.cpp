@@ -8,7 +8,6 @@
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-using spec::InvariantKind;
 
 namespace {
 
@@ -36,22 +35,22 @@ struct TscmaaFrame {
   }
 };
 
-spec::CaseSpec tscmaaCase() {
+spec::CheckedCase tscmaaCase() {
   auto s = staticCase();
   s.taa.mode = spec::TaaMode::Tscmaa;
   return s;
 }
 
-Outcome run(const std::vector<TscmaaFrame>& frames) {
-  auto inv = makeInvariant(InvariantKind::TscmaaNonEdge, tscmaaCase());
-  for (size_t i = 0; i < frames.size(); ++i) inv->observe(frames[i].view(int(i)));
-  return inv->finish();
+Outcome runTscmaa(const std::vector<TscmaaFrame>& frames) {
+  std::vector<FrameView> views;
+  for (size_t i = 0; i < frames.size(); ++i) views.push_back(frames[i].view(int(i)));
+  return runViews("tscmaa_non_edge", tscmaaCase(), views);
 }
 
 }  // namespace
 
 TEST(TscmaaNonEdgeInvariant, ChangesWhereTheyAreAllowedPass) {
-  const auto o = run(std::vector<TscmaaFrame>(3));
+  const auto o = runTscmaa(std::vector<TscmaaFrame>(3));
   EXPECT_TRUE(o.passed) << o.detail;
   EXPECT_EQ(valueOf(o, "non_taa_pixels"), 3.0 * (kW * kH - 1));
   EXPECT_EQ(valueOf(o, "non_edge_pixels"), 3.0 * (kW * kH - 2));
@@ -60,7 +59,7 @@ TEST(TscmaaNonEdgeInvariant, ChangesWhereTheyAreAllowedPass) {
 TEST(TscmaaNonEdgeInvariant, TaaOutsideItsShareFails) {
   std::vector<TscmaaFrame> frames(2);
   setRgb(frames[1].output, 4, 4, 0.6f, 0.5f, 0.5f);  // an edge pixel, but not in the TAA share
-  const auto o = run(frames);
+  const auto o = runTscmaa(frames);
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "non_taa_changed"), 1.0);
   EXPECT_NE(o.detail.find("frame 1 pixel 4,4"), std::string::npos) << o.detail;
@@ -70,15 +69,15 @@ TEST(TscmaaNonEdgeInvariant, CmaaOffTheEdgeListFails) {
   std::vector<TscmaaFrame> frames(1);
   setRgb(frames[0].cmaa, 9, 9, 0.0f, 0.0f, 0.0f);
   setRgb(frames[0].output, 9, 9, 0.0f, 0.0f, 0.0f);
-  const auto o = run(frames);
+  const auto o = runTscmaa(frames);
   EXPECT_FALSE(o.passed);
   EXPECT_EQ(valueOf(o, "non_edge_changed"), 1.0);
 }
 
 TEST(TscmaaNonEdgeInvariant, OnlyTscmaaCasesMayListIt) {
-  EXPECT_NE(inapplicable(InvariantKind::TscmaaNonEdge, staticCase()), "");
-  EXPECT_EQ(inapplicable(InvariantKind::TscmaaNonEdge, tscmaaCase()), "");
+  EXPECT_NE(inapplicable("tscmaa_non_edge", staticCase()), "");
+  EXPECT_EQ(inapplicable("tscmaa_non_edge", tscmaaCase()), "");
   auto fxaa = tscmaaCase();
   fxaa.post.fxaa = true;
-  EXPECT_NE(inapplicable(InvariantKind::TscmaaNonEdge, fxaa), "");
+  EXPECT_NE(inapplicable("tscmaa_non_edge", fxaa), "");
 }

@@ -15,14 +15,18 @@
 
 namespace taa::test {
 
-vk::Context& gpu() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    vk::ContextOptions options;
+Device& device() {
+  static std::unique_ptr<Device> dev = [] {
+    DeviceOptions options;
     options.shaderCacheDir = std::filesystem::path(TAA_TEST_OUT) / "shader-cache";
     std::filesystem::create_directories(options.shaderCacheDir);
-    return std::make_unique<vk::Context>(options);
+    return std::make_unique<Device>(options);
   }();
-  return *ctx;
+  return *dev;
+}
+
+vk::Context& gpu() {
+  return device().context();
 }
 
 vk::Image uploadFloatImage(const Image& image, VkFormat format, const char* name) {

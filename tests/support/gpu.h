@@ -5,14 +5,17 @@
 #include <string>
 
 #include "core/image.h"
+#include "device.h"
+#include "frame_record.h"
+#include "renderer.h"
 #include "spec/case_spec.h"
 #include "vk/context.h"
 #include "vk/resources.h"
-#include "frame_record.h"
-#include "renderer.h"
 
 namespace taa::test {
 
+// The device every test of the process shares; gpu() is its Vulkan context.
+Device& device();
 vk::Context& gpu();
 
 // A device image of `format` (RGBA16F, RGBA32F, RG16F, R32F) holding `image`,

@@ -1,5 +1,7 @@
 // What `taa-harness run` checks for a case: golden comparison with tolerances for
-// other environments, and named invariants with their parameters.
+// other environments, and named invariants with their parameters. The harness's own part of
+// the case format: the renderer never sees it (spec::CheckedCase in spec/checked_case.h adds
+// it to the renderer's CaseSpec).
 #pragma once
 
 #include <string>
@@ -27,38 +29,21 @@ struct ToleranceSpec {
 template <class V>
 void fields(V& v, ToleranceSpec& s) {
   const char* impl = "harness/compare/tolerance.cpp";
-  v.field("max_abs", s.max_abs, Range<float>{0.0f, 1e6f}, Meta{"largest per-channel absolute error (linear)", impl});
-  v.field("rmse", s.rmse, Range<float>{0.0f, 1e6f}, Meta{"root-mean-square error over RGB (linear)", impl});
+  v.field("max_abs", s.max_abs, Range<float>{0.0f, 1e6f},
+          Meta{"largest per-channel absolute error (linear)", impl});
+  v.field("rmse", s.rmse, Range<float>{0.0f, 1e6f},
+          Meta{"root-mean-square error over RGB (linear)", impl});
   v.field("psnr_min", s.psnr_min, Range<float>{-1000.0f, 1000.0f},
           Meta{"lowest PSNR in dB (peak 1.0; below 0 for HDR frames far above 1)", impl});
   v.field("pixel_threshold", s.pixel_threshold, Range<float>{0.0f, 1e6f},
           Meta{"per-pixel error above which a pixel counts as differing", impl});
   v.field("pixels_over", s.pixels_over, Range<float>{0.0f, 1.0f},
           Meta{"largest share of pixels over pixel_threshold", impl});
-  v.field("flip_mean", s.flip_mean, Range<float>{0.0f, 1.0f}, Meta{"largest mean LDR-FLIP error", impl});
-  v.field("flip_p99", s.flip_p99, Range<float>{0.0f, 1.0f}, Meta{"largest 99th percentile of LDR-FLIP", impl});
+  v.field("flip_mean", s.flip_mean, Range<float>{0.0f, 1.0f},
+          Meta{"largest mean LDR-FLIP error", impl});
+  v.field("flip_p99", s.flip_p99, Range<float>{0.0f, 1.0f},
+          Meta{"largest 99th percentile of LDR-FLIP", impl});
 }
-
-enum class InvariantKind {
-  HistoryBounded,
-  NoGhosting,
-  Converges,
-  TemporalStability,
-  Finite,
-  Energy,
-  Determinism,
-  BitStable,
-  MatchesInput,
-  AdaptiveUnmarked,
-  TscmaaNonEdge
-};
-TAA_ENUM_NAMES(InvariantKind, {InvariantKind::HistoryBounded, "history_bounded"},
-               {InvariantKind::NoGhosting, "no_ghosting"}, {InvariantKind::Converges, "converges"},
-               {InvariantKind::TemporalStability, "temporal_stability"}, {InvariantKind::Finite, "finite"},
-               {InvariantKind::Energy, "energy"}, {InvariantKind::Determinism, "determinism"},
-               {InvariantKind::BitStable, "bit_stable"}, {InvariantKind::MatchesInput, "matches_input"},
-               {InvariantKind::AdaptiveUnmarked, "adaptive_unmarked"},
-               {InvariantKind::TscmaaNonEdge, "tscmaa_non_edge"})
 
 struct NoGhostingSpec {
   int frames = 8;
@@ -81,7 +66,8 @@ struct ConvergesSpec {
 template <class V>
 void fields(V& v, ConvergesSpec& s) {
   v.field("ratio", s.ratio, Range<float>{0.0f, 1.0f},
-          Meta{"the last frame's RMSE against the reference must be at most ratio times the first frame's",
+          Meta{"the last frame's RMSE against the reference must be at most ratio times the first "
+               "frame's",
                "harness/invariants/converges.cpp"});
 }
 
@@ -93,9 +79,13 @@ struct StabilitySpec {
 template <class V>
 void fields(V& v, StabilitySpec& s) {
   const char* impl = "harness/invariants/temporal_stability.cpp";
-  v.field("factor", s.factor, Range<float>{0.0f, 1e3f},
-          Meta{"frame-to-frame flicker of static pixels may be at most factor times the reference's own", impl});
-  v.field("epsilon", s.epsilon, Range<float>{0.0f, 1.0f}, Meta{"absolute slack added to the bound", impl});
+  v.field(
+      "factor", s.factor, Range<float>{0.0f, 1e3f},
+      Meta{
+          "frame-to-frame flicker of static pixels may be at most factor times the reference's own",
+          impl});
+  v.field("epsilon", s.epsilon, Range<float>{0.0f, 1.0f},
+          Meta{"absolute slack added to the bound", impl});
 }
 
 struct EnergySpec {
@@ -105,7 +95,8 @@ struct EnergySpec {
 template <class V>
 void fields(V& v, EnergySpec& s) {
   v.field("epsilon", s.epsilon, Range<float>{0.0f, 10.0f},
-          Meta{"largest relative difference of mean luminance from the reference", "harness/invariants/energy.cpp"});
+          Meta{"largest relative difference of mean luminance from the reference",
+               "harness/invariants/energy.cpp"});
 }
 
 struct BitStableSpec {
@@ -115,13 +106,15 @@ struct BitStableSpec {
 template <class V>
 void fields(V& v, BitStableSpec& s) {
   v.field("after_frame", s.after_frame, Range<int>{0, 100000},
-          Meta{"from this frame on the output must not change at all", "harness/invariants/bit_stable.cpp"});
+          Meta{"from this frame on the output must not change at all",
+               "harness/invariants/bit_stable.cpp"});
 }
 
 struct ChecksSpec {
   bool golden = true;
   ToleranceSpec tolerance;
-  std::vector<InvariantKind> invariants;
+  // Names from the invariant table (invariants/invariant_list.h); validation checks them.
+  std::vector<std::string> invariants;
   int from_frame = 0;  // invariants look at frames from here on
   NoGhostingSpec no_ghosting;
   ConvergesSpec converges;
@@ -133,15 +126,22 @@ struct ChecksSpec {
 
 template <class V>
 void fields(V& v, ChecksSpec& s) {
-  v.field("golden", s.golden, Meta{"compare output.frames against goldens/NAME/", "harness/golden/golden_store.cpp"});
-  v.object("tolerance", s.tolerance,
-           Meta{"thresholds used when the environment differs from the goldens' (otherwise bit-exact)", ""});
-  v.field("invariants", s.invariants, Meta{"named checks run on the frame sequence", "harness/invariants/"});
-  v.field("from_frame", s.from_frame, Range<int>{0, 99999},
-          Meta{"first frame the sequence invariants look at (skip warm-up)", "harness/invariants/"});
+  v.field("golden", s.golden,
+          Meta{"compare output.frames against goldens/NAME/", "harness/golden/golden_store.cpp"});
+  v.object(
+      "tolerance", s.tolerance,
+      Meta{"thresholds used when the environment differs from the goldens' (otherwise bit-exact)",
+           ""});
+  v.field("invariants", s.invariants,
+          Meta{"named checks run on the frame sequence", "harness/invariants/"});
+  v.field(
+      "from_frame", s.from_frame, Range<int>{0, 99999},
+      Meta{"first frame the sequence invariants look at (skip warm-up); finite checks every frame",
+           "harness/run/invariant_run.cpp"});
   v.object("no_ghosting", s.no_ghosting, Meta{"parameters of no_ghosting", ""});
   v.object("converges", s.converges, Meta{"parameters of converges", ""});
-  v.object("temporal_stability", s.temporal_stability, Meta{"parameters of temporal_stability", ""});
+  v.object("temporal_stability", s.temporal_stability,
+           Meta{"parameters of temporal_stability", ""});
   v.object("energy", s.energy, Meta{"parameters of energy", ""});
   v.object("bit_stable", s.bit_stable, Meta{"parameters of bit_stable", ""});
   v.field("labels", s.labels, Meta{"extra CTest labels (stress, slow)", "tests/CMakeLists.txt"});

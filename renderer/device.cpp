@@ -1,0 +1,42 @@
+#include "device.h"
+
+#include "renderer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+#include "vk/shader_cache.h"
+
+namespace taa {
+
+Device::Device(const DeviceOptions& options) {
+  vk::ContextOptions co;
+  co.device = options.device;
+  co.validate = options.validate;
+  co.shaderCacheDir =
+      options.shaderCacheDir.empty() ? vk::shaderCacheDir() : options.shaderCacheDir;
+  ctx_ = std::make_unique<vk::Context>(co);
+  const vk::DeviceInfo& d = ctx_->info();
+  identity_.name = d.name;
+  identity_.driverName = d.driverName;
+  identity_.driverInfo = d.driverInfo;
+  identity_.apiVersion = std::to_string(VK_API_VERSION_MAJOR(d.apiVersion)) + "." +
+                         std::to_string(VK_API_VERSION_MINOR(d.apiVersion)) + "." +
+                         std::to_string(VK_API_VERSION_PATCH(d.apiVersion));
+  identity_.isCpu = d.isCpu;
+}
+
+Device::~Device() = default;
+
+int Device::validationMessages() const {
+  return ctx_->validationMessages();
+}
+
+// Defined here rather than in renderer.cpp: it is the facade's entry, and it only unwraps.
+Renderer::Renderer(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
+                   RenderOptions options)
+    : Renderer(device.context(), spec, scene, options) {}
+
+std::string shaderFolder() {
+  return vk::shaderDir();
+}
+
+}  // namespace taa

@@ -1,0 +1,57 @@
+// The GPU as the harness sees it: a device to render on, its identity (goldens record it)
+// and its validation count. Owns the Vulkan context behind an opaque handle, so nothing
+// outside the renderer includes a Vulkan header; Renderer takes a Device.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace taa {
+
+namespace vk {
+class Context;
+}
+
+struct DeviceOptions {
+  // Case-insensitive substring of the device name; empty: $TAA_DEVICE, else lavapipe.
+  std::string device;
+  bool validate = false;  // Khronos validation layer; messages are counted and printed
+  // Mesa's shader cache folder; empty: the user's cache folder (vk/shader_cache.h). Tests
+  // keep theirs under the build tree.
+  std::filesystem::path shaderCacheDir;
+};
+
+// Identity of the driver a frame came from.
+struct DeviceIdentity {
+  std::string name;        // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string driverName;  // e.g. "llvmpipe"
+  std::string driverInfo;  // e.g. "Mesa 22.3.6 (LLVM 15.0.6)"
+  std::string apiVersion;  // e.g. "1.3.230"
+  bool isCpu = false;
+};
+
+class Device {
+ public:
+  // Throws EnvironmentError (device_error.h) when no usable device is found.
+  explicit Device(const DeviceOptions& options);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  const DeviceIdentity& identity() const { return identity_; }
+  // Validation messages of severity warning or error seen so far (0 unless validating).
+  int validationMessages() const;
+
+  // The renderer's view; opaque outside renderer/.
+  vk::Context& context() { return *ctx_; }
+
+ private:
+  std::unique_ptr<vk::Context> ctx_;
+  DeviceIdentity identity_;
+};
+
+// The folder SPIR-V is loaded from (build tree or install prefix).
+std::string shaderFolder();
+
+}  // namespace taa

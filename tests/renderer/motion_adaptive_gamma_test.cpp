@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "support/gpu.h"
 #include "support/gpu_resolve.h"
 
 namespace taa {

@@ -14,7 +14,8 @@ void main() {
   vec4 pair = inject.pixels[i / 2u];
   ivec2 p = ivec2((i % 2u) == 0u ? pair.xy : pair.zw);
   uint kind = uint(inject.params.y);
-  float v = kind == 0u ? uintBitsToFloat(0x7fc00000u) : kind == 1u ? uintBitsToFloat(0x7f800000u)
-                                                                   : uintBitsToFloat(0xff800000u);
+  float v = kind == uint(INJECT_NAN)       ? uintBitsToFloat(0x7fc00000u)
+            : kind == uint(INJECT_POS_INF) ? uintBitsToFloat(0x7f800000u)
+                                           : uintBitsToFloat(0xff800000u);
   imageStore(color, p, vec4(v, v, v, 1.0));
 }

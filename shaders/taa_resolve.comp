@@ -153,7 +153,7 @@ void main() {
                                       linearDepth(taaUniforms, texelFetch(depthTex, cur.pixel, 0).r),
                                       texelFetch(normalTex, cur.pixel, 0).xyz);
     history = cs.color;
-    if (cs.level == 2) rejected = true;
+    if (cs.level == CONSISTENCY_REJECTED) rejected = true;
   } else {
     history = sampleHistory(s, historyTex, r.prevUv, taaUniforms.outputSize);
   }

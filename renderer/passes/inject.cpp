@@ -1,6 +1,7 @@
 #include "passes/inject.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "common/shared.h"
 #include "vk/dispatch.h"
@@ -15,6 +16,17 @@ bool InjectPass::appliesTo(int frame) const {
   return std::find(f.begin(), f.end(), frame) != f.end();
 }
 
+namespace {
+float injectShaderValue(spec::InjectValue v) {
+  switch (v) {
+    case spec::InjectValue::Nan: return INJECT_NAN;
+    case spec::InjectValue::PosInf: return INJECT_POS_INF;
+    case spec::InjectValue::NegInf: return INJECT_NEG_INF;
+  }
+  throw std::logic_error("inject: an InjectValue without a shader name");
+}
+}  // namespace
+
 void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
   gpu::InjectPush push{};
   const auto& pixels = spec_.inject.pixels;
@@ -28,7 +40,7 @@ void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
       pair.w = pixels[i].y;
     }
   }
-  push.params = glm::vec4(float(pixels.size()), float(int(spec_.inject.value)), 0.0f, 0.0f);
+  push.params = glm::vec4(float(pixels.size()), injectShaderValue(spec_.inject.value), 0.0f, 0.0f);
   // One invocation per listed pixel (at least one group, as the shader checks the count).
   const auto invocations = uint32_t(std::max<size_t>(pixels.size(), 1));
   vk::Dispatch(pipeline_).store(0, color).constants(push).record(ctx_, cmd, invocations, 1);

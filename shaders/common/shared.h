@@ -147,9 +147,13 @@ TAA_BLOCK(PostPush) {
 };
 
 // ---- Stress injection (inject.comp) ----
+// The value written, in params.y; C++ passes these names, never InjectValue's order.
+#define INJECT_NAN 0
+#define INJECT_POS_INF 1
+#define INJECT_NEG_INF 2
 TAA_BLOCK(InjectPush) {
   vec4 pixels[4];  // xy and zw: two pixel coordinates each (up to 8)
-  vec4 params;     // x: pixel count, y: 0 nan, 1 +inf, 2 -inf
+  vec4 params;     // x: pixel count, y: INJECT_*
 };
 
 // ---- Adaptive ray tracing (adaptive_segmentation.comp, adaptive_trace.comp) ----

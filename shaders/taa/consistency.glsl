@@ -5,9 +5,14 @@
 #ifndef TAA_CONSISTENCY_GLSL
 #define TAA_CONSISTENCY_GLSL
 
+// Where the consistent history came from.
+#define CONSISTENCY_FOOTPRINT_2X2 0
+#define CONSISTENCY_FOOTPRINT_3X3 1
+#define CONSISTENCY_REJECTED 2
+
 struct Consistent {
   vec3 color;
-  int level;  // 0: 2x2, 1: 3x3, 2: rejected
+  int level;  // one of CONSISTENCY_*
 };
 
 // The previous frame's G-buffer a tap is tested against.
@@ -41,7 +46,7 @@ Consistent consistentHistory(TaaSettings s, TaaUniforms u, sampler2D historyTex,
       sum += texelFetch(historyTex, t, 0).rgb * w;
       weight += w;
     }
-  if (weight > 1e-6) return Consistent(sum / weight, 0);
+  if (weight > 1e-6) return Consistent(sum / weight, CONSISTENCY_FOOTPRINT_2X2);
   // Thin geometry (foliage, wires) often misses the 2x2 footprint: widen to 3x3.
   ivec2 center = ivec2(floor(prevUv * u.outputSize.xy));
   sum = vec3(0.0);
@@ -54,8 +59,8 @@ Consistent consistentHistory(TaaSettings s, TaaUniforms u, sampler2D historyTex,
       sum += texelFetch(historyTex, t, 0).rgb;
       n += 1.0;
     }
-  if (n > 0.0) return Consistent(sum / n, 1);
-  return Consistent(vec3(0.0), 2);
+  if (n > 0.0) return Consistent(sum / n, CONSISTENCY_FOOTPRINT_3X3);
+  return Consistent(vec3(0.0), CONSISTENCY_REJECTED);
 }
 
 #endif

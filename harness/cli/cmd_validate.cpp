@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "case/case_loader.h"
+#include "case/settings_table.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
@@ -24,12 +25,17 @@ int cmdValidate(const Args& args) {
 }
 
 int cmdTechniques(const Args& args) {
-  static const char* kUsage = "taa-harness techniques [--json]";
-  const auto a = parseArgs(args, {"--json"}, {}, kUsage);
+  static const char* kUsage = "taa-harness techniques [--json | --markdown]";
+  const auto a = parseArgs(args, {"--json", "--markdown"}, {}, kUsage);
   if (!a.positional.empty()) throw UsageError("unexpected argument " + a.positional[0] + "\nusage: " + kUsage);
+  if (a.has("--json") && a.has("--markdown")) throw UsageError(std::string("choose --json or --markdown\nusage: ") + kUsage);
   const auto rows = cases::settingsSchema();
   if (a.has("--json")) {
     std::cout << rows.dump(2) << "\n";
+    return kPass;
+  }
+  if (a.has("--markdown")) {  // docs/case-format.md's "Every key" table
+    std::cout << cases::settingsMarkdownTable(rows);
     return kPass;
   }
   for (const auto& r : rows) {

@@ -28,7 +28,7 @@ const std::map<std::string, Command>& commands() {
       {"validate", {cmdValidate, "check case files; --print shows every value in force"}},
       {"new-case", {cmdNewCase, "write a case for a glTF scene with a camera that frames its bounds"}},
       {"sweep", {cmdSweep, "error against run time of technique presets on one script (CSV, table, SVG, report)"}},
-      {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader)"}},
+      {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader; --markdown for the docs table)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
       {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},
       {"bless", {cmdBless, "write a case's goldens (atomic) with the reason, after its invariants pass"}},

@@ -42,6 +42,13 @@ TEST(InvariantBitStable, ChangeAfterTheFrameFails) {
   EXPECT_TRUE(contains(o.detail, "first at frame 9")) << o.detail;
 }
 
+TEST(InvariantBitStable, AfterFrameZeroComparesFrameOneWithFrameZero) {
+  const auto o = runAll("bit_stable", stableCase(0), hashesBitStable(8, 1));
+  EXPECT_FALSE(o.passed) << o.detail;
+  EXPECT_EQ(valueOf(o, "frames_compared"), 7.0);
+  EXPECT_EQ(valueOf(o, "first_change_frame"), 1.0);
+}
+
 TEST(InvariantBitStable, StillSettlingAtAfterFrameFails) {
   EXPECT_FALSE(runAll("bit_stable", stableCase(5), hashesBitStable(16, 7)).passed);
 }

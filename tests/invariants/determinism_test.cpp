@@ -37,6 +37,16 @@ TEST(InvariantDeterminism, DifferentHashFailsNamingTheFrame) {
   EXPECT_TRUE(contains(o.detail, "first: frame 5: ")) << o.detail;
 }
 
+TEST(InvariantDeterminism, SeveralDifferencesNameTheEarliest) {
+  auto repeat = hashesDeterminism(8, 3);
+  repeat[6].sha256[63] = '0';  // a second, later difference must not replace the first
+  const auto o = runAll("determinism", staticCase(), hashesDeterminism(8), repeat);
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(valueOf(o, "mismatches"), 2.0);
+  EXPECT_EQ(valueOf(o, "first_mismatch_frame"), 3.0);
+  EXPECT_TRUE(contains(o.detail, "first: frame 3: ")) << o.detail;
+}
+
 TEST(InvariantDeterminism, ShortRepeatFails) {
   const auto o = runAll("determinism", staticCase(), hashesDeterminism(8), hashesDeterminism(6));
   EXPECT_FALSE(o.passed);

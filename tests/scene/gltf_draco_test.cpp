@@ -20,21 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string dracoTestBase64(const std::vector<uint8_t>& d) {
-  static const char* a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < d.size(); i += 3) {
-    uint32_t v = uint32_t(d[i]) << 16;
-    if (i + 1 < d.size()) v |= uint32_t(d[i + 1]) << 8;
-    if (i + 2 < d.size()) v |= uint32_t(d[i + 2]);
-    out += a[(v >> 18) & 63];
-    out += a[(v >> 12) & 63];
-    out += i + 1 < d.size() ? a[(v >> 6) & 63] : '=';
-    out += i + 2 < d.size() ? a[v & 63] : '=';
-  }
-  return out;
-}
-
 // A bumpy 6x6 grid with every attribute the loader reads, all different per vertex.
 struct DracoGrid {
   static constexpr int kSide = 6, kVertices = kSide * kSide;
@@ -148,7 +133,7 @@ fs::path writeDracoGrid(const std::string& name, bool glb, const std::string& da
   const fs::path file = dir / name;
   std::ofstream out(file, std::ios::binary);
   if (!glb) {
-    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + dracoTestBase64(enc.bytes);
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + testing::base64(enc.bytes);
     out << doc.dump();
     return file;
   }

@@ -10,26 +10,12 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/scene_error.h"
+#include "scene_test_util.h"
 
 namespace taa::scene {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string base64(const std::vector<uint8_t>& d) {
-  static const char* a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < d.size(); i += 3) {
-    uint32_t v = uint32_t(d[i]) << 16;
-    if (i + 1 < d.size()) v |= uint32_t(d[i + 1]) << 8;
-    if (i + 2 < d.size()) v |= uint32_t(d[i + 2]);
-    out += a[(v >> 18) & 63];
-    out += a[(v >> 12) & 63];
-    out += i + 1 < d.size() ? a[(v >> 6) & 63] : '=';
-    out += i + 2 < d.size() ? a[v & 63] : '=';
-  }
-  return out;
-}
 
 // A 6x6 grid of vertices (positions and normals) and its triangles.
 struct Grid {
@@ -112,7 +98,7 @@ fs::path writeCompressed(const std::string& name, bool glb, bool damage) {
   const fs::path file = dir / name;
   std::ofstream out(file, std::ios::binary);
   if (!glb) {
-    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(packed);
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + testing::base64(packed);
     out << doc.dump();
     return file;
   }

@@ -2,16 +2,34 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
 namespace taa::scene::testing {
+
+// Base64 of `d`, for glTF buffers written inline as data URIs.
+inline std::string base64(const std::vector<uint8_t>& d) {
+  static const char* a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < d.size(); i += 3) {
+    uint32_t v = uint32_t(d[i]) << 16;
+    if (i + 1 < d.size()) v |= uint32_t(d[i + 1]) << 8;
+    if (i + 2 < d.size()) v |= uint32_t(d[i + 2]);
+    out += a[(v >> 18) & 63];
+    out += a[(v >> 12) & 63];
+    out += i + 1 < d.size() ? a[(v >> 6) & 63] : '=';
+    out += i + 2 < d.size() ? a[v & 63] : '=';
+  }
+  return out;
+}
 
 inline std::filesystem::path assetPath(const std::string& name) {
   return std::filesystem::path(TAA_SOURCE_DIR) / "cases" / "scenes" / name;

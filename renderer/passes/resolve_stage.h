@@ -1,0 +1,60 @@
+// What every temporal resolve implements, so that the renderer runs one without knowing
+// which: the built-in resolve (taa_resolve.comp), TSCMAA's three passes, and a user's own
+// shader (taa.shader). Which one a case runs is decided by spec/taa_modes.h's kModeRules
+// (and taa.shader); the renderer holds a ResolveStage and asks it nothing else.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <glm/vec2.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "script/frame_state.h"
+#include "vk/resources.h"
+#include "vk/timestamps.h"
+
+namespace taa {
+
+// What a resolve may read this frame, at render size with the top-left renderSize pixels
+// valid. An input the pass plan did not allocate is null; a stage that reads it must say
+// so in its plan needs, never bind a null.
+struct ResolveInputs {
+  vk::Image* color = nullptr;  // lit colour, or motion-blurred colour
+  vk::Image* depth = nullptr;
+  vk::Image* velocity = nullptr;
+  vk::Image* ids = nullptr;
+  vk::Image* normal = nullptr;
+  vk::Image* prevDepth = nullptr;
+  vk::Image* prevNormal = nullptr;
+  vk::Image* prevIds = nullptr;
+  vk::Image* prevVelocity = nullptr;
+};
+
+class ResolveStage {
+ public:
+  virtual ~ResolveStage() = default;
+
+  // Records the resolve of one eye: called once per eye each frame, in eye order, right
+  // after that eye's G-buffer (a mono case has eye 0 only). `eyeState` is the eye's
+  // frame state (its camera and jitter).
+  virtual void record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& eyeState,
+                      int eye, const ResolveInputs& in) = 0;
+
+  // This frame's result (eyes side by side), valid in its top-left outputSize() pixels.
+  virtual vk::Image& output() = 0;
+  virtual glm::ivec2 outputSize() const = 0;
+
+  // Optional images later passes or the harness read; null when the stage has none.
+  virtual vk::Image* debugView() { return nullptr; }
+  virtual vk::Image* rejection() { return nullptr; }
+
+  // Per-frame figures for FrameRecord::stats, valid once the frame completed.
+  virtual std::vector<std::pair<std::string, double>> stats() const { return {}; }
+
+  // Run-log lines: the passes it runs with their settings, and the buffers it owns.
+  virtual std::vector<std::string> describe() const = 0;
+};
+
+}  // namespace taa

@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "frame_record.h"
-#include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/reference.h"
-#include "passes/tscmaa.h"
+#include "passes/resolve_stage.h"
 #include "renderer.h"
 #include "vk/staging_ring.h"
 
@@ -25,9 +24,9 @@ struct FrameSources {
   glm::ivec2 renderSize{0};
   vk::Image* resolveInput = nullptr;  // the resolve's input colour (last eye)
   GBufferTargets* targets = nullptr;
-  TscmaaPass* tscmaa = nullptr;
   ReferencePass* reference = nullptr;
-  AdaptivePass* adaptive = nullptr;
+  // The resolve's and its followers' (ResolveStage::captures, PostChain::captures).
+  std::vector<StageCapture> captures;
 };
 
 class FrameReadback {
@@ -60,8 +59,5 @@ class FrameReadback {
   std::vector<Pending> pending_;
   bool images_ = false;
 };
-
-// "tscmaa_edges" and "tscmaa_taa_pixels" summed over the eyes.
-std::vector<std::pair<std::string, double>> tscmaaCounters(const std::vector<TscmaaCounts>& counts);
 
 }  // namespace taa

@@ -9,22 +9,19 @@
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "pass_plan.h"
-#include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
 #include "passes/reference.h"
-#include "passes/taa_resolve.h"
-#include "passes/tscmaa.h"
 #include "post_chain.h"
 #include "prev_gbuffer.h"
 #include "readback.h"
+#include "resolve_factory.h"
 #include "script/frame_state.h"
 #include "spec/taa_modes.h"
 #include "stereo.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
-#include "vk/transfer.h"
 
 namespace taa {
 
@@ -40,34 +37,35 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
   return size;
 }
 
-GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
-  GBufferConfig c;
-  const glm::ivec2 size = maxRenderSize(spec);
-  c.width = uint32_t(size.x);
-  c.height = uint32_t(size.y);
-  c.deferred = plan.deferred;
-  c.velocity = plan.velocity;
-  c.normal = plan.normal;
-  c.ids = plan.ids;
-  return c;
-}
-
+// The targets no pass reads but the harness's captures do.
 PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
   PassPlan p = planPasses(spec);
-  p.ids = p.ids || o.captureIds;
-  p.velocity = p.velocity || o.captureVelocity;
+  p.own.ids = p.own.ids || o.captureIds;
+  p.own.velocity = p.own.velocity || o.captureVelocity;
   return p;
 }
 
-std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
-  if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
-  return std::make_unique<TaaResolvePass>(ctx, spec, plan);
+// What the resolve may read this frame: the targets the plan allocated, null otherwise.
+ResolveInputs resolveInputs(GBufferTargets& t, PrevGBuffer& prev, vk::Image& color) {
+  auto orNull = [](vk::Image& image) { return image ? &image : nullptr; };
+  ResolveInputs in;
+  in.color = &color;
+  in.depth = &t.depth;
+  in.velocity = orNull(t.velocity);
+  in.ids = orNull(t.ids);
+  in.normal = orNull(t.normal);
+  in.prevDepth = orNull(prev.depth);
+  in.prevNormal = orNull(prev.normal);
+  in.prevIds = orNull(prev.ids);
+  in.prevVelocity = orNull(prev.velocity);
+  return in;
 }
 
-std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
-                                       const RenderOptions& o) {
-  if (!spec::modeRule(spec.taa.mode).tscmaa) return nullptr;
-  return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
+// What the built passes read, beyond colour and depth.
+GBufferNeeds passNeeds(const ResolveStage* resolve, const PostChain& post) {
+  GBufferNeeds n = post.needs();
+  if (resolve) n |= resolve->needs();
+  return n;
 }
 
 // One FrameUniforms slot per eye, at the device's uniform offset alignment.
@@ -87,14 +85,15 @@ struct Renderer::State {
   RenderOptions options;
   GpuScene gpuScene;
   PassPlan plan;
+  // The passes are built first: the G-buffer holds what they say they read.
+  DrawList firstFrame;
+  std::unique_ptr<ResolveStage> resolve;  // null when the mode runs none
+  PostChain post;                         // the passes before, following and after it
+  GBufferNeeds needs;
   GBufferConfig config;
   GBufferTargets targets;
   GBufferPass gbuffer;
   PrevGBuffer prev;
-  std::unique_ptr<TaaResolvePass> resolve;
-  std::unique_ptr<AdaptivePass> adaptive;
-  std::unique_ptr<TscmaaPass> tscmaa;
-  PostChain post;
   std::unique_ptr<ReferencePass> reference;
   std::unique_ptr<InjectPass> inject;
   VkDeviceSize uniformStride;
@@ -112,37 +111,28 @@ struct Renderer::State {
         options(o),
         gpuScene(c, sc),
         plan(planWithCaptures(s, o)),
-        config(gbufferConfig(s, plan)),
+        firstFrame(buildDrawList(sc, script::frameState(s, 0))),
+        resolve(makeResolveStage(c, s, plan, options)),
+        post(PassContext{c, s, gpuScene, firstFrame, options}, plan, maxRenderSize(s)),
+        needs(passNeeds(resolve.get(), post)),
+        config(planGBuffer(plan, needs, maxRenderSize(s))),
         targets(c, config),
         gbuffer(c, gpuScene, config),
-        prev(c, plan, targets),
-        resolve(makeResolve(c, s, plan)),
-        adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(
-                                     c, s, gpuScene, buildDrawList(sc, script::frameState(s, 0)),
-                                     o.captureAdaptive)
-                               : nullptr),
-        tscmaa(makeTscmaa(c, s, o)),
-        post(c, s, plan, maxRenderSize(s)),
+        prev(c, needs, targets),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         uniformStride(taa::uniformStride(c)),
         frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-        instances(
-            c,
-            std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
-                sizeof(gpu::InstanceData),
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+        instances(c, std::max<size_t>(1, firstFrame.instances.size()) * sizeof(gpu::InstanceData),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c),
         readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& p : plan.describe()) log.push_back(p);
-    if (resolve) log.push_back(resolve->describe());
-    if (adaptive)
-      for (const auto& p : adaptive->describe()) log.push_back(p);
-    if (tscmaa)
-      for (const auto& line : tscmaa->describe()) log.push_back(line);
+    if (resolve)
+      for (const auto& p : resolve->describe()) log.push_back(p);
     for (const auto& p : post.describe()) log.push_back(p);
     if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
@@ -151,7 +141,6 @@ struct Renderer::State {
                     " per eye)");
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
-    if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
     log.push_back("scene: " + std::to_string(sc.vertices.size()) + " vertices, " +
                   std::to_string(sc.indices.size() / 3) + " triangles, " + std::to_string(sc.textures.size()) +
                   " textures (" + std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
@@ -181,8 +170,10 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   const float lodBias = lodBiasApplies ? s.spec.material.lod_bias : 0.0f;
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
+  const FrameView view{cmd,    &s.timer, &state, &s.targets, &draws, s.frameUniforms.handle(),
+                       lodBias};
   vk::Image* resolveInput = nullptr;
-  // Stereo renders the G-buffer once per eye; everything else has one eye.
+  // Stereo renders the G-buffer, and resolves, once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
     const script::FrameState eyeState =
         eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
@@ -195,39 +186,22 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
                      state.renderSize, lodBias);
     s.timer.end(cmd);
     if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
-    resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
-    if (s.tscmaa) s.tscmaa->record(cmd, &s.timer, eyeState, eye, *resolveInput, s.targets.depth);
+    FrameView eyeView = view;
+    eyeView.state = &eyeState;
+    resolveInput = &s.post.beforeResolve(eyeView, s.targets.color);
+    if (s.resolve)
+      s.resolve->record(cmd, s.timer, eyeState, eye,
+                        resolveInputs(s.targets, s.prev, *resolveInput));
   }
   vk::Image* output = resolveInput;
   glm::ivec2 outSize = state.renderSize;
-  if (s.tscmaa) {
-    output = &s.tscmaa->output();
-    outSize = outputSize(s.spec);
-  } else if (s.resolve) {
-    TaaInputs in;
-    in.color = resolveInput;
-    in.depth = &s.targets.depth;
-    in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
-    in.ids = s.targets.ids ? &s.targets.ids : nullptr;
-    in.normal = s.targets.normal ? &s.targets.normal : nullptr;
-    in.prevDepth = s.prev.depth ? &s.prev.depth : nullptr;
-    in.prevNormal = s.prev.normal ? &s.prev.normal : nullptr;
-    in.prevIds = s.prev.ids ? &s.prev.ids : nullptr;
-    in.prevVelocity = s.prev.velocity ? &s.prev.velocity : nullptr;
-    s.timer.begin(cmd, "taa_resolve");
-    s.resolve->record(cmd, state, in);
-    s.timer.end(cmd);
-    output = &s.resolve->output();
-    outSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
-    if (s.adaptive) {
-      const SegmentationInputs seg{resolveInput, &s.targets.depth, &s.targets.normal, &s.targets.ids,
-                                   s.resolve->rejection(), nullptr};
-      const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
-      output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
-    }
-    s.prev.capture(cmd, s.targets);
+  if (s.resolve) {
+    output = &s.post.followResolve(view, *s.resolve, *resolveInput);
+    outSize = s.resolve->outputSize();
   }
-  output = &s.post.afterResolve(cmd, s.timer, state, *output, outSize);
+  // Last frame's targets for the next resolve (nothing when no pass reads them).
+  s.prev.capture(cmd, s.targets);
+  output = &s.post.afterResolve(view, *output, outSize);
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
   if (s.reference && readImages) {
@@ -238,8 +212,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.end(cmd);
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
-  if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
-  if (s.adaptive && s.adaptive->debugView()) output = s.adaptive->debugView();
+  if (vk::Image* v = s.resolve ? s.resolve->debugView() : nullptr) output = v;
+  if (vk::Image* v = s.post.debugView()) output = v;
   const bool readOutput = readImages || s.options.hashEveryFrame;
   if (readOutput) {
     FrameSources src;
@@ -248,9 +222,11 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     src.renderSize = state.renderSize;
     src.resolveInput = resolveInput;
     src.targets = &s.targets;
-    src.tscmaa = s.tscmaa.get();
     src.reference = s.reference.get();
-    src.adaptive = s.adaptive.get();
+    if (readImages) {
+      if (s.resolve) src.captures = s.resolve->captures();
+      for (auto& c : s.post.captures()) src.captures.push_back(std::move(c));
+    }
     s.readback.record(cmd, s.spec, s.options, src, readImages);
   }
   s.ctx.submitAndWait(cmd);
@@ -261,8 +237,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.cameraCut = state.cameraCut;
   record.historyReset = state.resetHistory;
   record.gpuMs = s.timer.read();
-  if (s.tscmaa) record.stats = tscmaaCounters(s.tscmaa->counts());
-  if (s.adaptive) record.stats = s.adaptive->stats();
+  if (s.resolve) record.stats = s.resolve->stats();
+  for (auto& stat : s.post.stats()) record.stats.push_back(std::move(stat));
   if (readOutput) s.readback.finish(record);
   return record;
 }

@@ -18,6 +18,7 @@
 
 #include "invariants/history_box.h"
 #include "invariants/invariant_support.h"
+#include "spec/taa_modes.h"
 
 namespace taa::invariants {
 
@@ -117,7 +118,7 @@ std::string historyBoundedInapplicable(const CheckedCase& spec) {
     return name + " checks the clamp/clip box, but " + why +
            "; remove it from checks.invariants or " + fix;
   };
-  if (t.mode != TaaMode::Full)
+  if (!modeRule(t.mode).plainFull)
     return because(std::string("taa.mode is ") + enumToString(t.mode), "set taa.mode to full");
   if (t.rectify == Rectify::None) return because("taa.rectify is none", "enable taa.rectify");
   if (t.tonemap_weighting != ToneWeight::None && t.tonemap_weighting != ToneWeight::Karis)

@@ -118,14 +118,15 @@ uint32_t noiseHashCpu(uint32_t x, uint32_t y, uint32_t z) {
   return h;
 }
 
-// Uniform history and current of 0.5: the output is 0.5 plus the noise of its pixel at frame 1,
-// the same in every channel.
+// A current of 0.5 at alpha 1 (the history, which got frame 0's noise, has no weight): the
+// output is 0.5 plus the noise of its pixel at frame 1, the same in every channel.
 TEST(SeedExtrasNoise, IsTheHashOfPixelAndFrameWithinTheAmount) {
   const float amount = 0.25f;
   const std::string json = R"({"scene": {"builtin": "checkerboard"},
     "render": {"width": 16, "height": 8}, "jitter": {"pattern": "none"}, "script": {"frames": 2},
     "taa": {"use_velocity": "all", "velocity_sampling": "pixel", "history_filter": "bilinear",
-            "rectify": "none", "history_format": "rgba32f", "noise": true, "noise_amount": 0.25}})";
+            "rectify": "none", "alpha": 1.0, "history_format": "rgba32f", "noise": true,
+            "noise_amount": 0.25}})";
   test::SyntheticResolve in;
   in.current = Image(16, 8, 4, 0.5f);
   in.history = Image(16, 8, 4, 0.5f);

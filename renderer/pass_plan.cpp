@@ -32,6 +32,7 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||
           p.adaptive || wantsAux(s, AuxBuffer::MaterialId);
   p.deferred = s.render.path == RenderPath::Deferred;
+  p.msaa = s.render.msaa;
   p.normal = consistency || p.deferred || p.adaptive || wantsAux(s, AuxBuffer::Normal);
   p.prevDepth = full && (t.depth_culling || consistency);
   p.prevNormal = consistency;
@@ -46,7 +47,8 @@ PassPlan planPasses(const spec::CaseSpec& s) {
 
 std::vector<std::string> PassPlan::describe() const {
   std::vector<std::string> out;
-  out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
+  out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") +
+                (msaa > 1 ? ", " + std::to_string(msaa) + "x MSAA" : "") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
   if (tscmaa) {
     out.push_back("pass tscmaa_edges");

@@ -15,6 +15,7 @@ struct PassPlan {
   bool normal = false;
   bool ids = false;
   bool deferred = false;
+  int msaa = 1;  // samples per pixel, resolved within the raster pass
   // Temporal resolve and the previous frame's G-buffer it reads.
   bool taa = false;
   bool tscmaa = false;  // the TSCMAA passes replace the resolve

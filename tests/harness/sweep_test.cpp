@@ -74,10 +74,18 @@ TEST(Sweep, UnknownOrInvalidPresetsAreBadInputNamingThePreset) {
 // MSAA is a baseline of the sweep: next to no_aa on the same replay it lands closer to the
 // reference, and the raster pass that does the work is what its time shows.
 TEST(Sweep, MsaaBaselineBeatsNoAaAndPaysInTheRasterPass) {
-  const fs::path file = writeCase("msaa");
+  // Geometric edges (MSAA does nothing for texture aliasing) against a fine reference.
+  const fs::path dir = fs::path(TAA_TEST_OUT) / "sweep" / "msaa" / "cases";
+  fs::create_directories(dir);
+  const fs::path file = dir / "fence.json";
+  std::ofstream(file) << R"({
+    "scene": {"builtin": "fence"}, "render": {"width": 96, "height": 54},
+    "camera": {"strafe": {"speed": 1.2, "distance": 0.6}}, "script": {"frames": 8},
+    "reference": {"samples": 32}
+  })";
   const auto shipped = sweep::loadPresets(fs::path(TAA_SOURCE_DIR) / "cases/presets/presets.json");
   sweep::SweepOptions o;
-  o.fromFrame = 6;
+  o.fromFrame = 4;
   const auto r = sweep::runSweep(test::device(), file, shipped, {"no_aa", "msaa_4x"}, o);
   ASSERT_EQ(r.presets.size(), 2u);
   const auto& none = r.presets[0];

@@ -18,8 +18,8 @@ std::string figure(const fs::path& dir, const std::string& rel, const std::strin
 }
 
 // A draggable split of two images of one frame: `left` over `right`, clipped at the divider.
-std::string split(const std::string& left, const std::string& right, const std::string& leftTag,
-                  const std::string& rightTag) {
+std::string splitImages(const std::string& left, const std::string& right,
+                        const std::string& leftTag, const std::string& rightTag) {
   std::string s = "<div class=\"ab\" data-zoom=\"auto\">\n<div class=\"ab-tools\">";
   s += "<span>A/B: " + escapeMarkup(leftTag) + " | " + escapeMarkup(rightTag) +
        "; drag, or focus and use \xE2\x86\x90 \xE2\x86\x92</span>";
@@ -41,7 +41,7 @@ std::string split(const std::string& left, const std::string& right, const std::
 std::string splitView(const run::FrameImages& im, const fs::path& dir) {
   if (!imageExists(dir, im.golden) || !imageExists(dir, im.actual))
     return "<div class=\"missing\">A/B view needs both the golden and the actual image</div>\n";
-  return split(im.golden, im.actual, "golden", "actual");
+  return splitImages(im.golden, im.actual, "golden", "actual");
 }
 
 // report.ab: this run's output (A) against the same frame rendered with a second parameter
@@ -51,7 +51,7 @@ std::string abView(const run::FrameImages& im, const fs::path& dir) {
   if (!imageExists(dir, im.ab) || !imageExists(dir, im.actual))
     return "<div class=\"missing\">A/B of the second parameter set needs both outputs</div>\n";
   return "<h4>parameter sets <span class=\"mono\">A: this case | B: " + escapeMarkup(im.abLabel) +
-         "</span></h4>\n" + split(im.actual, im.ab, "A: case", "B: " + im.abLabel);
+         "</span></h4>\n" + splitImages(im.actual, im.ab, "A: case", "B: " + im.abLabel);
 }
 
 std::string crops(const run::FrameImages& im, const fs::path& dir) {

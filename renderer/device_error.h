@@ -14,6 +14,14 @@ class EnvironmentError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The case asks for something this device cannot do (say, a sample count it lacks): the
+// case has to change, so the CLI maps it to exit code 2 like other bad input. The message
+// names the key, what the device offers and the fix.
+class UnsupportedSettingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // A call into the GPU API failed; the message carries the call, its result, file and line.
 class DeviceError : public std::runtime_error {
  public:

@@ -21,6 +21,7 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   p.adaptive = rule.adaptive;
   p.motionBlur = s.post.motion_blur;
   p.deferred = s.render.path == RenderPath::Deferred;
+  p.msaa = s.render.msaa;
   p.own.velocity = planWantsAux(s, AuxBuffer::Velocity);
   p.own.ids = planWantsAux(s, AuxBuffer::MaterialId);
   p.own.normal = p.deferred || planWantsAux(s, AuxBuffer::Normal);
@@ -38,6 +39,7 @@ GBufferConfig planGBuffer(const PassPlan& plan, const GBufferNeeds& passes,
   c.width = uint32_t(maxRenderSize.x);
   c.height = uint32_t(maxRenderSize.y);
   c.deferred = plan.deferred;
+  c.samples = uint32_t(plan.msaa);
   // Last frame's copy of a target needs this frame's target to copy from.
   c.velocity = n.velocity || n.prevVelocity;
   c.normal = n.normal || n.prevNormal;
@@ -47,7 +49,8 @@ GBufferConfig planGBuffer(const PassPlan& plan, const GBufferNeeds& passes,
 
 std::vector<std::string> PassPlan::describe() const {
   std::vector<std::string> out;
-  out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
+  out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") +
+                (msaa > 1 ? ", " + std::to_string(msaa) + "x MSAA" : "") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
   // The resolve stage and the passes around it list themselves with their settings.
   return out;

@@ -15,6 +15,7 @@ namespace taa {
 
 struct PassPlan {
   bool deferred = false;
+  int msaa = 1;  // samples per pixel, resolved within the raster pass
   // A temporal resolve runs (which one is makeResolveStage's choice, resolve_factory.cpp).
   bool taa = false;
   // Segmentation, tracing and masked FXAA after the resolve (taa.mode adaptive).

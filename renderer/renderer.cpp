@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/image_io.h"
+#include "device_error.h"
 #include "draw_list.h"
 #include "frame_readback.h"
 #include "frame_uniforms.h"
@@ -148,7 +149,10 @@ struct Renderer::State {
 };
 
 Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene, RenderOptions options)
-    : s_(std::make_unique<State>(ctx, spec, scene, options)) {}
+try : s_(std::make_unique<State>(ctx, spec, scene, options)) {
+} catch (const UnsupportedSettingError& e) {
+  throw UnsupportedSettingError(spec.file.string() + ": " + e.what());  // the case to fix
+}
 
 Renderer::~Renderer() = default;
 

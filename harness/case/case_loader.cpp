@@ -7,6 +7,7 @@
 #include "case/case_validate.h"
 #include "case/json_reader.h"
 #include "case/json_writer.h"
+#include "case/validate_report.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
 #include "core/sha256.h"
@@ -99,6 +100,7 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
   out.present = std::move(ctx.present);
   validateCase(out.spec, out.present);
   out.sha256 = inputsSha256(out.spec, text);
+  out.abCase = abCaseJson(root, out.spec);
   return out;
 }
 

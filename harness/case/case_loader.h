@@ -18,6 +18,8 @@ struct LoadedCase {
   // Of the file's bytes and of every file it references (scene, mover models, tracks),
   // for stale-golden detection.
   std::string sha256;
+  // report.ab: the B side's case JSON (the file with the preset merged in), "" without A/B.
+  std::string abCase;
 };
 
 LoadedCase loadCase(const std::filesystem::path& file);

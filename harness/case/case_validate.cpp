@@ -5,8 +5,9 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 
-#include "case/validate_invariants.h"
 #include "case/case_error.h"
+#include "case/validate_invariants.h"
+#include "case/validate_report.h"
 #include "case/validate_taa.h"
 #include "case/validate_tracks.h"
 #include "spec/taa_modes.h"
@@ -100,6 +101,14 @@ void validateRender(Problems& p, RenderSpec& r) {
   const auto renderH = static_cast<int>(std::lround(float(r.height) / r.upsample));
   if (renderW < 1 || renderH < 1)
     p.add("render.upsample", "renders below one pixel; lower upsample or raise the resolution");
+  if (r.msaa != 1 && r.msaa != 2 && r.msaa != 4 && r.msaa != 8)
+    p.add("render.msaa", "a sample count is 1, 2, 4 or 8; set one of them");
+  // The lighting pass reads one albedo, normal and depth per pixel; lighting each sample
+  // would be a per-sample deferred path, which the renderer does not have.
+  if (r.msaa > 1 && r.path == RenderPath::Deferred)
+    p.add("render.msaa",
+          "multisampling needs forward shading (the deferred lighting pass reads one sample "
+          "per pixel); set render.path: forward or remove render.msaa");
   for (size_t i = 1; i < r.scale_schedule.size(); ++i)
     if (r.scale_schedule[i].frame <= r.scale_schedule[i - 1].frame)
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
@@ -200,6 +209,7 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "past the last frame");
   for (const auto& [key, msg] : invariantProblems(spec, present)) p.add(key, msg);
   for (const auto& [key, msg] : trackProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : reportProblems(spec, present)) p.add(key, msg);
   p.throwIfAny();
 
   // Canonical forms the renderer relies on.

@@ -88,6 +88,9 @@ int dispatch(int argc, char** argv) {
   } catch (const golden::GoldenError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;
+  } catch (const UnsupportedSettingError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kBadInput;
   } catch (const EnvironmentError& e) {
     std::cerr << "environment: " << e.what() << "\n";
     return kEnvironment;

@@ -142,6 +142,13 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       result.status = run::CaseStatus::Error;
       result.message = e.what();
       badInput = true;
+    } catch (const UnsupportedSettingError& e) {
+      // A setting this device lacks (render.msaa): the case must change, as for a bad scene.
+      result.name = loaded.spec.name;
+      result.file = loaded.spec.file.string();
+      result.status = run::CaseStatus::Error;
+      result.message = e.what();
+      badInput = true;
     } catch (const ImageWriteError&) {
       throw;  // the disk, not the case: exit 3, not a regression
     } catch (const OutputError&) {

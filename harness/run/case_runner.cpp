@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "case/case_loader.h"
 #include "compare/metrics.h"
 #include "golden/environment.h"
 #include "renderer.h"
@@ -79,6 +80,24 @@ void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scen
 
 double rmseAgainst(const Image& a, const Image& b) { return compare::computeMetrics(a, b).rmse; }
 
+// report.ab: the B side (the case with the preset merged in, checked when the case loaded)
+// replayed over the same frames; its outputs of the checked frames, for the report only.
+std::map<int, Image> renderAbSide(Device& device, const cases::LoadedCase& loaded,
+                                  const RunOptions& options) {
+  const cases::LoadedCase b = cases::parseCase(loaded.abCase, loaded.spec.file);
+  const scene::Scene scene = scene::buildScene(b.spec);
+  Renderer renderer(device, b.spec, scene, RenderOptions{});
+  const auto& checked = loaded.spec.output.frames;
+  std::map<int, Image> out;
+  for (int f = 0; f < b.spec.script.frames; ++f) {
+    if (options.progress) options.progress(f, b.spec.script.frames);
+    const bool wanted = std::binary_search(checked.begin(), checked.end(), f);
+    FrameRecord r = renderer.renderFrame(f, wanted);
+    if (wanted) out[f] = std::move(r.color);
+  }
+  return out;
+}
+
 }  // namespace
 
 CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOptions& options,
@@ -124,6 +143,9 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
         [&](FrameRecord& r) { checks.observeRepeat(viewOf(r)); }, nullptr);
   }
   result.timings = timing.summary();
+  std::map<int, Image> abOutputs;
+  if (!loaded.abCase.empty() && options.writeImages)
+    abOutputs = renderAbSide(device, loaded, options);
 
   // The case's status is the worst of its checks: a failed invariant fails the case whether
   // its goldens are missing, stale or match.
@@ -133,12 +155,18 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   }
   if (golden) {
     result.status = worse(result.status, golden->finish(outputs, loaded.sha256, result));
+    for (auto& fc : result.frames)
+      if (const auto it = abOutputs.find(fc.frame);
+          it != abOutputs.end() && !fc.images.actual.empty())
+        writeAbImages(options.outDir / spec.name, spec.name, fc, it->second,
+                      "preset " + spec.report.ab);
   } else if (options.writeImages) {
     for (const auto& [frame, image] : outputs) {
       FrameComparison fc;
       fc.frame = frame;
       fc.status = FrameStatus::MissingGolden;
-      writeFrameImages(options.outDir / spec.name, spec.name, fc, image, nullptr, nullptr);
+      writeFrameImages(options.outDir / spec.name, spec.name, fc, image, nullptr, nullptr,
+                       spec.report.zoom);
     }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

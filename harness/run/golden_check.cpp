@@ -28,39 +28,76 @@ std::string shortSha(const std::string& sha) {
   return sha.substr(0, 12);
 }
 
+// Magnification of a crop: about 256 px wide, whole pixels.
+int zoomFactor(int width) {
+  return std::max(1, 256 / std::max(1, width));
+}
+
 }  // namespace
 
 void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComparison& fc,
-                      const Image& actual, const Image* golden, const Image* errorMap) {
+                      const Image& actual, const Image* golden, const Image* errorMap,
+                      const spec::ZoomSpec& zoom) {
   const std::string base = frameBase(fc.frame);
   writeExr(caseDir / (base + ".exr"), actual);
   writePng(caseDir / (base + ".png"), actual);
   fc.images.actual = rel + "/" + base + ".png";
-  if (!golden) return;
-  writePng(caseDir / (base + ".golden.png"), *golden);
-  fc.images.golden = rel + "/" + base + ".golden.png";
-  if (!errorMap) return;
-  writePngLinear8(caseDir / (base + ".diff.png"), compare::heatmap(*errorMap));
-  fc.images.diff = rel + "/" + base + ".diff.png";
-  // The worst tenth of the frame, magnified so single pixels are visible.
-  const int w = std::max(1, std::min(actual.width, std::max(8, actual.width / 10)));
-  const int h = std::max(1, std::min(actual.height, std::max(8, actual.height / 10)));
-  const auto region = compare::worstRegion(*errorMap, w, h);
-  const int zoom = std::max(1, 256 / w);
+  if (golden) {
+    writePng(caseDir / (base + ".golden.png"), *golden);
+    fc.images.golden = rel + "/" + base + ".golden.png";
+  }
+  if (golden && errorMap) {
+    writePngLinear8(caseDir / (base + ".diff.png"), compare::heatmap(*errorMap));
+    fc.images.diff = rel + "/" + base + ".diff.png";
+  }
+  // The region the case chose (report.zoom), or else the worst tenth of the frame, magnified
+  // so single pixels are visible.
+  compare::Region region;
+  if (zoom.width > 0 && zoom.height > 0) {
+    region.x = std::min(zoom.x, actual.width - 1);
+    region.y = std::min(zoom.y, actual.height - 1);
+    region.width = std::min(zoom.width, actual.width - region.x);
+    region.height = std::min(zoom.height, actual.height - region.y);
+    fc.images.zoomChosen = true;
+  } else if (golden && errorMap) {
+    const int w = std::max(1, std::min(actual.width, std::max(8, actual.width / 10)));
+    const int h = std::max(1, std::min(actual.height, std::max(8, actual.height / 10)));
+    region = compare::worstRegion(*errorMap, w, h);
+  } else {
+    return;
+  }
+  const int factor = zoomFactor(region.width);
   auto zoomed = [&](const Image& img) {
     return compare::upscaleNearest(
-        compare::crop(img, region.x, region.y, region.width, region.height), zoom);
+        compare::crop(img, region.x, region.y, region.width, region.height), factor);
   };
-  writePng(caseDir / (base + ".zoom_golden.png"), zoomed(*golden));
   writePng(caseDir / (base + ".zoom_actual.png"), zoomed(actual));
-  writePngLinear8(caseDir / (base + ".zoom_diff.png"), zoomed(compare::heatmap(*errorMap)));
-  fc.images.zoomGolden = rel + "/" + base + ".zoom_golden.png";
   fc.images.zoomActual = rel + "/" + base + ".zoom_actual.png";
-  fc.images.zoomDiff = rel + "/" + base + ".zoom_diff.png";
+  if (golden) {
+    writePng(caseDir / (base + ".zoom_golden.png"), zoomed(*golden));
+    fc.images.zoomGolden = rel + "/" + base + ".zoom_golden.png";
+  }
+  if (golden && errorMap) {
+    writePngLinear8(caseDir / (base + ".zoom_diff.png"), zoomed(compare::heatmap(*errorMap)));
+    fc.images.zoomDiff = rel + "/" + base + ".zoom_diff.png";
+  }
   fc.images.zoomX = region.x;
   fc.images.zoomY = region.y;
   fc.images.zoomW = region.width;
   fc.images.zoomH = region.height;
+}
+
+void writeAbImages(const fs::path& caseDir, const std::string& rel, FrameComparison& fc,
+                   const Image& b, const std::string& label) {
+  const std::string base = frameBase(fc.frame);
+  writePng(caseDir / (base + ".ab.png"), b);
+  fc.images.ab = rel + "/" + base + ".ab.png";
+  fc.images.abLabel = label;
+  const auto& im = fc.images;
+  if (im.zoomW <= 0 || im.zoomH <= 0) return;
+  const Image crop = compare::crop(b, im.zoomX, im.zoomY, im.zoomW, im.zoomH);
+  writePng(caseDir / (base + ".zoom_ab.png"), compare::upscaleNearest(crop, zoomFactor(im.zoomW)));
+  fc.images.zoomAb = rel + "/" + base + ".zoom_ab.png";
 }
 
 GoldenCheck::GoldenCheck(const spec::CheckedCase& spec, const golden::Environment& env,
@@ -193,7 +230,8 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
       fc.frame = frame;
       fc.status = FrameStatus::MissingGolden;
       fc.actualSha256 = sequence_.at(size_t(frame));
-      if (options_.writeImages) writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr);
+      if (options_.writeImages)
+        writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
       result.frames.push_back(std::move(fc));
     }
     if (!problem_.empty()) {
@@ -220,7 +258,8 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
       fc.status = FrameStatus::MissingGolden;
       fc.failures.push_back("frame " + std::to_string(frame) + " is checked but was never blessed");
       anyFailed = true;
-      if (options_.writeImages) writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr);
+      if (options_.writeImages)
+        writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
       result.frames.push_back(std::move(fc));
       continue;
     }
@@ -253,7 +292,8 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
     }
     anyFailed |= fc.status == FrameStatus::Failed;
     if (options_.writeImages)
-      writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap);
+      writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap,
+                       spec_.report.zoom);
     result.frames.push_back(std::move(fc));
   }
   if (sameEnvironment && m.sequence.empty()) {

@@ -20,10 +20,16 @@
 namespace taa::run {
 
 // The images of checked frame `fc.frame` beside the report (actual; golden, diff heatmap and
-// magnified worst region when there is a golden), with their paths recorded in `fc`.
+// magnified worst region when there is a golden; the region `zoom` names instead when it has
+// a size, with or without a golden), with their paths recorded in `fc`.
 void writeFrameImages(const std::filesystem::path& caseDir, const std::string& rel,
                       FrameComparison& fc, const Image& actual, const Image* golden,
-                      const Image* errorMap);
+                      const Image* errorMap, const spec::ZoomSpec& zoom = {});
+
+// report.ab: the B side's output of the same frame, and its crop of the region writeFrameImages
+// magnified, recorded in `fc` under `label`.
+void writeAbImages(const std::filesystem::path& caseDir, const std::string& rel,
+                   FrameComparison& fc, const Image& b, const std::string& label);
 
 class GoldenCheck {
  public:

@@ -124,7 +124,11 @@ nlohmann::json toJson(const RunResults& r) {
                                 {"zoom_golden", i.zoomGolden},
                                 {"zoom_actual", i.zoomActual},
                                 {"zoom_diff", i.zoomDiff},
-                                {"zoom", {i.zoomX, i.zoomY, i.zoomW, i.zoomH}}}}});
+                                {"zoom", {i.zoomX, i.zoomY, i.zoomW, i.zoomH}},
+                                {"zoom_chosen", i.zoomChosen},
+                                {"ab", i.ab},
+                                {"zoom_ab", i.zoomAb},
+                                {"ab_label", i.abLabel}}}});
     }
     for (const auto& inv : c.invariants) {
       nlohmann::json values = nlohmann::json::object();
@@ -198,6 +202,10 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
       f.images.zoomGolden = ji.value("zoom_golden", "");
       f.images.zoomActual = ji.value("zoom_actual", "");
       f.images.zoomDiff = ji.value("zoom_diff", "");
+      f.images.zoomChosen = ji.value("zoom_chosen", false);
+      f.images.ab = ji.value("ab", "");
+      f.images.zoomAb = ji.value("zoom_ab", "");
+      f.images.abLabel = ji.value("ab_label", "");
       const auto zoom = ji.value("zoom", std::vector<int>{0, 0, 0, 0});
       if (zoom.size() == 4) {
         f.images.zoomX = zoom[0];

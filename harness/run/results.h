@@ -28,6 +28,10 @@ struct FrameImages {
   std::string zoomActual;
   std::string zoomDiff;
   int zoomX = 0, zoomY = 0, zoomW = 0, zoomH = 0;  // the crop in frame pixels
+  bool zoomChosen = false;                         // the case's report.zoom, not the worst region
+  std::string ab;       // report.ab: PNG of the B side's output of this frame
+  std::string zoomAb;   // and its crop
+  std::string abLabel;  // what B is ("preset variance_ycocg")
 };
 
 enum class FrameStatus { Exact, WithinTolerance, Failed, MissingGolden };

@@ -5,19 +5,23 @@
 
 #include "spec/case_spec.h"
 #include "spec/checks_spec.h"
+#include "spec/report_spec.h"
 
 namespace taa::spec {
 
 struct CheckedCase : CaseSpec {
   ChecksSpec checks;
+  ReportSpec report;
 };
 
-// The case file's keys: the renderer's sections, then "checks" (the order validate --print
-// and techniques --json list them in).
+// The case file's keys: the renderer's sections, then "checks" and "report" (the order
+// validate --print and techniques --json list them in).
 template <class V>
 void fields(V& v, CheckedCase& s) {
   fields(v, static_cast<CaseSpec&>(s));
   v.object("checks", s.checks, Meta{"golden comparison and invariants of taa-harness run", ""});
+  v.object("report", s.report,
+           Meta{"what the report shows beyond golden against actual: A/B and zoom", ""});
 }
 
 }  // namespace taa::spec

@@ -1,6 +1,9 @@
 #include "passes/gbuffer.h"
 
+#include <stdexcept>
+
 #include "common/shared.h"
+#include "device_error.h"
 #include "vk/barrier.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
@@ -26,6 +29,27 @@ vk::Image target(vk::Context& ctx, const char* name, const GBufferConfig& c, VkF
   return vk::Image(ctx, d);
 }
 
+// A multisampled twin of a target: drawn into and resolved within the pass, never read
+// by anything else, so it is an attachment only.
+vk::Image msTwin(vk::Context& ctx, const char* name, const GBufferConfig& c, VkFormat format,
+                 VkImageUsageFlags usage) {
+  vk::ImageDesc d;
+  d.name = std::string(name) + "_ms" + std::to_string(c.samples);
+  d.width = c.width;
+  d.height = c.height;
+  d.format = format;
+  d.usage = usage | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  d.samples = c.samples;
+  return vk::Image(ctx, d);
+}
+
+std::string sampleCountList(VkSampleCountFlags counts) {
+  std::string out;
+  for (uint32_t n = 1; n <= 64; n *= 2)
+    if (counts & n) out += (out.empty() ? "" : ", ") + std::to_string(n);
+  return out;
+}
+
 // Attachment formats in GBUF_OUT_* order; UNDEFINED where the case has no target,
 // so the fragment shader's write there is discarded.
 std::vector<VkFormat> colorFormats(const GBufferConfig& c) {
@@ -47,6 +71,41 @@ std::string variant(const char* shader, const GBufferConfig& c) {
 
 }  // namespace
 
+void checkSampleCount(vk::Context& ctx, const GBufferConfig& c) {
+  if (c.samples <= 1) return;
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(ctx.physical(), &props);
+  VkSampleCountFlags offered =
+      props.limits.framebufferColorSampleCounts & props.limits.framebufferDepthSampleCounts;
+  // The limits are a floor; each format the pass multisamples may offer fewer.
+  struct Probe {
+    bool used;
+    VkFormat format;
+    VkImageUsageFlags usage;
+  };
+  const VkImageUsageFlags transient = VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  const VkImageUsageFlags colorUse = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | transient;
+  const Probe probes[] = {{true, kColor, colorUse},
+                          {true, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | transient},
+                          {c.velocity, kVelocity, colorUse},
+                          {c.normal, kNormal, colorUse},
+                          {c.ids, kIds, colorUse}};
+  for (const Probe& p : probes) {
+    if (!p.used) continue;
+    VkImageFormatProperties f{};
+    if (vkGetPhysicalDeviceImageFormatProperties(ctx.physical(), p.format, VK_IMAGE_TYPE_2D,
+                                                 VK_IMAGE_TILING_OPTIMAL, p.usage, 0,
+                                                 &f) != VK_SUCCESS)
+      f.sampleCounts = VK_SAMPLE_COUNT_1_BIT;
+    offered &= f.sampleCounts;
+  }
+  if (offered & c.samples) return;
+  throw UnsupportedSettingError("render.msaa: " + std::to_string(c.samples) +
+                                " samples per pixel are not offered by " + ctx.info().name +
+                                " for the G-buffer's targets (it offers " +
+                                sampleCountList(offered) + "); set render.msaa to one of those");
+}
+
 GBufferTargets::GBufferTargets(vk::Context& ctx, const GBufferConfig& c) {
   color = target(ctx, "color", c, kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT);
   depth = target(ctx, "depth", c, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
@@ -54,11 +113,23 @@ GBufferTargets::GBufferTargets(vk::Context& ctx, const GBufferConfig& c) {
   if (c.normal) normal = target(ctx, "normal", c, kNormal, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   if (c.ids) ids = target(ctx, "ids", c, kIds, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   if (c.deferred) albedo = target(ctx, "albedo", c, kAlbedo, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  if (c.samples <= 1) return;
+  if (c.deferred)
+    throw std::logic_error(
+        "gbuffer: MSAA with the deferred path (validation refuses render.msaa there)");
+  checkSampleCount(ctx, c);
+  const VkImageUsageFlags colorUse = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  msColor = msTwin(ctx, "color", c, kColor, colorUse);
+  msDepth = msTwin(ctx, "depth", c, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  if (c.velocity) msVelocity = msTwin(ctx, "velocity", c, kVelocity, colorUse);
+  if (c.normal) msNormal = msTwin(ctx, "normal", c, kNormal, colorUse);
+  if (c.ids) msIds = msTwin(ctx, "ids", c, kIds, colorUse);
 }
 
 std::vector<std::string> GBufferTargets::describe() const {
   std::vector<std::string> out;
-  for (const vk::Image* i : {&color, &depth, &velocity, &normal, &ids, &albedo})
+  for (const vk::Image* i : {&color, &depth, &velocity, &normal, &ids, &albedo, &msColor, &msDepth,
+                             &msVelocity, &msNormal, &msIds})
     if (*i)
       out.push_back(i->desc().name + " " + std::to_string(i->desc().width) + "x" + std::to_string(i->desc().height) +
                     " (" + std::to_string(i->bytes() / 1024) + " KiB)");
@@ -77,6 +148,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   // Back faces stay: foliage cards, fences and glTF double-sided materials are
   // seen from both sides, and the shader flips their normals.
   d.cullMode = VK_CULL_MODE_NONE;
+  d.samples = config.samples;
   opaque_ = vk::createGraphicsPipeline(ctx, "gbuffer", d);
 
   // Blended surfaces are shaded forward even on the deferred path (after lighting),
@@ -144,25 +216,48 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
                          VkDeviceSize uniformOffset, VkBuffer instances, glm::ivec2 size, float lodBias) {
   const Frame f{frameUniforms, uniformOffset, instances};
   vk::Image* outputs[GBUF_OUT_COUNT] = {&t.color, &t.velocity, &t.normal, &t.ids, &t.albedo};
+  // With MSAA the pass draws into the twins and resolves into the outputs; the twins' samples
+  // are not kept (DONT_CARE), only the resolve is. No albedo twin: MSAA is forward only.
+  const bool ms = config_.samples > 1;
+  vk::Image* drawn[GBUF_OUT_COUNT] = {&t.msColor, &t.msVelocity, &t.msNormal, &t.msIds, &t.albedo};
   VkRenderingAttachmentInfo color[GBUF_OUT_COUNT];
   vk::BarrierBatch barriers;
   for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
     color[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     if (!*outputs[i]) continue;  // imageView stays VK_NULL_HANDLE: writes are discarded
-    barriers.use(*outputs[i], vk::Use::ColorAttachment);
-    color[i].imageView = outputs[i]->view();
+    vk::Image& draw = ms ? *drawn[i] : *outputs[i];
+    barriers.use(draw, vk::Use::ColorAttachment);
+    color[i].imageView = draw.view();
     color[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color[i].storeOp = ms ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    if (!ms) continue;
+    barriers.use(*outputs[i], vk::Use::ColorAttachment);
+    // Integer ids cannot be averaged (a blend of two ids names neither object): sample 0.
+    color[i].resolveMode =
+        i == GBUF_OUT_IDS ? VK_RESOLVE_MODE_SAMPLE_ZERO_BIT : VK_RESOLVE_MODE_AVERAGE_BIT;
+    color[i].resolveImageView = outputs[i]->view();
+    color[i].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   }
   color[GBUF_OUT_IDS].clearValue.color.uint32[0] = 0xffffffffu;
-  barriers.use(t.depth, vk::Use::DepthAttachment).flush(cmd);
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = t.depth.view();
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.storeOp = ms ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
   depth.clearValue.depthStencil = {0.0f, 0};  // reversed Z: 0 is the far plane
+  if (ms) {
+    // Sample 0, not an average: an averaged depth at a silhouette lies on neither surface,
+    // and reprojection and depth culling would then find a point in empty space.
+    barriers.use(t.msDepth, vk::Use::DepthAttachment).use(t.depth, vk::Use::DepthResolve);
+    depth.imageView = t.msDepth.view();
+    depth.resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
+    depth.resolveImageView = t.depth.view();
+    depth.resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  } else {
+    barriers.use(t.depth, vk::Use::DepthAttachment);
+    depth.imageView = t.depth.view();
+  }
+  barriers.flush(cmd);
 
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, {uint32_t(size.x), uint32_t(size.y)}};

@@ -1,5 +1,7 @@
 // The raster pass: scene geometry then sky into colour, depth and whichever
-// auxiliary targets the case needs (velocity, normal, ids, albedo).
+// auxiliary targets the case needs (velocity, normal, ids, albedo). With MSAA it
+// draws into multisampled twins of the targets and resolves them at the end of the
+// pass, so every later pass reads single-sample images as before.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -20,7 +22,12 @@ struct GBufferConfig {
   bool normal = false;
   bool ids = false;
   bool deferred = false;  // albedo target + deferred lighting pass
+  uint32_t samples = 1;   // render.msaa; forward only (validation refuses it with deferred)
 };
+
+// Throws UnsupportedSettingError naming render.msaa and the counts the device offers
+// when `config.samples` is not one of them for every target the pass would multisample.
+void checkSampleCount(vk::Context& ctx, const GBufferConfig& config);
 
 struct GBufferTargets {
   vk::Image color;     // RGBA16F, linear HDR
@@ -29,6 +36,9 @@ struct GBufferTargets {
   vk::Image normal;    // RGBA16F, world-space normal in xyz
   vk::Image ids;       // R32_UINT, object id << 16 | material id; sky = 0xffffffff
   vk::Image albedo;    // RGBA16F, deferred only; alpha 0 marks sky
+  // MSAA only: what the pass draws into. Colour, velocity and normal resolve by averaging
+  // (the only resolve Vulkan has for float formats), depth and ids take sample 0.
+  vk::Image msColor, msDepth, msVelocity, msNormal, msIds;
 
   GBufferTargets(vk::Context& ctx, const GBufferConfig& config);
   // Every allocated target as "name WxH format", for the run log.

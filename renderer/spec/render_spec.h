@@ -27,6 +27,7 @@ struct RenderSpec {
   int height = 180;
   float upsample = 1.0f;
   RenderPath path = RenderPath::Forward;
+  int msaa = 1;  // samples per pixel of the raster pass: 1, 2, 4 or 8, as the device allows
   std::vector<ScaleKey> scale_schedule;
 };
 
@@ -39,6 +40,11 @@ void fields(V& v, RenderSpec& s) {
                "shaders/taa/current_sample.glsl"});
   v.field("path", s.path, Meta{"forward shading in the raster pass, or a deferred lighting pass",
                                "shaders/deferred_lighting.comp"});
+  v.field("msaa", s.msaa, Range<int>{1, 8},
+          Meta{"MSAA samples per pixel in the raster pass (1, 2, 4 or 8; the device must offer "
+               "the count): colour is resolved by averaging, depth and ids take sample 0, "
+               "velocity and normals average",
+               "renderer/passes/gbuffer.cpp"});
   v.list("scale_schedule", s.scale_schedule,
          Meta{"dynamic resolution: piecewise-constant render scale from each key's frame on",
               "renderer/script/frame_state.cpp"});

@@ -96,6 +96,7 @@ struct GraphicsDesc {
   VkCompareOp depthCompare = VK_COMPARE_OP_GREATER;  // reversed Z
   VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
   bool blendFirstAttachment = false;       // premultiplied-free "over" blending on attachment 0
+  uint32_t samples = 1;                    // rasterization samples, the attachments' count
 };
 
 Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& desc);

@@ -26,6 +26,14 @@ UseInfo useInfo(Use u) {
       return {VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
               VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
+    case Use::DepthResolve:
+      // Resolves run in the colour-output stage with colour-write access; the later
+      // depth-test stage is named too so either reading of the spec is covered.
+      return {
+          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+              VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
     case Use::SampledGraphics:
       return {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
@@ -133,7 +141,7 @@ Image::Image(Context& ctx, const ImageDesc& desc) : device_(ctx.device()), desc_
   info.extent = {desc.width, desc.height, 1};
   info.mipLevels = desc.mipLevels;
   info.arrayLayers = desc.layers;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.samples = VkSampleCountFlagBits(desc.samples);
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc.usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -180,7 +188,10 @@ VkImageAspectFlags Image::aspect() const {
   return isDepth(desc_.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 
-size_t Image::bytes() const { return size_t(desc_.width) * desc_.height * desc_.layers * formatBytes(desc_.format); }
+size_t Image::bytes() const {
+  return size_t(desc_.width) * desc_.height * desc_.layers * desc_.samples *
+         formatBytes(desc_.format);
+}
 
 std::optional<VkImageMemoryBarrier2> Image::transition(Use next) {
   const Use previous = std::exchange(use_, next);

@@ -39,6 +39,7 @@ enum class Use {
   Undefined,
   ColorAttachment,
   DepthAttachment,
+  DepthResolve,     // written by a multisample depth resolve at the end of rendering
   SampledGraphics,  // read through a sampler in a fragment shader
   SampledCompute,   // read through a sampler (or texelFetch) in a compute shader
   StorageRead,      // imageLoad in a compute shader
@@ -55,6 +56,7 @@ struct ImageDesc {
   uint32_t layers = 1;
   VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
   VkImageUsageFlags usage = 0;
+  uint32_t samples = 1;  // > 1: a multisampled attachment (one mip, resolved, never sampled)
 };
 
 class Image {
@@ -69,7 +71,7 @@ class Image {
   VkImageView view() const { return view_; }
   const ImageDesc& desc() const { return desc_; }
   VkImageAspectFlags aspect() const;
-  size_t bytes() const;  // of mip 0, all layers
+  size_t bytes() const;  // of mip 0, all layers and samples
   explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
 
   // The barrier from the last use to `next` (all mips and layers); `next` becomes the

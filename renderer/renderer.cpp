@@ -12,7 +12,10 @@
 #include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
+#include "passes/post_filter.h"
 #include "passes/reference.h"
+#include "passes/shadow.h"
+#include "passes/still_image.h"
 #include "passes/taa_resolve.h"
 #include "passes/tscmaa.h"
 #include "post_chain.h"
@@ -40,8 +43,15 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
   return size;
 }
 
-GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
+GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan, ShadowPass* shadow) {
   GBufferConfig c;
+  if (shadow) {
+    c.shadowAtlas = &shadow->atlas();
+    c.shadowSampler = shadow->sampler();
+  }
+  c.normalStrength = spec.material.normal_strength;
+  c.lod0 = spec.render.lod0;
+  c.lod0AlphaTest = spec.render.lod0_alpha_test;
   const glm::ivec2 size = maxRenderSize(spec);
   c.width = uint32_t(size.x);
   c.height = uint32_t(size.y);
@@ -62,6 +72,15 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
+}
+
+// debug.channels: a pass only when some channel is hidden from a debug view.
+std::unique_ptr<PostFilter> makeDebugChannels(vk::Context& ctx, const spec::CaseSpec& spec) {
+  if (spec.debug.output == spec::DebugOutput::None) return nullptr;
+  glm::vec4 shown(0.0f);
+  for (const spec::DebugChannel c : spec.debug.channels) shown[int(c)] = 1.0f;
+  if (shown == glm::vec4(1.0f)) return nullptr;
+  return std::make_unique<PostFilter>(ctx, "debug_channels.comp", shown);
 }
 
 std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
@@ -86,6 +105,11 @@ struct Renderer::State {
   const scene::Scene& scene;
   RenderOptions options;
   GpuScene gpuScene;
+  std::unique_ptr<ShadowPass> shadow;  // lighting.shadows
+  float shadowDistance = 0.0f;
+  std::unique_ptr<StillImagePass> still;  // debug.image
+  std::unique_ptr<PostFilter> debugChannels;
+  vk::Image debugChannelsOut;
   PassPlan plan;
   GBufferConfig config;
   GBufferTargets targets;
@@ -111,8 +135,14 @@ struct Renderer::State {
         scene(sc),
         options(o),
         gpuScene(c, sc),
+        shadow(s.lighting.shadows
+                   ? std::make_unique<ShadowPass>(c, gpuScene, s.lighting.cascades,
+                                                  s.render.lod0 || s.render.lod0_alpha_test)
+                   : nullptr),
+        still(s.debug.image.empty() ? nullptr : std::make_unique<StillImagePass>(c, sc.still)),
+        debugChannels(makeDebugChannels(c, s)),
         plan(planWithCaptures(s, o)),
-        config(gbufferConfig(s, plan)),
+        config(gbufferConfig(s, plan, shadow.get())),
         targets(c, config),
         gbuffer(c, gpuScene, config),
         prev(c, plan, targets),
@@ -123,7 +153,9 @@ struct Renderer::State {
                                : nullptr),
         tscmaa(makeTscmaa(c, s, o)),
         post(c, s, plan, maxRenderSize(s)),
-        reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
+        reference(o.reference
+                      ? std::make_unique<ReferencePass>(c, s, gpuScene, shadow.get(), still.get())
+                      : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         uniformStride(taa::uniformStride(c)),
         frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
@@ -137,6 +169,17 @@ struct Renderer::State {
         readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
+    if (debugChannels)
+      debugChannelsOut = makePostImage(c, "debug_channels", {s.render.width, s.render.height});
+    if (still)
+      log.push_back("pass still_image (debug.image " + s.debug.image + ", " +
+                    spec::enumToString(s.debug.image_sampling) + ")");
+    if (shadow) {
+      const script::FrameState first = script::frameState(s, 0);
+      shadowDistance =
+          taa::shadowDistance(first.camera, casterBounds(sc, buildDrawList(sc, first)));
+      log.push_back(shadow->describe());
+    }
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
     if (adaptive)
@@ -182,11 +225,22 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
   vk::Image* resolveInput = nullptr;
+  // One shadow atlas a frame, fitted to the (centre) camera: both eyes and the reference
+  // read the same shadows.
+  ShadowCascades shadows;
+  if (s.shadow) {
+    shadows = shadowCascades(s.spec.lighting, state.camera, casterBounds(s.scene, draws),
+                             s.shadowDistance);
+    s.timer.begin(cmd, "shadow");
+    s.shadow->record(cmd, shadows, draws, s.instances.handle());
+    s.timer.end(cmd);
+  }
   // Stereo renders the G-buffer once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
     const script::FrameState eyeState =
         eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
-    const gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
+    gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
+    setShadowUniforms(uniforms, shadows);
     const VkDeviceSize slot = s.uniformStride * VkDeviceSize(eye);
     std::memcpy(static_cast<uint8_t*>(s.frameUniforms.mapped()) + slot, &uniforms,
                 sizeof(uniforms));
@@ -194,6 +248,9 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), slot, s.instances.handle(),
                      state.renderSize, lodBias);
     s.timer.end(cmd);
+    if (s.still)
+      s.still->record(cmd, s.targets.color, state.renderSize, state.jitter,
+                      s.spec.debug.image_sampling == spec::ImageSampling::Nearest);
     if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
     resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
     if (s.tscmaa) s.tscmaa->record(cmd, &s.timer, eyeState, eye, *resolveInput, s.targets.depth);
@@ -234,12 +291,16 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.begin(cmd, "reference");
     for (int eye = 0; eye < eyes; ++eye)
       s.reference->record(cmd, eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), draws,
-                          s.instances.handle(), eye);
+                          s.instances.handle(), shadows, eye);
     s.timer.end(cmd);
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
   if (s.adaptive && s.adaptive->debugView()) output = s.adaptive->debugView();
+  if (s.debugChannels) {
+    s.debugChannels->record(cmd, *output, s.debugChannelsOut, outSize);
+    output = &s.debugChannelsOut;
+  }
   const bool readOutput = readImages || s.options.hashEveryFrame;
   if (readOutput) {
     FrameSources src;

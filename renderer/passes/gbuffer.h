@@ -20,6 +20,13 @@ struct GBufferConfig {
   bool normal = false;
   bool ids = false;
   bool deferred = false;  // albedo target + deferred lighting pass
+  // lighting.shadows: shading samples this atlas (renderer/passes/shadow.h) through
+  // `shadowSampler`.
+  vk::Image* shadowAtlas = nullptr;
+  VkSampler shadowSampler = VK_NULL_HANDLE;
+  float normalStrength = 1.0f;  // material.normal_strength
+  bool lod0 = false;            // render.lod0
+  bool lod0AlphaTest = false;   // render.lod0_alpha_test
 };
 
 struct GBufferTargets {

@@ -4,6 +4,7 @@
 // of section 11: debug.channels and adaptive.fxaa_debug_border.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 

@@ -80,7 +80,9 @@ TEST(ShadowCascades, TexelSizeDoesNotChangeAsTheCameraTurnsOrMoves) {
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(a.texelWorld[size_t(i)], b.texelWorld[size_t(i)], 1e-6f * a.texelWorld[size_t(i)])
         << i;
-    if (i > 0) EXPECT_GT(a.texelWorld[size_t(i)], a.texelWorld[size_t(i - 1)]);
+    if (i > 0) {
+      EXPECT_GT(a.texelWorld[size_t(i)], a.texelWorld[size_t(i - 1)]);
+    }
   }
 }
 

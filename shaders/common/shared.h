@@ -60,7 +60,7 @@ TAA_BLOCK(ShadowPush) {
 
 #define GBUF_SPEC_DEFERRED 0  // write albedo for the deferred lighting pass instead of shading
 #define GBUF_SPEC_LOD0 1      // render.lod0: every texture lookup at mip 0
-#define GBUF_SPEC_LOD0_ALPHA 2  // render.lod0_alpha_test: alpha tests at mip 0 (+ shadow_depth.frag)
+#define GBUF_SPEC_LOD0_ALPHA 2  // render.lod0_alpha_test (also shadow_depth.frag)
 
 TAA_BLOCK(FrameUniforms) {
   mat4 viewProj;              // jittered: what is rasterised

@@ -119,8 +119,8 @@ TEST(LodMatching, KeysAreRefusedWhereTheyWouldNotAct) {
       test::caseFromJson(R"({"render": {"lod0_alpha_test": true}})", "lod0_alpha_checker");
   EXPECT_THROW(scene::buildScene(untextured),
                scene::SceneError);  // the checkerboard has no alpha test
-  auto foliage =
-      test::caseFromJson(R"({"scene": {"builtin": "foliage"}, "render": {"lod0_alpha_test": true}})");
+  auto foliage = test::caseFromJson(
+      R"({"scene": {"builtin": "foliage"}, "render": {"lod0_alpha_test": true}})");
   EXPECT_NO_THROW(scene::buildScene(foliage));
 }
 

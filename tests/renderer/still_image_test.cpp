@@ -86,8 +86,8 @@ TEST(StillImage, TemporalUpsamplingConvergesTowardsTheImage) {
         for (int c = 0; c < 3; ++c) rgb.at(x, y, c) = src.at(x, y, c);
     const auto first = compare::computeMetrics(records.front().color, rgb).rmse;
     const auto last = compare::computeMetrics(records.back().color, rgb).rmse;
-    std::printf("still image %s: RMSE frame 0 %.4f, frame 31 %.4f, ratio %.3f\n", sampling, first, last,
-                last / first);
+    std::printf("still image %s: RMSE frame 0 %.4f, frame 31 %.4f, ratio %.3f\n", sampling, first,
+                last, last / first);
     EXPECT_LT(last, 0.75 * first) << sampling;
   }
 }

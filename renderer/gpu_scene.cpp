@@ -34,7 +34,7 @@ GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
     d.width = uint32_t(t.levels[0].width);
     d.height = uint32_t(t.levels[0].height);
     d.mipLevels = uint32_t(t.levels.size());
-    d.format = VK_FORMAT_R8G8B8A8_SRGB;
+    d.format = t.linear ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R8G8B8A8_SRGB;
     d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     vk::Image image(ctx, d);
     std::vector<const void*> levels;
@@ -66,6 +66,16 @@ void GpuScene::uploadDeformed(const std::vector<scene::Vertex>& vertices,
 VkImageView GpuScene::textureView(int material) const {
   const int t = scene_.materials[material].baseColorTexture;
   return t >= 0 ? textures_[t].view() : white_.view();
+}
+
+VkImageView GpuScene::normalView(int material) const {
+  const int t = scene_.materials[material].normalTexture;
+  return t >= 0 ? textures_[t].view() : white_.view();
+}
+
+VkSampler GpuScene::normalSampler(int material) const {
+  const int t = scene_.materials[material].normalTexture;
+  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
 }
 
 VkSampler GpuScene::sampler(int material) const {

@@ -30,6 +30,9 @@ class GpuScene {
   // The material's base-colour texture, or a 1x1 white texture when it has none.
   VkImageView textureView(int material) const;
   VkSampler sampler(int material) const;
+  // The material's normal map (white, never read, when it has none) and its sampler.
+  VkImageView normalView(int material) const;
+  VkSampler normalSampler(int material) const;
   size_t textureBytes() const { return textureBytes_; }
 
  private:

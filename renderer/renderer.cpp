@@ -12,7 +12,11 @@
 #include "pass_plan.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
+#include "passes/post_filter.h"
 #include "passes/reference.h"
+#include "passes/post_filter.h"
+#include "passes/shadow.h"
+#include "passes/still_image.h"
 #include "post_chain.h"
 #include "prev_gbuffer.h"
 #include "readback.h"
@@ -36,6 +40,20 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
   for (const auto& k : spec.render.scale_schedule) probe.push_back(k.frame);
   for (int f : probe) size = glm::max(size, script::frameState(spec, f).renderSize);
   return size;
+}
+
+// The G-buffer: the targets the built passes read, and the scene settings its shading uses.
+GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan,
+                            const GBufferNeeds& needs, ShadowPass* shadow) {
+  GBufferConfig c = planGBuffer(plan, needs, maxRenderSize(spec));
+  if (shadow) {
+    c.shadowAtlas = &shadow->atlas();
+    c.shadowSampler = shadow->sampler();
+  }
+  c.normalStrength = spec.material.normal_strength;
+  c.lod0 = spec.render.lod0;
+  c.lod0AlphaTest = spec.render.lod0_alpha_test;
+  return c;
 }
 
 // The targets no pass reads but the harness's captures do.
@@ -69,6 +87,15 @@ GBufferNeeds passNeeds(const ResolveStage* resolve, const PostChain& post) {
   return n;
 }
 
+// debug.channels: a pass only when some channel is hidden from a debug view.
+std::unique_ptr<PostFilter> makeDebugChannels(vk::Context& ctx, const spec::CaseSpec& spec) {
+  if (spec.debug.output == spec::DebugOutput::None) return nullptr;
+  glm::vec4 shown(0.0f);
+  for (const spec::DebugChannel c : spec.debug.channels) shown[int(c)] = 1.0f;
+  if (shown == glm::vec4(1.0f)) return nullptr;
+  return std::make_unique<PostFilter>(ctx, "debug_channels.comp", shown);
+}
+
 // One FrameUniforms slot per eye, at the device's uniform offset alignment.
 VkDeviceSize uniformStride(vk::Context& ctx) {
   VkPhysicalDeviceProperties props;
@@ -85,6 +112,11 @@ struct Renderer::State {
   const scene::Scene& scene;
   RenderOptions options;
   GpuScene gpuScene;
+  std::unique_ptr<ShadowPass> shadow;  // lighting.shadows
+  float shadowDistance = 0.0f;
+  std::unique_ptr<StillImagePass> still;  // debug.image
+  std::unique_ptr<PostFilter> debugChannels;
+  vk::Image debugChannelsOut;
   PassPlan plan;
   // The passes are built first: the G-buffer holds what they say they read.
   DrawList firstFrame;
@@ -111,16 +143,24 @@ struct Renderer::State {
         scene(sc),
         options(o),
         gpuScene(c, sc),
+        shadow(s.lighting.shadows
+                   ? std::make_unique<ShadowPass>(c, gpuScene, s.lighting.cascades,
+                                                  s.render.lod0 || s.render.lod0_alpha_test)
+                   : nullptr),
+        still(s.debug.image.empty() ? nullptr : std::make_unique<StillImagePass>(c, sc.still)),
+        debugChannels(makeDebugChannels(c, s)),
         plan(planWithCaptures(s, o)),
         firstFrame(buildDrawList(sc, script::frameState(s, 0))),
         resolve(makeResolveStage(c, s, plan, options)),
         post(PassContext{c, s, gpuScene, firstFrame, options}, plan, maxRenderSize(s)),
         needs(passNeeds(resolve.get(), post)),
-        config(planGBuffer(plan, needs, maxRenderSize(s))),
+        config(gbufferConfig(s, plan, needs, shadow.get())),
         targets(c, config),
         gbuffer(c, gpuScene, config),
         prev(c, needs, targets),
-        reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
+        reference(o.reference
+                      ? std::make_unique<ReferencePass>(c, s, gpuScene, shadow.get(), still.get())
+                      : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         uniformStride(taa::uniformStride(c)),
         frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
@@ -131,6 +171,17 @@ struct Renderer::State {
         readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
+    if (debugChannels)
+      debugChannelsOut = makePostImage(c, "debug_channels", {s.render.width, s.render.height});
+    if (still)
+      log.push_back("pass still_image (debug.image " + s.debug.image + ", " +
+                    spec::enumToString(s.debug.image_sampling) + ")");
+    if (shadow) {
+      const script::FrameState first = script::frameState(s, 0);
+      shadowDistance =
+          taa::shadowDistance(first.camera, casterBounds(sc, firstFrame));
+      log.push_back(shadow->describe());
+    }
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve)
       for (const auto& p : resolve->describe()) log.push_back(p);
@@ -177,11 +228,22 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   const FrameView view{cmd,    &s.timer, &state, &s.targets, &draws, s.frameUniforms.handle(),
                        lodBias};
   vk::Image* resolveInput = nullptr;
+  // One shadow atlas a frame, fitted to the (centre) camera: both eyes and the reference
+  // read the same shadows.
+  ShadowCascades shadows;
+  if (s.shadow) {
+    shadows = shadowCascades(s.spec.lighting, state.camera, casterBounds(s.scene, draws),
+                             s.shadowDistance);
+    s.timer.begin(cmd, "shadow");
+    s.shadow->record(cmd, shadows, draws, s.instances.handle());
+    s.timer.end(cmd);
+  }
   // Stereo renders the G-buffer, and resolves, once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
     const script::FrameState eyeState =
         eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
-    const gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
+    gpu::FrameUniforms uniforms = makeFrameUniforms(eyeState, s.spec.lighting);
+    setShadowUniforms(uniforms, shadows);
     const VkDeviceSize slot = s.uniformStride * VkDeviceSize(eye);
     std::memcpy(static_cast<uint8_t*>(s.frameUniforms.mapped()) + slot, &uniforms,
                 sizeof(uniforms));
@@ -189,6 +251,9 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.gbuffer.record(cmd, s.targets, draws, s.frameUniforms.handle(), slot, s.instances.handle(),
                      state.renderSize, lodBias);
     s.timer.end(cmd);
+    if (s.still)
+      s.still->record(cmd, s.targets.color, state.renderSize, state.jitter,
+                      s.spec.debug.image_sampling == spec::ImageSampling::Nearest);
     if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
     FrameView eyeView = view;
     eyeView.state = &eyeState;
@@ -212,12 +277,16 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.begin(cmd, "reference");
     for (int eye = 0; eye < eyes; ++eye)
       s.reference->record(cmd, eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), draws,
-                          s.instances.handle(), eye);
+                          s.instances.handle(), shadows, eye);
     s.timer.end(cmd);
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (vk::Image* v = s.resolve ? s.resolve->debugView() : nullptr) output = v;
   if (vk::Image* v = s.post.debugView()) output = v;
+  if (s.debugChannels) {
+    s.debugChannels->record(cmd, *output, s.debugChannelsOut, outSize);
+    output = &s.debugChannelsOut;
+  }
   const bool readOutput = readImages || s.options.hashEveryFrame;
   if (readOutput) {
     FrameSources src;

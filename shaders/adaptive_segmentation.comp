@@ -20,6 +20,7 @@ layout(constant_id = SEG_SPEC_TRACE_ALL) const bool kTraceAll = false;
 layout(constant_id = SEG_SPEC_FXAA) const bool kFxaa = true;
 layout(constant_id = SEG_SPEC_TRACE_DISOCCLUDED) const bool kTraceDisoccluded = false;
 layout(constant_id = SEG_SPEC_DEBUG) const bool kDebug = false;
+layout(constant_id = SEG_SPEC_FXAA_BORDER) const int kFxaaBorder = 0;
 
 layout(std140, binding = SEG_BINDING_UNIFORMS) uniform SegBlock { SegmentationUniforms seg; };
 layout(binding = SEG_BINDING_COLOR) uniform sampler2D colorTex;
@@ -98,6 +99,10 @@ void main() {
   if (marked) mark = ADAPTIVE_MASK_TRACE;
   else if (left > 0u) mark = ADAPTIVE_MASK_TRACE_HISTORY;
   else if (kFxaa && rejection != TAA_REJECT_NONE) mark = ADAPTIVE_MASK_FXAA;
+  // adaptive.fxaa_debug_border: the seed's debug frame, FXAA whatever else marked the pixel.
+  if (kFxaaBorder > 0 &&
+      (any(lessThan(p, ivec2(kFxaaBorder))) || any(greaterThanEqual(p, ivec2(seg.size.xy) - kFxaaBorder))))
+    mark = ADAPTIVE_MASK_FXAA;
   imageStore(counterImage, p, uvec4(marked ? historyCount : (left > 0u ? left - 1u : 0u)));
   imageStore(maskImage, p, uvec4(mark));
 

@@ -15,6 +15,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(constant_id = TRACE_SPEC_SAMPLES) const int kSamples = 4;
 layout(constant_id = TRACE_SPEC_RAY_LOD) const bool kRayLod = true;
+layout(constant_id = TRACE_SPEC_ANISO) const float kAniso = 1.0;
+layout(constant_id = TRACE_SPEC_LOD0_ALPHA) const bool kLod0Alpha = false;
 
 layout(std140, binding = TRACE_BINDING_FRAME) uniform FrameBlock { FrameUniforms frame; };
 layout(std140, binding = TRACE_BINDING_PARAMS) uniform TraceBlock { TraceUniforms trace; };
@@ -51,10 +53,27 @@ CameraRay cameraRay(vec2 pixel) {
 // lavapipe cannot index sampler arrays with a varying index (no
 // shaderSampledImageArrayDynamicIndexing), so each slot is a case with a constant one.
 // textureGrad has no bias argument; scaling the gradients by 2^bias adds bias to the LOD.
-#define TRACE_TEXTURE_CASE(i)                                                         \
-  case i:                                                                             \
-    return kRayLod ? textureGrad(textures[i], uv, dx * trace.params.x, dy * trace.params.x) \
-                   : textureLod(textures[i], uv, 0.0);
+// adaptive.aniso: shortens the longer gradient (measured in texels) by up to kAniso, so
+// the sampler's isotropic LOD follows the footprint's shorter axis; passes/adaptive/
+// ray_differentials.cpp mirrors it (anisotropicGradients).
+void anisotropicGradients(inout vec2 dx, inout vec2 dy, vec2 texels) {
+  float lx = length(dx * texels), ly = length(dy * texels);
+  float ratio = min(max(lx, ly) / max(min(lx, ly), 1e-30), kAniso);
+  if (lx >= ly)
+    dx /= ratio;
+  else
+    dy /= ratio;
+}
+
+#define TRACE_TEXTURE_CASE(i)                                                                \
+  case i: {                                                                                  \
+    vec2 gx = dx * trace.params.x, gy = dy * trace.params.x;                                 \
+    if (kAniso > 1.0) anisotropicGradients(gx, gy, vec2(textureSize(textures[i], 0)));       \
+    return kRayLod ? textureGrad(textures[i], uv, gx, gy) : textureLod(textures[i], uv, 0.0); \
+  }
+#define TRACE_TEXTURE_LOD0_CASE(i) \
+  case i:                          \
+    return textureLod(textures[i], uv, 0.0);
 
 vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {
   switch (slot) {
@@ -62,6 +81,16 @@ vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {
     TRACE_TEXTURE_CASE(4) TRACE_TEXTURE_CASE(5) TRACE_TEXTURE_CASE(6) TRACE_TEXTURE_CASE(7)
     TRACE_TEXTURE_CASE(8) TRACE_TEXTURE_CASE(9) TRACE_TEXTURE_CASE(10) TRACE_TEXTURE_CASE(11)
     TRACE_TEXTURE_CASE(12) TRACE_TEXTURE_CASE(13) TRACE_TEXTURE_CASE(14) TRACE_TEXTURE_CASE(15)
+  }
+  return vec4(1.0);
+}
+
+vec4 sampleTextureLod0(uint slot, vec2 uv) {
+  switch (slot) {
+    TRACE_TEXTURE_LOD0_CASE(0) TRACE_TEXTURE_LOD0_CASE(1) TRACE_TEXTURE_LOD0_CASE(2) TRACE_TEXTURE_LOD0_CASE(3)
+    TRACE_TEXTURE_LOD0_CASE(4) TRACE_TEXTURE_LOD0_CASE(5) TRACE_TEXTURE_LOD0_CASE(6) TRACE_TEXTURE_LOD0_CASE(7)
+    TRACE_TEXTURE_LOD0_CASE(8) TRACE_TEXTURE_LOD0_CASE(9) TRACE_TEXTURE_LOD0_CASE(10) TRACE_TEXTURE_LOD0_CASE(11)
+    TRACE_TEXTURE_LOD0_CASE(12) TRACE_TEXTURE_LOD0_CASE(13) TRACE_TEXTURE_LOD0_CASE(14) TRACE_TEXTURE_LOD0_CASE(15)
   }
   return vec4(1.0);
 }
@@ -89,7 +118,10 @@ vec3 traceSample(vec2 pixel) {
     TraceMaterial m = materials[triangles[h.tri].material];
     Surface s = surfaceAt(h, r, rx, ry);
     vec4 base = baseColor(m, s, h.tri);
-    if (m.alphaCutoff >= 0.0 && base.a < m.alphaCutoff) continue;  // the raster's discard
+    float testedAlpha = base.a;
+    if (kLod0Alpha && m.alphaCutoff >= 0.0)  // render.lod0_alpha_test, as the raster
+      testedAlpha = m.baseColor.a * sampleTextureLod0(m.texture, s.uv).a * (shading[h.tri].uv2.z != 0.0 ? s.color.a : 1.0);
+    if (m.alphaCutoff >= 0.0 && testedAlpha < m.alphaCutoff) continue;  // the raster's discard
     vec3 c = shadeBlinnPhong(base.rgb, s.normal, s.position, frame);
     if (m.emissive.rgb != vec3(0.0)) c += m.emissive.rgb;
     if (m.blend == 0u) return sum + transmit * c;

@@ -13,6 +13,10 @@ layout(binding = 1) uniform sampler2D albedoTex;
 layout(binding = 2) uniform sampler2D normalTex;
 layout(binding = 3) uniform sampler2D depthTex;
 layout(binding = 4, rgba16f) uniform image2D colorOut;
+#if defined(VARIANT_MASK) && (VARIANT_MASK & GBUF_OUTPUT_SHADOW) != 0
+#include "common/shadow.glsl"
+layout(binding = DEFERRED_BINDING_SHADOW) uniform sampler2DShadow shadowAtlas;
+#endif
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -28,7 +32,12 @@ void main() {
   vec2 ndc = (vec2(p) + 0.5 - frame.jitter.xy) * frame.renderSize.zw * 2.0 - 1.0;
   vec4 world = frame.invViewProjNoJitter * vec4(ndc, depth, 1.0);
   vec3 n = normalize(texelFetch(normalTex, p, 0).xyz);
+#if defined(VARIANT_MASK) && (VARIANT_MASK & GBUF_OUTPUT_SHADOW) != 0
+  vec3 pos = world.xyz / world.w;
+  vec3 c = shadeBlinnPhongShadowed(albedo.rgb, n, pos, frame, shadowVisibility(shadowAtlas, frame, pos, n));
+#else
   vec3 c = shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame);
+#endif
   vec3 emitted = imageLoad(colorOut, p).rgb;
   if (emitted != vec3(0.0)) c += emitted;
   imageStore(colorOut, p, vec4(c, 1.0));

@@ -156,6 +156,73 @@ std::string assetPathProblem(const std::string& value) {
   return "";
 }
 
+void validateLighting(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  if (glm::length(s.lighting.direction) <= 0.0f) p.add("lighting.direction", "must be non-zero");
+  if (present.count("lighting.cascades") && !s.lighting.shadows)
+    p.add("lighting.cascades",
+          "counts shadow cascades but lighting.shadows is off; set shadows to true or "
+          "remove the key");
+  // The tracer shades its hits without the shadow atlas, so its pixels would be lit where
+  // the raster's are shadowed.
+  if (s.lighting.shadows && s.taa.mode == TaaMode::Adaptive)
+    p.add("lighting.shadows",
+          "adaptive ray tracing shades its traced pixels without shadows; set taa.mode "
+          "to another mode or shadows to false");
+}
+
+// LOD matching (seed 000's "always use lod 0", "use lod 0 for alpha test", "aniso"): each
+// key only where it changes a lookup.
+void validateLod(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  if (s.render.lod0 && present.count("material.lod_bias"))
+    p.add("material.lod_bias",
+          "render.lod0 samples mip 0, which no bias moves; remove one of the two");
+  if (s.render.lod0 && s.render.lod0_alpha_test)
+    p.add("render.lod0_alpha_test",
+          "render.lod0 already tests alpha at mip 0; remove one of the two");
+  if (s.render.lod0 && present.count("adaptive.ray_lod") && s.adaptive.ray_lod)
+    p.add("adaptive.ray_lod",
+          "render.lod0 makes the tracer sample mip 0 too; remove adaptive.ray_lod");
+  if (present.count("adaptive.aniso") && (!s.adaptive.ray_lod || s.render.lod0))
+    p.add("adaptive.aniso",
+          "shapes the ray-differential LOD, which is off (adaptive.ray_lod false or "
+          "render.lod0); remove it or turn the LOD approximation on");
+}
+
+// debug.image replaces the scene's colour by a still image: nothing may move (the depth and
+// velocity the resolve reprojects with are the hidden scene's), and only the raster's
+// colour is replaced.
+void validateStillImage(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  if (s.debug.image.empty()) {
+    if (present.count("debug.image_sampling"))
+      p.add("debug.image_sampling",
+            "samples debug.image, which is not set; set it or remove the key");
+    return;
+  }
+  checkAssetPath(p, "debug.image", s.debug.image);
+  const auto& cam = s.camera;
+  const bool moves = !cam.path.points.empty() || cam.rotate.yaw_deg_per_s != 0.0f ||
+                     cam.rotate.pitch_deg_per_s != 0.0f || cam.bob.amplitude != 0.0f ||
+                     cam.strafe.speed != 0.0f || !cam.track.empty() || !cam.cuts.empty();
+  if (moves)
+    p.add("debug.image",
+          "upsamples a still image, but the camera moves; remove camera.path, rotate, bob, strafe, "
+          "track and cuts");
+  if (!s.movers.empty()) p.add("debug.image", "upsamples a still image; remove the movers");
+  if (s.taa.mode == TaaMode::Adaptive || s.taa.mode == TaaMode::Tscmaa)
+    p.add("debug.image",
+          "replaces the raster's colour only; adaptive tracing and TSCMAA would not see it, set "
+          "taa.mode to full, accumulate or off");
+}
+
+void validateDebugChannels(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  if (!present.count("debug.channels")) return;
+  if (s.debug.output == DebugOutput::None)
+    p.add("debug.channels",
+          "picks channels of a debug view, but debug.output is none; set it or remove the key");
+  if (s.debug.channels.empty())
+    p.add("debug.channels", "is empty; list at least one of r, g, b, a");
+}
+
 void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   Problems p(spec.file.string());
   const int frames = spec.script.frames;
@@ -172,7 +239,14 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
       if (present.count(k))
         p.add(k, "only a glTF scene has animations; remove it or set scene.gltf");
   }
-  if (glm::length(spec.lighting.direction) <= 0.0f) p.add("lighting.direction", "must be non-zero");
+  validateLighting(p, spec, present);
+  validateLod(p, spec, present);
+  validateStillImage(p, spec, present);
+  validateDebugChannels(p, spec, present);
+  if (present.count("adaptive.fxaa_debug_border") && !spec.adaptive.fxaa_out_of_history)
+    p.add("adaptive.fxaa_debug_border",
+          "marks pixels for FXAA, which adaptive.fxaa_out_of_history turns off; "
+          "set it to true or remove the key");
   validateRender(p, spec.render);
   validateCamera(p, spec.camera, frames);
   validateMovers(p, spec.movers, present);

@@ -62,10 +62,12 @@ std::vector<VkFormat> colorFormats(const GBufferConfig& c) {
   return f;
 }
 
-// The fragment-shader variant declaring exactly the allocated outputs.
-std::string variant(const char* shader, const GBufferConfig& c) {
+// The fragment-shader variant declaring exactly the allocated outputs (and, for the
+// scene's surfaces with lighting.shadows, the shadow atlas).
+std::string variant(const char* shader, const GBufferConfig& c, bool shadowed = false) {
   const int mask = (c.velocity ? GBUF_OUTPUT_VELOCITY : 0) | (c.normal ? GBUF_OUTPUT_NORMAL : 0) |
-                   (c.ids ? GBUF_OUTPUT_IDS : 0) | (c.deferred ? GBUF_OUTPUT_ALBEDO : 0);
+                   (c.ids ? GBUF_OUTPUT_IDS : 0) | (c.deferred ? GBUF_OUTPUT_ALBEDO : 0) |
+                   (shadowed ? GBUF_OUTPUT_SHADOW : 0);
   return std::string(shader) + "." + std::to_string(mask);
 }
 
@@ -141,8 +143,10 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
       pointClamp_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   vk::GraphicsDesc d;
   d.vertexShader = "gbuffer.vert";
-  d.fragmentShader = variant("gbuffer.frag", config);
-  d.spec.set(GBUF_SPEC_DEFERRED, config.deferred);
+  d.fragmentShader = variant("gbuffer.frag", config, config.shadowAtlas != nullptr);
+  d.spec.set(GBUF_SPEC_DEFERRED, config.deferred)
+      .set(GBUF_SPEC_LOD0, config.lod0)
+      .set(GBUF_SPEC_LOD0_ALPHA, config.lod0AlphaTest);
   d.colorFormats = colorFormats(config);
   d.depthFormat = kDepth;
   // Back faces stay: foliage cards, fences and glTF double-sided materials are
@@ -154,7 +158,10 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   // Blended surfaces are shaded forward even on the deferred path (after lighting),
   // test depth without writing it, and leave the other targets alone.
   vk::GraphicsDesc b = d;
-  b.spec = vk::SpecConstants().set(GBUF_SPEC_DEFERRED, false);
+  b.spec = vk::SpecConstants()
+               .set(GBUF_SPEC_DEFERRED, false)
+               .set(GBUF_SPEC_LOD0, config.lod0)
+               .set(GBUF_SPEC_LOD0_ALPHA, config.lod0AlphaTest);
   b.depthWrite = false;
   b.blendFirstAttachment = true;
   blended_ = vk::createGraphicsPipeline(ctx, "gbuffer_blend", b);
@@ -167,7 +174,10 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   s.depthCompare = VK_COMPARE_OP_EQUAL;  // only where no geometry moved depth off the far plane
   sky_ = vk::createGraphicsPipeline(ctx, "sky", s);
 
-  if (config.deferred) lighting_ = vk::createComputePipeline(ctx, "deferred_lighting.comp");
+  if (config.deferred)
+    lighting_ = vk::createComputePipeline(
+        ctx, config.shadowAtlas ? "deferred_lighting.comp." + std::to_string(GBUF_OUTPUT_SHADOW)
+                                : std::string("deferred_lighting.comp"));
 }
 
 void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
@@ -191,12 +201,18 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
       boundBuffer = buffer;
     }
     if (prim.material != boundMaterial) {
-      vk::Bindings()
-          .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
+      vk::Bindings b;
+      b.uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
           .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
-          .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(prim.material), scene_.sampler(prim.material))
-          .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0, VK_WHOLE_SIZE)
-          .push(ctx_, cmd, pipeline);
+          .sampled(GBUF_BINDING_TEXTURE, scene_.textureView(prim.material),
+                   scene_.sampler(prim.material))
+          .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0,
+                         VK_WHOLE_SIZE)
+          .sampled(GBUF_BINDING_NORMAL_MAP, scene_.normalView(prim.material),
+                   scene_.normalSampler(prim.material));
+      if (config_.shadowAtlas)
+        b.sampled(GBUF_BINDING_SHADOW, config_.shadowAtlas->view(), config_.shadowSampler);
+      b.push(ctx_, cmd, pipeline);
       boundMaterial = prim.material;
     }
     gpu::DrawPush push{};
@@ -205,7 +221,9 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
     push.alphaCutoff = material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     push.lodBias = lodBias;
     push.baseColor = material.baseColorFactor;
-    push.emissive = glm::vec4(material.emissive, 0.0f);
+    push.emissive = glm::vec4(material.emissive, material.normalTexture >= 0
+                                                     ? config_.normalStrength * material.normalScale
+                                                     : 0.0f);
     pipeline.pushConstants(cmd, &push, sizeof(push));
     vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                      draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);
@@ -240,6 +258,7 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
     color[i].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   }
   color[GBUF_OUT_IDS].clearValue.color.uint32[0] = 0xffffffffu;
+  if (config_.shadowAtlas) barriers.use(*config_.shadowAtlas, vk::Use::SampledGraphics);
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -292,6 +311,7 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
     vkCmdEndRendering(cmd);
     lightDeferred(cmd, t, f, size);
     barriers.use(t.depth, vk::Use::DepthAttachment);
+    if (config_.shadowAtlas) barriers.use(*config_.shadowAtlas, vk::Use::SampledGraphics);
     for (int i = 0; i < GBUF_OUT_COUNT; ++i) {
       color[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
       if (*outputs[i]) barriers.use(*outputs[i], vk::Use::ColorAttachment);
@@ -307,13 +327,15 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
 }
 
 void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, const Frame& f, glm::ivec2 size) {
-  vk::Dispatch(lighting_)
-      .uniform(0, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
+  vk::Dispatch d(lighting_);
+  d.uniform(0, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .sample(1, t.albedo, pointClamp_.handle())
       .sample(2, t.normal, pointClamp_.handle())
       .sample(3, t.depth, pointClamp_.handle())
-      .store(4, t.color)
-      .record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
+      .store(4, t.color);
+  if (config_.shadowAtlas)
+    d.sample(DEFERRED_BINDING_SHADOW, *config_.shadowAtlas, config_.shadowSampler);
+  d.record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
 }
 
 }  // namespace taa

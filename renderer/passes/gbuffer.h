@@ -23,6 +23,13 @@ struct GBufferConfig {
   bool ids = false;
   bool deferred = false;  // albedo target + deferred lighting pass
   uint32_t samples = 1;   // render.msaa; forward only (validation refuses it with deferred)
+  // lighting.shadows: shading samples this atlas (renderer/passes/shadow.h) through
+  // `shadowSampler`.
+  vk::Image* shadowAtlas = nullptr;
+  VkSampler shadowSampler = VK_NULL_HANDLE;
+  float normalStrength = 1.0f;  // material.normal_strength
+  bool lod0 = false;            // render.lod0
+  bool lod0AlphaTest = false;   // render.lod0_alpha_test
 };
 
 // Throws UnsupportedSettingError naming render.msaa and the counts the device offers

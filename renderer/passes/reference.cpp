@@ -13,8 +13,15 @@ namespace taa {
 
 namespace {
 
-GBufferConfig referenceConfig(const spec::CaseSpec& spec) {
+GBufferConfig referenceConfig(const spec::CaseSpec& spec, ShadowPass* shadow) {
   GBufferConfig c;
+  if (shadow) {
+    c.shadowAtlas = &shadow->atlas();
+    c.shadowSampler = shadow->sampler();
+  }
+  c.normalStrength = spec.material.normal_strength;
+  c.lod0 = spec.render.lod0;
+  c.lod0AlphaTest = spec.render.lod0_alpha_test;
   c.width = uint32_t(spec.render.width);
   c.height = uint32_t(spec.render.height);
   c.deferred = spec.render.path == spec::RenderPath::Deferred;
@@ -51,15 +58,17 @@ std::vector<glm::vec2> referenceOffsets(int count) {
   return out;
 }
 
-ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene)
+ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+                             ShadowPass* shadow, StillImagePass* still)
     : ctx_(ctx),
       spec_(spec),
       offsets_(referenceOffsets(spec.reference.samples)),
-      config_(referenceConfig(spec)),
+      config_(referenceConfig(spec, shadow)),
       targets_(ctx, config_),
       gbuffer_(ctx, scene, config_),
       accumulate_(vk::createComputePipeline(ctx, "reference_accumulate.comp")),
-      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+      point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
+      still_(still) {
   vk::ImageDesc d;
   d.name = "reference";
   d.width = config_.width * uint32_t(eyeCount(spec));
@@ -76,7 +85,8 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
 }
 
 void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
-                           const DrawList& draws, VkBuffer instances, int eye) {
+                           const DrawList& draws, VkBuffer instances, const ShadowCascades& shadows,
+                           int eye) {
   const glm::ivec2 size(spec_.render.width, spec_.render.height);
   // The same instant as the frame, without the frame's jitter and at output size.
   script::FrameState sub = state;
@@ -85,12 +95,16 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
   for (size_t i = 0; i < offsets_.size(); ++i) {
     sub.jitter = offsets_[i];
     sub.jitteredProjection = script::applyJitter(state.camera.projection, offsets_[i], size);
-    const gpu::FrameUniforms u = makeFrameUniforms(sub, spec_.lighting);
+    gpu::FrameUniforms u = makeFrameUniforms(sub, spec_.lighting);
+    setShadowUniforms(u, shadows);
     std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + (first + i) * stride_, &u, sizeof(u));
   }
   for (size_t i = 0; i < offsets_.size(); ++i) {
-    gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances,
-                    size, 0.0f);
+    if (still_)
+      still_->record(cmd, targets_.color, size, offsets_[i], true);
+    else
+      gbuffer_.record(cmd, targets_, draws, uniforms_.handle(), (first + i) * stride_, instances,
+                      size, 0.0f);
     const uint32_t mode = (i > 0 ? 1u : 0u) | (i + 1 == offsets_.size() ? 2u : 0u);
     const AccumulatePush push{size.x, size.y, mode, 1.0f / float(offsets_.size()), eye * size.x};
     vk::Dispatch(accumulate_)

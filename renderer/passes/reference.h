@@ -8,6 +8,8 @@
 #include "draw_list.h"
 #include "gpu_scene.h"
 #include "passes/gbuffer.h"
+#include "passes/shadow.h"
+#include "passes/still_image.h"
 #include "script/frame_state.h"
 #include "spec/case_spec.h"
 #include "vk/pipeline.h"
@@ -22,12 +24,16 @@ std::vector<glm::vec2> referenceOffsets(int count);
 
 class ReferencePass {
  public:
-  ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene);
+  // `shadow`: the frame's shadow atlas (lighting.shadows), which the reference samples too.
+  // `still` (debug.image): each sub-sample is the still image's nearest texel, so the
+  // reference is the full-size image itself.
+  ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
+                ShadowPass* shadow = nullptr, StillImagePass* still = nullptr);
 
   // Records every sub-sample render and the average for this frame, seen from `eye`
   // (stereo TSCMAA: each eye fills its half of the side-by-side output).
   void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
-              VkBuffer instances, int eye = 0);
+              VkBuffer instances, const ShadowCascades& shadows = {}, int eye = 0);
   vk::Image& output() { return accum_; }
   int samples() const { return int(offsets_.size()); }
 
@@ -43,6 +49,7 @@ class ReferencePass {
   vk::Buffer uniforms_;  // one FrameUniforms block per sub-sample and eye
   VkDeviceSize stride_ = 0;
   vk::Sampler point_;
+  StillImagePass* still_ = nullptr;
 };
 
 }  // namespace taa

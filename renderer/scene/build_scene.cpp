@@ -1,5 +1,8 @@
 #include "scene/build_scene.h"
 
+#include <algorithm>
+
+#include "core/image_io.h"
 #include "core/input_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural.h"
@@ -76,6 +79,63 @@ void applyAlphaOverride(Scene& scene, spec::AlphaMode mode, float cutoff) {
   }
 }
 
+namespace {
+// material.normal_strength acts only on normal-mapped materials, and only where the raster
+// shades: the tracer has no normal maps, so its pixels would disagree with the raster's.
+void checkNormalStrength(const spec::CaseSpec& spec, const Scene& scene) {
+  const bool mapped = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                  [](const Material& m) { return m.normalTexture >= 0; });
+  if (!mapped && spec.material.normal_strength != 1.0f)
+    throw SceneError(
+        spec.file,
+        "material.normal_strength: no material of the scene has a normalTexture, so it "
+        "would change nothing; remove the key or use a normal-mapped glTF");
+  if (mapped && spec.material.normal_strength > 0.0f && spec.taa.mode == spec::TaaMode::Adaptive)
+    throw SceneError(
+        spec.file,
+        "material.normal_strength: adaptive ray tracing shades its traced pixels without "
+        "normal maps; set material.normal_strength to 0 or taa.mode to another mode");
+}
+
+// render.lod0 acts on textured materials, render.lod0_alpha_test on alpha-tested ones.
+void checkLodMatching(const spec::CaseSpec& spec, const Scene& scene) {
+  const auto any = [&](auto pred) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(), pred);
+  };
+  if (spec.render.lod0 &&
+      !any([](const Material& m) { return m.baseColorTexture >= 0 || m.normalTexture >= 0; }))
+    throw SceneError(spec.file,
+                     "render.lod0: no material of the scene has a texture, so it would change "
+                     "nothing; remove the key");
+  if (spec.render.lod0_alpha_test && !any([&](const Material& m) {
+        return m.alphaMode == AlphaMode::Mask && m.baseColorTexture >= 0;
+      }))
+    throw SceneError(
+        spec.file,
+        "render.lod0_alpha_test: no material of the scene is alpha-tested with a texture, "
+        "so it would change nothing; remove the key or use such a scene (foliage)");
+}
+
+// debug.image: read once here, so a missing or unreadable file is a case problem (exit 2).
+Image loadStillImage(const spec::CaseSpec& spec) {
+  const std::filesystem::path path = resolve(spec, "debug.image", spec.debug.image);
+  Image image;
+  try {
+    image = readImage(path);
+  } catch (const std::exception& e) {
+    throw SceneError(spec.file, std::string("debug.image: ") + e.what());
+  }
+  if (image.width != spec.render.width || image.height != spec.render.height)
+    throw SceneError(spec.file, "debug.image: '" + spec.debug.image + "' is " +
+                                    std::to_string(image.width) + "x" +
+                                    std::to_string(image.height) + " but the output is " +
+                                    std::to_string(spec.render.width) + "x" +
+                                    std::to_string(spec.render.height) +
+                                    "; set render.width and render.height to the image's size");
+  return image;
+}
+}  // namespace
+
 Scene buildScene(const spec::CaseSpec& spec) {
   Scene scene;
   try {
@@ -103,6 +163,9 @@ Scene buildScene(const spec::CaseSpec& spec) {
     }
   }
   applyAlphaOverride(scene, spec.material.alpha_mode, spec.material.alpha_cutoff);
+  checkNormalStrength(spec, scene);
+  checkLodMatching(spec, scene);
+  if (!spec.debug.image.empty()) scene.still = loadStillImage(spec);
   return scene;
 }
 

@@ -1,6 +1,7 @@
 #include "scene/gltf_convert.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -30,8 +31,10 @@ class Converter {
   std::vector<uint32_t> readIndices(int index, const std::string& what) {
     return readGltfIndices(file_, g_, index, what);
   }
-  int texture(int index, const std::string& what);
+  // `linear`: data rather than colour (a normal map), cached apart from a colour use.
+  int texture(int index, const std::string& what, bool linear = false);
   int material(int index);
+  void normalTexture(int index, const tinygltf::Material& gm, const std::string& name, Material& m);
   int mesh(int index);
   void addNode(int root, Model& model);
   void addOneNode(int index, int parent, Model& model);
@@ -45,11 +48,12 @@ class Converter {
   std::map<int, glm::mat3> uvTransforms_;  // per glTF material: its base colour's UV transform
 };
 
-int Converter::texture(int index, const std::string& what) {
-  if (auto it = textures_.find(index); it != textures_.end()) return it->second;
+int Converter::texture(int index, const std::string& what, bool linear) {
+  const int key = linear ? -2 - index : index;
+  if (auto it = textures_.find(key); it != textures_.end()) return it->second;
   if (index < 0 || size_t(index) >= g_.textures.size()) fail(what + " refers to a missing texture");
   const tinygltf::Texture& t = g_.textures[size_t(index)];
-  if (t.source < 0) return textures_[index] = -1;  // only an extension's image (e.g. KTX2)
+  if (t.source < 0) return textures_[key] = -1;  // only an extension's image (e.g. KTX2)
   const std::string tex = "textures[" + std::to_string(index) + "]";
   if (size_t(t.source) >= g_.images.size())
     fail(tex + ".source " + std::to_string(t.source) + " refers to a missing image (the file has " +
@@ -87,8 +91,31 @@ int Converter::texture(int index, const std::string& what) {
     repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
                sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
   }
-  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), repeat));
-  return textures_[index] = int(s_.textures.size()) - 1;
+  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), repeat, linear));
+  return textures_[key] = int(s_.textures.size()) - 1;
+}
+
+// The UVs are shared (the base colour's KHR_texture_transform is baked into them), so a
+// normal texture must use TEXCOORD_0 and the same transform as the base colour.
+void Converter::normalTexture(int index, const tinygltf::Material& gm, const std::string& name,
+                              Material& m) {
+  const tinygltf::NormalTextureInfo& info = gm.normalTexture;
+  if (info.index < 0) return;
+  if (info.texCoord != 0)
+    fail(name + ".normalTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
+         "; only TEXCOORD_0 is supported, re-export with one UV set");
+  const glm::mat3 own = gltfTextureTransform(file_, info.extensions, name + ".normalTexture");
+  const auto base = uvTransforms_.find(index);
+  const glm::mat3 shared = base != uvTransforms_.end() ? base->second : glm::mat3(1.0f);
+  if (own != shared)
+    fail(name +
+         ".normalTexture has another KHR_texture_transform than the base colour; the two share "
+         "one set of UVs here, give both the same transform");
+  if (base == uvTransforms_.end() && own != glm::mat3(1.0f)) uvTransforms_[index] = own;
+  if (!std::isfinite(info.scale))
+    fail(name + ".normalTexture.scale is not a finite number; give a number such as 1");
+  m.normalTexture = texture(info.index, name + ".normalTexture", true);
+  m.normalScale = float(info.scale);
 }
 
 int Converter::material(int index) {
@@ -118,6 +145,7 @@ int Converter::material(int index) {
       m.alphaMode = AlphaMode::Blend;
     else if (gm.alphaMode != "OPAQUE" && !gm.alphaMode.empty())
       fail(name + ".alphaMode '" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
+    normalTexture(index, gm, name, m);
     m.alphaCutoff = float(gm.alphaCutoff);
     m.doubleSided = gm.doubleSided;
     std::string note;

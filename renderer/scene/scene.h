@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
+
 namespace taa::scene {
 
 struct Vertex {
@@ -31,6 +33,8 @@ struct Texture {
   };
   std::vector<Level> levels;
   bool repeat = true;  // wrap mode; false clamps to edge
+  // Data, not colour (normal maps): uploaded as UNORM, mips average the stored values.
+  bool linear = false;
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -44,6 +48,10 @@ struct Material {
   // Linear radiance added to the shaded colour: glTF emissiveFactor times
   // KHR_materials_emissive_strength (0 for every material that does not glow).
   glm::vec3 emissive{0.0f};
+  // glTF normalTexture (a linear texture, tangent space, +Y towards the image's top) and
+  // its scale; -1: none.
+  int normalTexture = -1;
+  float normalScale = 1.0f;
 };
 
 // A run of indices drawn with one material.
@@ -149,6 +157,8 @@ struct Scene {
   // What loading left out, one line per file (e.g. extensions used but not supported);
   // the renderer logs them so the run log and the report show them.
   std::vector<std::string> notes;
+  // debug.image: the still image (RGBA, output size) that replaces the rendered colour.
+  Image still;
 };
 
 // One mesh to draw with its model-space transform. A skinned mesh is posed in model

@@ -38,7 +38,7 @@ std::vector<std::vector<Tap>> boxTaps(int src, int dst) {
   return taps;
 }
 
-Texture::Level reduce(const Texture::Level& src) {
+Texture::Level reduce(const Texture::Level& src, bool linear) {
   Texture::Level dst;
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
@@ -54,7 +54,7 @@ Texture::Level reduce(const Texture::Level& src) {
         for (const Tap& t : tx[size_t(x)]) {
           const uint8_t v =
               src.rgba[(size_t(y) * size_t(src.width) + size_t(t.source)) * 4 + size_t(c)];
-          sum += t.weight * (c < 3 ? lut[v] : v / 255.0);
+          sum += t.weight * (c < 3 && !linear ? lut[v] : v / 255.0);
         }
         row[(size_t(y) * size_t(dst.width) + size_t(x)) * 4 + size_t(c)] = sum;
       }
@@ -68,7 +68,8 @@ Texture::Level reduce(const Texture::Level& src) {
           sum += t.weight * row[(size_t(t.source) * size_t(dst.width) + size_t(x)) * 4 + size_t(c)];
         const double v = sum / norm;
         dst.rgba[(size_t(y) * size_t(dst.width) + size_t(x)) * 4 + size_t(c)] =
-            c < 3 ? linearToSrgb8(v) : uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+            c < 3 && !linear ? linearToSrgb8(v)
+                             : uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
       }
   return dst;
 }
@@ -155,13 +156,14 @@ void generateMips(Texture& texture) {
   assert(!texture.levels.empty());
   texture.levels.resize(1);
   while (texture.levels.back().width > 1 || texture.levels.back().height > 1)
-    texture.levels.push_back(reduce(texture.levels.back()));
+    texture.levels.push_back(reduce(texture.levels.back(), texture.linear));
 }
 
-Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat) {
+Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat, bool linear) {
   assert(width > 0 && height > 0 && rgba.size() == size_t(width) * size_t(height) * 4);
   Texture t;
   t.repeat = repeat;
+  t.linear = linear;
   t.levels.push_back({width, height, std::move(rgba)});
   generateMips(t);
   return t;

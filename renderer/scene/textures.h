@@ -27,14 +27,16 @@ uint32_t hash3(uint32_t x, uint32_t y, uint32_t seed);
 float hashUnit(uint32_t h);
 
 // Replaces levels[1..] with a chain computed from levels[0] down to 1x1. Colour is
-// averaged in linear light and re-encoded; alpha is averaged as stored. A level of
+// averaged in linear light and re-encoded; alpha (and every channel of a `linear`
+// texture, such as a normal map) is averaged as stored. A level of
 // odd size is reduced by an area-weighted box over each destination texel's
 // footprint (1.5 source texels wide when 3 -> 1 etc.), which is exactly the 2x2 box
 // for even sizes and never drops a source row or column.
 void generateMips(Texture& texture);
 
 // A texture with one level taken from `rgba` (width * height * 4 bytes) plus its mips.
-Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat = true);
+Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat = true,
+                    bool linear = false);
 
 // Whether any texel of level 0 has alpha below 255.
 bool hasTranslucentTexels(const Texture& texture);

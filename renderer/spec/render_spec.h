@@ -29,6 +29,8 @@ struct RenderSpec {
   RenderPath path = RenderPath::Forward;
   int msaa = 1;  // samples per pixel of the raster pass: 1, 2, 4 or 8, as the device allows
   std::vector<ScaleKey> scale_schedule;
+  bool lod0 = false;
+  bool lod0_alpha_test = false;
 };
 
 template <class V>
@@ -48,6 +50,18 @@ void fields(V& v, RenderSpec& s) {
   v.list("scale_schedule", s.scale_schedule,
          Meta{"dynamic resolution: piecewise-constant render scale from each key's frame on",
               "renderer/script/frame_state.cpp"});
+  v.field(
+      "lod0", s.lod0,
+      Meta{
+          "LOD matching: every texture lookup samples mip 0 (raster, reference and tracer), as the "
+          "seed's 'always use lod 0' matches a tracer without LOD approximation",
+          "shaders/gbuffer.frag"});
+  v.field(
+      "lod0_alpha_test", s.lod0_alpha_test,
+      Meta{
+          "LOD matching: alpha-tested materials test the alpha of mip 0 (colour keeps its mip), in "
+          "the raster, the shadow casters and the tracer",
+          "shaders/gbuffer.frag"});
 }
 
 enum class AuxBuffer { Depth, Velocity, Normal, MaterialId };

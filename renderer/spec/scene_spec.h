@@ -50,6 +50,8 @@ struct LightingSpec {
   glm::vec3 ambient{0.12f, 0.13f, 0.15f};
   float specular = 0.25f;
   float shininess = 32.0f;
+  bool shadows = false;  // cascaded shadow maps for the directional light
+  int cascades = 3;
 };
 
 template <class V>
@@ -62,6 +64,16 @@ void fields(V& v, LightingSpec& s) {
   v.field("ambient", s.ambient, Meta{"ambient light (linear RGB)", impl});
   v.field("specular", s.specular, Range<float>{0.0f, 1.0e6f}, Meta{"Blinn-Phong specular weight", impl});
   v.field("shininess", s.shininess, Range<float>{1.0f, 4096.0f}, Meta{"Blinn-Phong exponent", impl});
+  v.field(
+      "shadows", s.shadows,
+      Meta{"the directional light casts shadows: cascaded shadow maps, 3x3 bilinear PCF (forward, "
+           "deferred and the reference alike)",
+           "renderer/passes/shadow.cpp"});
+  v.field(
+      "cascades", s.cascades, Range<int>{1, 4},
+      Meta{"shadow cascades: view-depth slices from the near plane to the scene's far side, split "
+           "half logarithmic, half uniform; each a 1024x1024 depth map (needs shadows)",
+           "renderer/shadow_cascades.cpp"});
 }
 
 enum class AlphaMode { Asset, Mask, Blend };
@@ -73,6 +85,7 @@ struct MaterialSpec {
   bool lod_bias_taa_only = true;
   AlphaMode alpha_mode = AlphaMode::Asset;
   float alpha_cutoff = 0.5f;
+  float normal_strength = 1.0f;
 };
 
 template <class V>
@@ -86,6 +99,10 @@ void fields(V& v, MaterialSpec& s) {
           Meta{"transparent materials: as the asset says, alpha test (mask) or alpha blend", impl});
   v.field("alpha_cutoff", s.alpha_cutoff, Range<float>{0.0f, 1.0f},
           Meta{"alpha-test threshold when alpha_mode forces mask", impl});
+  v.field("normal_strength", s.normal_strength, Range<float>{0.0f, 8.0f},
+          Meta{"scales the tilt of glTF normal textures (times each texture's own scale; 0: flat); "
+               "tangents are derived per pixel from position and UV derivatives",
+               "shaders/common/normal_map.glsl"});
 }
 
 }  // namespace taa::spec

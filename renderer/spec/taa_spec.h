@@ -2,6 +2,9 @@
 // debug views. Every switch here becomes a specialization constant of a pass.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "common/taa_settings.h"
 #include "spec/fields.h"
 
@@ -90,7 +93,9 @@ struct AdaptiveSpec {
   bool fxaa_out_of_history = true;
   bool trace_disoccluded = false;
   bool ray_lod = true;
+  float aniso = 1.0f;
   bool trace_all = false;
+  int fxaa_debug_border = 0;
 };
 
 template <class V>
@@ -138,7 +143,18 @@ void fields(V& v, AdaptiveSpec& s) {
                "the raster's "
                "mip selection; false samples mip 0",
                trace});
+  v.field(
+      "aniso", s.aniso, Range<float>{1.0f, 16.0f},
+      Meta{"anisotropy of the ray-differential LOD: the longer UV gradient is shortened by up to "
+           "this ratio, so the LOD follows the footprint's shorter axis (1: isotropic, the "
+           "raster's choice)",
+           trace});
   v.field("trace_all", s.trace_all, Meta{"debug: trace every pixel", seg});
+  v.field(
+      "fxaa_debug_border", s.fxaa_debug_border, Range<int>{0, 4096},
+      Meta{"debug (the seed's 'Fxaa dbg.'): a border this many output pixels wide is always marked "
+           "for FXAA (0: none)",
+           seg});
 }
 
 // TSCMAA (taa.mode tscmaa): CMAA on the edge pixels of a luma edge detection, then TAA
@@ -220,9 +236,21 @@ void fields(V& v, PostSpec& s) {
                "shaders/motion_blur.comp"});
 }
 
+enum class ImageSampling { Bilinear, Nearest };
+TAA_ENUM_NAMES(ImageSampling, {ImageSampling::Bilinear, "bilinear"},
+               {ImageSampling::Nearest, "nearest"})
+
+enum class DebugChannel { R, G, B, A };
+TAA_ENUM_NAMES(DebugChannel, {DebugChannel::R, "r"}, {DebugChannel::G, "g"}, {DebugChannel::B, "b"},
+               {DebugChannel::A, "a"})
+
 struct DebugSpec {
   DebugOutput output = DebugOutput::None;
+  std::vector<DebugChannel> channels{DebugChannel::R, DebugChannel::G, DebugChannel::B,
+                                     DebugChannel::A};
   float scale = 1.0f;
+  std::string image;  // still-image upsampling: relative to the case file
+  ImageSampling image_sampling = ImageSampling::Bilinear;
 };
 
 template <class V>
@@ -236,6 +264,20 @@ void fields(V& v, DebugSpec& s) {
                "shaders/taa_resolve.comp"});
   v.field("scale", s.scale, Range<float>{1e-6f, 1e6f},
           Meta{"multiplier of the debug values", "shaders/taa_resolve.comp"});
+  v.field(
+      "channels", s.channels,
+      Meta{"channels of the debug view shown (the seed's R, G, B, A toggles); the others read 0 "
+           "(alpha 1)",
+           "shaders/debug_channels.comp"});
+  v.field(
+      "image", s.image,
+      Meta{"still-image upsampling (the seed's Debug/image mode): this image (PNG or EXR, output "
+           "size, relative to the case file) replaces the scene's colour, sampled at each render "
+           "pixel's jittered position; the reference is the image itself",
+           "shaders/still_image.comp"});
+  v.field("image_sampling", s.image_sampling,
+          Meta{"how the still image is sampled at render resolution: bilinear or nearest",
+               "shaders/still_image.comp"});
 }
 
 }  // namespace taa::spec

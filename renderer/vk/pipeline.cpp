@@ -374,6 +374,10 @@ Sampler::Sampler(Context& ctx, VkFilter filter, VkSamplerAddressMode address, fl
   VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
 }
 
+Sampler::Sampler(Context& ctx, const VkSamplerCreateInfo& info) : device_(ctx.device()) {
+  VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
+}
+
 Sampler::~Sampler() {
   if (device_) vkDestroySampler(device_, sampler_, nullptr);
 }

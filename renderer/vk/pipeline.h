@@ -128,6 +128,8 @@ class Sampler {
  public:
   Sampler() = default;
   Sampler(Context& ctx, VkFilter filter, VkSamplerAddressMode address, float maxLod = 0.0f, bool mipLinear = false);
+  // Any other sampler (e.g. a depth-comparison sampler for shadow maps).
+  Sampler(Context& ctx, const VkSamplerCreateInfo& info);
   ~Sampler();
   Sampler(Sampler&& o) noexcept;
   Sampler& operator=(Sampler&& o) noexcept;

@@ -25,6 +25,8 @@ using uint = uint32_t;
 #define GBUF_BINDING_INSTANCES 1
 #define GBUF_BINDING_TEXTURE 2
 #define GBUF_BINDING_PREV_POSITIONS 3  // deformed vertices' positions at frame - 1
+#define GBUF_BINDING_SHADOW 4          // shadow atlas (GBUF_OUTPUT_SHADOW variants only)
+#define GBUF_BINDING_NORMAL_MAP 5      // normal texture (read when DrawPush emissive.w != 0)
 
 // Fragment outputs; a case allocates only the targets it needs and the rest are discarded.
 #define GBUF_OUT_COLOR 0
@@ -39,8 +41,26 @@ using uint = uint32_t;
 #define GBUF_OUTPUT_NORMAL 2
 #define GBUF_OUTPUT_IDS 4
 #define GBUF_OUTPUT_ALBEDO 8
+#define GBUF_OUTPUT_SHADOW 16  // not an output: samples the shadow atlas (lighting.shadows)
+
+// ---- Cascaded shadow maps (shadow_depth.vert/.frag; read by common/shadow.glsl) ----
+#define SHADOW_MAX_CASCADES 4
+#define SHADOW_BINDING_INSTANCES 0
+#define SHADOW_BINDING_TEXTURE 1   // base colour, for alpha-tested casters
+#define DEFERRED_BINDING_SHADOW 5  // deferred_lighting.comp's shadow atlas (shadowed variant)
+
+TAA_BLOCK(ShadowPush) {
+  mat4 lightViewProj;  // world -> the cascade's clip space (orthographic, depth 0 at the light)
+  uint instance;
+  float alphaCutoff;  // < 0: no alpha test
+  uint pad0;
+  uint pad1;
+  vec4 baseColor;  // linear RGBA factor (its alpha takes part in the alpha test)
+};
 
 #define GBUF_SPEC_DEFERRED 0  // write albedo for the deferred lighting pass instead of shading
+#define GBUF_SPEC_LOD0 1      // render.lod0: every texture lookup at mip 0
+#define GBUF_SPEC_LOD0_ALPHA 2  // render.lod0_alpha_test (also shadow_depth.frag)
 
 TAA_BLOCK(FrameUniforms) {
   mat4 viewProj;              // jittered: what is rasterised
@@ -56,6 +76,13 @@ TAA_BLOCK(FrameUniforms) {
   vec4 ambient;               // rgb; w: shininess
   vec4 renderSize;            // width, height, 1/width, 1/height
   vec4 jitter;                // xy: this frame's jitter in pixels (image moves by it); zw: 0
+  // Cascaded shadows (renderer/shadow_cascades.h); all zero when lighting.shadows is off.
+  mat4 shadowMatrix[SHADOW_MAX_CASCADES];  // world -> atlas uv (xy) and biased light depth (z)
+  vec4 shadowSplits;        // view depth (along shadowForward) where each cascade ends
+  vec4 shadowNormalOffset;  // per cascade: world distance a receiver moves along its normal
+  vec4 shadowForward;       // xyz: forward of the camera the cascades fit (unit); w: cascade count
+  vec4 shadowOrigin;        // xyz: that camera's position (stereo eyes share the centre's)
+  vec4 shadowAtlas;         // x, y: 1 / atlas width, height; z: 1 / cascade count; w: 0
 };
 
 TAA_BLOCK(InstanceData) {
@@ -77,7 +104,9 @@ TAA_BLOCK(DrawPush) {
   float alphaCutoff;  // < 0: no alpha test
   float lodBias;
   vec4 baseColor;     // linear RGBA factor
-  vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: 0
+  // emissive rgb: linear radiance added to the shaded colour (0: none); w: normal-map scale
+  // (material.normal_strength times the texture's scale; 0: no normal map)
+  vec4 emissive;
 };
 
 // ---- Temporal resolve (taa_resolve.comp and shaders/taa/*.glsl) ----
@@ -146,6 +175,14 @@ TAA_BLOCK(PostPush) {
                 // y edge threshold min, z subpixel amount
 };
 
+// ---- Still-image upsampling (still_image.comp, debug.image) ----
+#define STILL_BINDING_IMAGE 0  // the still image (output size), linear or nearest clamp sampler
+#define STILL_BINDING_OUT 1    // the colour target
+TAA_BLOCK(StillPush) {
+  vec4 size;    // render width, height, 1/width, 1/height
+  vec4 jitter;  // xy: the frame's jitter in render pixels (the image moves by it); zw: 0
+};
+
 // ---- Stress injection (inject.comp) ----
 // The value written, in params.y; C++ passes these names, never InjectValue's order.
 #define INJECT_NAN 0
@@ -181,6 +218,7 @@ TAA_BLOCK(InjectPush) {
 #define SEG_SPEC_FXAA 2             // adaptive.fxaa_out_of_history
 #define SEG_SPEC_TRACE_DISOCCLUDED 3
 #define SEG_SPEC_DEBUG 4            // write the debug view
+#define SEG_SPEC_FXAA_BORDER 5  // adaptive.fxaa_debug_border: output pixels always marked for FXAA
 
 TAA_BLOCK(SegmentationUniforms) {
   vec4 weights;  // normal, depth, material, luminance
@@ -213,6 +251,8 @@ TAA_BLOCK(AdaptiveCounts) {
 
 #define TRACE_SPEC_SAMPLES 0
 #define TRACE_SPEC_RAY_LOD 1
+#define TRACE_SPEC_ANISO 2       // adaptive.aniso (float)
+#define TRACE_SPEC_LOD0_ALPHA 3  // render.lod0_alpha_test
 
 // Inner nodes: count 0, children at first and first + 1. Leaves: triangles
 // [first, first + count). (A uint after a vec3 shares its 16 bytes in std430 and C++.)
@@ -311,8 +351,10 @@ static_assert(sizeof(TraceUniforms) == 48 + 16 * TRACE_MAX_SAMPLES);
 static_assert(sizeof(SegmentationUniforms) == 64);
 static_assert(sizeof(InjectPush) == 80);
 static_assert(sizeof(PostPush) == 32);
+static_assert(sizeof(StillPush) == 32);
 static_assert(sizeof(TaaUniforms) == 2 * 64 + (5 + TAA_SETTING_VEC4S) * 16);
-static_assert(sizeof(FrameUniforms) == 7 * 64 + 6 * 16);
+static_assert(sizeof(FrameUniforms) == (7 + SHADOW_MAX_CASCADES) * 64 + 11 * 16);
+static_assert(sizeof(ShadowPush) == 96);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
 static_assert(sizeof(DrawPush) == 48);
 static_assert(sizeof(TscmaaUniforms) == 48);

@@ -54,4 +54,13 @@ float textureLod(glm::vec2 dUvDx, glm::vec2 dUvDy, glm::vec2 size) {
   return std::log2(std::max(glm::length(dUvDx * size), glm::length(dUvDy * size)));
 }
 
+void anisotropicGradients(glm::vec2& dUvDx, glm::vec2& dUvDy, glm::vec2 size, float aniso) {
+  const float lx = glm::length(dUvDx * size), ly = glm::length(dUvDy * size);
+  const float ratio = std::min(std::max(lx, ly) / std::max(std::min(lx, ly), 1e-30f), aniso);
+  if (lx >= ly)
+    dUvDx /= ratio;
+  else
+    dUvDy /= ratio;
+}
+
 }  // namespace taa

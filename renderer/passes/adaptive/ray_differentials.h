@@ -30,4 +30,9 @@ UvDifferentials uvDifferentials(const scene::Triangle& tri, const glm::vec2 uv[3
 // log2 of the longer gradient in texels (before bias and clamping).
 float textureLod(glm::vec2 dUvDx, glm::vec2 dUvDy, glm::vec2 size);
 
+// adaptive.aniso as the tracer applies it: the longer gradient (in texels) shortened by
+// min(longer / shorter, aniso), so textureLod of the result is log2 of the footprint's
+// longer axis over that ratio (never below its shorter axis).
+void anisotropicGradients(glm::vec2& dUvDx, glm::vec2& dUvDy, glm::vec2 size, float aniso);
+
 }  // namespace taa

@@ -17,7 +17,8 @@ vk::SpecConstants specConstants(const spec::CaseSpec& spec, bool hasHistory) {
       .set(SEG_SPEC_TRACE_ALL, a.trace_all)
       .set(SEG_SPEC_FXAA, a.fxaa_out_of_history)
       .set(SEG_SPEC_TRACE_DISOCCLUDED, a.trace_disoccluded)
-      .set(SEG_SPEC_DEBUG, spec.debug.output == spec::DebugOutput::Segmentation);
+      .set(SEG_SPEC_DEBUG, spec.debug.output == spec::DebugOutput::Segmentation)
+      .set(SEG_SPEC_FXAA_BORDER, a.fxaa_debug_border);
   return c;
 }
 

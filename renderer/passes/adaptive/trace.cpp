@@ -115,7 +115,11 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
   write(materials_, 0, materials);
 
   vk::SpecConstants c;
-  c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples).set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod);
+  // render.lod0 samples mip 0 everywhere, the tracer included.
+  c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples)
+      .set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod && !spec.render.lod0)
+      .setFloat(TRACE_SPEC_ANISO, spec.adaptive.aniso)
+      .set(TRACE_SPEC_LOD0_ALPHA, spec.render.lod0_alpha_test);
   pipeline_ = vk::createComputePipeline(ctx, "adaptive_trace.comp", c);
 }
 

@@ -20,7 +20,10 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   const TaaSpec t = effectiveTaa(s.taa);
   p.taa = rule.resolve || rule.tscmaa;
   p.tscmaa = rule.tscmaa;
-  const bool full = rule.resolve && rule.path == Resolve::Full;
+  // A user's resolve (taa.shader) reads what its shader declares (addUserNeeds), not what
+  // the built-in settings would.
+  p.userResolve = rule.resolve && !s.taa.shader.empty();
+  const bool full = rule.resolve && rule.path == Resolve::Full && !p.userResolve;
   const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
   const bool antiGhost = full && t.anti_ghosting;
   const bool consistency = full && t.consistency;
@@ -52,6 +55,8 @@ std::vector<std::string> PassPlan::describe() const {
     out.push_back("pass tscmaa_edges");
     out.push_back("pass tscmaa_cmaa (indirect over the edge list)");
     out.push_back("pass tscmaa_taa (indirect over the TAA list)");
+  } else if (userResolve) {
+    out.push_back("pass user_resolve (taa.shader)");
   } else if (taa) {
     out.push_back("pass taa_resolve");
     if (adaptive) out.push_back("pass adaptive (segmentation, trace, masked fxaa)");

@@ -18,6 +18,7 @@ struct PassPlan {
   // Temporal resolve and the previous frame's G-buffer it reads.
   bool taa = false;
   bool tscmaa = false;  // the TSCMAA passes replace the resolve
+  bool userResolve = false;  // a user's shader (taa.shader) replaces the resolve
   bool prevDepth = false;
   bool prevNormal = false;
   bool prevIds = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "core/image_io.h"
 #include "draw_list.h"
@@ -21,6 +22,7 @@
 #include "script/frame_state.h"
 #include "spec/taa_modes.h"
 #include "stereo.h"
+#include "user/user_resolve.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
@@ -52,8 +54,10 @@ GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
   return c;
 }
 
-PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
+PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o,
+                          const std::optional<UserShader>& user) {
   PassPlan p = planPasses(spec);
+  if (user) addUserNeeds(p, user->interface);
   p.ids = p.ids || o.captureIds;
   p.velocity = p.velocity || o.captureVelocity;
   return p;
@@ -61,6 +65,7 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
 
 std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
   if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
+  if (!spec.taa.shader.empty()) return nullptr;                 // the user's resolve instead
   return std::make_unique<TaaResolvePass>(ctx, spec, plan);
 }
 
@@ -68,6 +73,17 @@ std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& s
                                        const RenderOptions& o) {
   if (!spec::modeRule(spec.taa.mode).tscmaa) return nullptr;
   return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
+}
+
+std::optional<UserShader> loadUser(const spec::CaseSpec& spec) {
+  if (spec.taa.shader.empty()) return std::nullopt;
+  return loadUserShader(spec);
+}
+
+std::unique_ptr<UserResolvePass> makeUser(vk::Context& ctx, const spec::CaseSpec& spec,
+                                          std::optional<UserShader>& shader) {
+  if (!shader) return nullptr;
+  return std::make_unique<UserResolvePass>(ctx, spec, std::move(*shader));
 }
 
 // One FrameUniforms slot per eye, at the device's uniform offset alignment.
@@ -86,12 +102,14 @@ struct Renderer::State {
   const scene::Scene& scene;
   RenderOptions options;
   GpuScene gpuScene;
+  std::optional<UserShader> userShader;  // moved into `user` once the plan has its needs
   PassPlan plan;
   GBufferConfig config;
   GBufferTargets targets;
   GBufferPass gbuffer;
   PrevGBuffer prev;
   std::unique_ptr<TaaResolvePass> resolve;
+  std::unique_ptr<UserResolvePass> user;
   std::unique_ptr<AdaptivePass> adaptive;
   std::unique_ptr<TscmaaPass> tscmaa;
   PostChain post;
@@ -111,12 +129,14 @@ struct Renderer::State {
         scene(sc),
         options(o),
         gpuScene(c, sc),
-        plan(planWithCaptures(s, o)),
+        userShader(loadUser(s)),
+        plan(planWithCaptures(s, o, userShader)),
         config(gbufferConfig(s, plan)),
         targets(c, config),
         gbuffer(c, gpuScene, config),
         prev(c, plan, targets),
         resolve(makeResolve(c, s, plan)),
+        user(makeUser(c, s, userShader)),
         adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(
                                      c, s, gpuScene, buildDrawList(sc, script::frameState(s, 0)),
                                      o.captureAdaptive)
@@ -139,6 +159,8 @@ struct Renderer::State {
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve) log.push_back(resolve->describe());
+    if (user)
+      for (const auto& line : user->describe()) log.push_back(line);
     if (adaptive)
       for (const auto& p : adaptive->describe()) log.push_back(p);
     if (tscmaa)
@@ -203,6 +225,20 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   if (s.tscmaa) {
     output = &s.tscmaa->output();
     outSize = outputSize(s.spec);
+  } else if (s.user) {
+    ResolveInputs in;
+    in.color = resolveInput;
+    in.depth = &s.targets.depth;
+    in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
+    in.ids = s.targets.ids ? &s.targets.ids : nullptr;
+    in.normal = s.targets.normal ? &s.targets.normal : nullptr;
+    in.prevDepth = s.prev.depth ? &s.prev.depth : nullptr;
+    in.prevNormal = s.prev.normal ? &s.prev.normal : nullptr;
+    in.prevIds = s.prev.ids ? &s.prev.ids : nullptr;
+    s.user->record(cmd, s.timer, state, 0, in);
+    output = &s.user->output();
+    outSize = s.user->outputSize();
+    s.prev.capture(cmd, s.targets);
   } else if (s.resolve) {
     TaaInputs in;
     in.color = resolveInput;

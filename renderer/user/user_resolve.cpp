@@ -215,7 +215,7 @@ std::vector<std::string> UserResolvePass::describe() const {
   const glm::ivec2 size = userOutputSize(s.spec);
   const std::string dims = std::to_string(size.x) + "x" + std::to_string(size.y);
   std::vector<std::string> out;
-  out.push_back("pass user_resolve " + s.shader.file.string() +
+  out.push_back("user_resolve shader " + s.shader.file.string() +
                 (s.shader.fromCache ? " (SPIR-V from cache)" : "") +
                 " spec constants: " + userSpecConstants(s.spec.taa, s.shader.interface).describe());
   out.push_back("buffer user output 2x " + dims + " rgba16f");

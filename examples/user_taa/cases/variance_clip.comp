@@ -18,11 +18,17 @@ vec3 clipToBox(vec3 history, vec3 center, vec3 lo, vec3 hi) {
   return m > 1.0 ? center + d / m : history;
 }
 
+// A NaN or infinite input sample would poison the history for good; count it as black.
+vec3 finiteColor(ivec2 p) {
+  vec3 c = taa_color_at(p);
+  return any(isnan(c)) || any(isinf(c)) ? vec3(0.0) : c;
+}
+
 void main() {
   ivec2 p;
   if (!taa_pixel(p)) return;
   ivec2 rp = taa_render_pixel(p);
-  vec3 current = taa_color_at(rp);
+  vec3 current = finiteColor(rp);
   if (!taa_has_history()) {
     imageStore(taa_output, p, vec4(current, 1.0));
     return;
@@ -30,7 +36,7 @@ void main() {
   vec3 lo = current, hi = current, m1 = vec3(0.0), m2 = vec3(0.0);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
-      vec3 c = taa_color_at(rp + ivec2(dx, dy));
+      vec3 c = finiteColor(rp + ivec2(dx, dy));
       lo = min(lo, c);
       hi = max(hi, c);
       m1 += c;

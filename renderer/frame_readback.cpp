@@ -53,18 +53,23 @@ void FrameReadback::record(VkCommandBuffer cmd, const spec::CaseSpec& spec, cons
     if (wantsAuxBuffer(spec, spec::AuxBuffer::Normal)) add(Kind::Aux, "normal", t.normal, render);
     if (wantsAuxBuffer(spec, spec::AuxBuffer::MaterialId) || o.captureIds)
       add(Kind::Aux, "material_id", t.ids, render);
+    std::vector<StageCapture> stage;
+    if (src.resolve) stage = src.resolve->captures();
     if (o.captureCurrent) {
-      // TSCMAA keeps every eye's input side by side; elsewhere the resolve input is it.
-      vk::Image* input = src.tscmaa && src.tscmaa->input() ? src.tscmaa->input() : src.resolveInput;
-      add(Kind::Aux, "current", *input, src.tscmaa ? src.outputSize : render);
+      // A stage that keeps every eye's input side by side reads it back; elsewhere the
+      // resolve's input is it.
+      const auto own = std::find_if(stage.begin(), stage.end(),
+                                    [](const StageCapture& c) { return c.name == "current"; });
+      if (own != stage.end())
+        add(Kind::Aux, "current", *own->image, own->size);
+      else
+        add(Kind::Aux, "current", *src.resolveInput, render);
     }
     if (src.adaptive)
       for (const AdaptiveCapture& c : src.adaptive->captures())
         add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, render);
-    if (o.captureTscmaa && src.tscmaa) {
-      add(Kind::Aux, "cmaa", src.tscmaa->cmaa(), src.outputSize);
-      add(Kind::Bits, "tscmaa_mask", src.tscmaa->mask(), src.outputSize);
-    }
+    for (const StageCapture& c : stage)
+      if (c.name != "current") add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, c.size);
   }
   // One transition point for every image read, then the copies, then the host's turn.
   vk::BarrierBatch barriers;
@@ -100,16 +105,6 @@ void FrameReadback::finish(FrameRecord& record) {
     }
   }
   pending_.clear();
-}
-
-std::vector<std::pair<std::string, double>> tscmaaCounters(
-    const std::vector<TscmaaCounts>& counts) {
-  double edges = 0.0, taaPixels = 0.0;
-  for (const auto& c : counts) {
-    edges += c.edges.count;
-    taaPixels += c.taa.count;
-  }
-  return {{"tscmaa_edges", edges}, {"tscmaa_taa_pixels", taaPixels}};
 }
 
 }  // namespace taa

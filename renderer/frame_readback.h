@@ -13,7 +13,7 @@
 #include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/reference.h"
-#include "passes/tscmaa.h"
+#include "passes/resolve_stage.h"
 #include "renderer.h"
 #include "vk/staging_ring.h"
 
@@ -25,7 +25,7 @@ struct FrameSources {
   glm::ivec2 renderSize{0};
   vk::Image* resolveInput = nullptr;  // the resolve's input colour (last eye)
   GBufferTargets* targets = nullptr;
-  TscmaaPass* tscmaa = nullptr;
+  ResolveStage* resolve = nullptr;  // null when the case runs none
   ReferencePass* reference = nullptr;
   AdaptivePass* adaptive = nullptr;
 };
@@ -60,8 +60,5 @@ class FrameReadback {
   std::vector<Pending> pending_;
   bool images_ = false;
 };
-
-// "tscmaa_edges" and "tscmaa_taa_pixels" summed over the eyes.
-std::vector<std::pair<std::string, double>> tscmaaCounters(const std::vector<TscmaaCounts>& counts);
 
 }  // namespace taa

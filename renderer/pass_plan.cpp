@@ -7,7 +7,7 @@
 namespace taa {
 
 namespace {
-bool wantsAux(const spec::CaseSpec& s, spec::AuxBuffer b) {
+bool planWantsAux(const spec::CaseSpec& s, spec::AuxBuffer b) {
   return std::find(s.output.aux.begin(), s.output.aux.end(), b) != s.output.aux.end();
 }
 }  // namespace
@@ -15,31 +15,16 @@ bool wantsAux(const spec::CaseSpec& s, spec::AuxBuffer b) {
 PassPlan planPasses(const spec::CaseSpec& s) {
   using namespace spec;
   PassPlan p;
-  // What runs comes from the mode's rule, with the settings it runs with.
+  // What runs comes from the mode's rule; what each pass reads, from the pass.
   const ModeRule& rule = modeRule(s.taa.mode);
-  const TaaSpec t = effectiveTaa(s.taa);
-  p.taa = rule.resolve || rule.tscmaa;
+  p.taa = runsTaa(rule);
   p.tscmaa = rule.tscmaa;
-  // A user's resolve (taa.shader) reads what its shader declares (addUserNeeds), not what
-  // the built-in settings would.
-  p.userResolve = rule.resolve && !s.taa.shader.empty();
-  const bool full = rule.resolve && rule.path == Resolve::Full && !p.userResolve;
-  const bool reprojectsByVelocity = full && t.use_velocity != UseVelocity::Off;
-  const bool antiGhost = full && t.anti_ghosting;
-  const bool consistency = full && t.consistency;
-  p.motionBlur = s.post.motion_blur;
-  p.velocity =
-      reprojectsByVelocity || antiGhost || p.motionBlur || wantsAux(s, AuxBuffer::Velocity);
-  // Adaptive ray tracing segments by material id and normal derivatives.
   p.adaptive = rule.adaptive;
-  p.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency ||
-          p.adaptive || wantsAux(s, AuxBuffer::MaterialId);
+  p.motionBlur = s.post.motion_blur;
   p.deferred = s.render.path == RenderPath::Deferred;
-  p.normal = consistency || p.deferred || p.adaptive || wantsAux(s, AuxBuffer::Normal);
-  p.prevDepth = full && (t.depth_culling || consistency);
-  p.prevNormal = consistency;
-  p.prevIds = consistency || antiGhost;
-  p.prevVelocity = antiGhost;
+  p.own.velocity = planWantsAux(s, AuxBuffer::Velocity);
+  p.own.ids = planWantsAux(s, AuxBuffer::MaterialId);
+  p.own.normal = p.deferred || planWantsAux(s, AuxBuffer::Normal);
   p.sharpen = s.post.sharpen == Sharpen::Gradient;
   p.cas = s.post.sharpen == Sharpen::Cas;
   p.fxaa = s.post.fxaa;
@@ -47,21 +32,25 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   return p;
 }
 
+GBufferConfig planGBuffer(const PassPlan& plan, const GBufferNeeds& passes,
+                          glm::ivec2 maxRenderSize) {
+  const GBufferNeeds n = plan.own | passes;
+  GBufferConfig c;
+  c.width = uint32_t(maxRenderSize.x);
+  c.height = uint32_t(maxRenderSize.y);
+  c.deferred = plan.deferred;
+  // Last frame's copy of a target needs this frame's target to copy from.
+  c.velocity = n.velocity || n.prevVelocity;
+  c.normal = n.normal || n.prevNormal;
+  c.ids = n.ids || n.prevIds;
+  return c;
+}
+
 std::vector<std::string> PassPlan::describe() const {
   std::vector<std::string> out;
   out.push_back(std::string("pass gbuffer (") + (deferred ? "deferred" : "forward") + ")");
   if (deferred) out.push_back("pass deferred_lighting");
-  if (tscmaa) {
-    out.push_back("pass tscmaa_edges");
-    out.push_back("pass tscmaa_cmaa (indirect over the edge list)");
-    out.push_back("pass tscmaa_taa (indirect over the TAA list)");
-  } else if (userResolve) {
-    out.push_back("pass user_resolve (taa.shader)");
-  } else if (taa) {
-    out.push_back("pass taa_resolve");
-    if (adaptive) out.push_back("pass adaptive (segmentation, trace, masked fxaa)");
-  }
-  // The post chain lists its own passes with their settings.
+  // The resolve stage and the passes around it list themselves with their settings.
   return out;
 }
 

@@ -1,28 +1,23 @@
 // Which passes and buffers a case needs, derived from its settings alone: nothing
-// is allocated, compiled or run that the case does not use.
+// is allocated, compiled or run that the case does not use. The G-buffer targets follow
+// from what the built passes say they read (GBufferNeeds), never from a list kept here.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
+#include "passes/gbuffer.h"
+#include "passes/gbuffer_needs.h"
 #include "spec/case_spec.h"
 
 namespace taa {
 
 struct PassPlan {
-  // Raster targets beyond colour and depth.
-  bool velocity = false;
-  bool normal = false;
-  bool ids = false;
   bool deferred = false;
-  // Temporal resolve and the previous frame's G-buffer it reads.
+  // A temporal resolve runs (the built-in one or TSCMAA's passes, from the mode's rule).
   bool taa = false;
   bool tscmaa = false;  // the TSCMAA passes replace the resolve
-  bool userResolve = false;  // a user's shader (taa.shader) replaces the resolve
-  bool prevDepth = false;
-  bool prevNormal = false;
-  bool prevIds = false;
-  bool prevVelocity = false;
   // Segmentation, tracing and masked FXAA after the resolve (taa.mode adaptive).
   bool adaptive = false;
   // Passes around the resolve.
@@ -31,10 +26,18 @@ struct PassPlan {
   bool cas = false;
   bool fxaa = false;
   bool debugView = false;
+  // Targets read by no pass but by the case's own output (output.aux) or a capture the
+  // harness asks for (set by the renderer), and the normals deferred lighting reads.
+  GBufferNeeds own;
 
   std::vector<std::string> describe() const;
 };
 
 PassPlan planPasses(const spec::CaseSpec& spec);
+
+// The G-buffer of a run at `maxRenderSize`: the targets `passes` (the union of the built
+// passes' needs) and the plan's own outputs read.
+GBufferConfig planGBuffer(const PassPlan& plan, const GBufferNeeds& passes,
+                          glm::ivec2 maxRenderSize);
 
 }  // namespace taa

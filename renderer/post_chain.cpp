@@ -101,6 +101,12 @@ vk::Image& PostChain::afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer,
   return *current;
 }
 
+GBufferNeeds PostChain::needs() const {
+  GBufferNeeds n;
+  n.velocity = p_->motionBlur != nullptr;  // it blurs along each pixel's velocity
+  return n;
+}
+
 std::vector<std::string> PostChain::describe() const {
   std::vector<std::string> out;
   if (p_->motionBlur) out.push_back(p_->motionBlur->describe());

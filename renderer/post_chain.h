@@ -32,6 +32,8 @@ class PostChain {
   vk::Image& afterResolve(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& state, vk::Image& input,
                           glm::ivec2 size);
 
+  // The G-buffer targets its passes read beyond colour and depth.
+  GBufferNeeds needs() const;
   std::vector<std::string> describe() const;
 
  private:

@@ -27,11 +27,11 @@ void copy(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
 
 }  // namespace
 
-PrevGBuffer::PrevGBuffer(vk::Context& ctx, const PassPlan& plan, const GBufferTargets& t) {
-  if (plan.prevDepth) depth = copyOf(ctx, t.depth, "prev_depth");
-  if (plan.prevNormal) normal = copyOf(ctx, t.normal, "prev_normal");
-  if (plan.prevIds) ids = copyOf(ctx, t.ids, "prev_ids");
-  if (plan.prevVelocity) velocity = copyOf(ctx, t.velocity, "prev_velocity");
+PrevGBuffer::PrevGBuffer(vk::Context& ctx, const GBufferNeeds& needs, const GBufferTargets& t) {
+  if (needs.prevDepth) depth = copyOf(ctx, t.depth, "prev_depth");
+  if (needs.prevNormal) normal = copyOf(ctx, t.normal, "prev_normal");
+  if (needs.prevIds) ids = copyOf(ctx, t.ids, "prev_ids");
+  if (needs.prevVelocity) velocity = copyOf(ctx, t.velocity, "prev_velocity");
 }
 
 void PrevGBuffer::capture(VkCommandBuffer cmd, GBufferTargets& t) {

@@ -1,10 +1,10 @@
 // Last frame's G-buffer targets that the resolve compares against (depth culling,
 // consistency, anti-ghosting): copies taken at the end of each frame, allocated only
-// for the targets the plan names.
+// for the prev* targets the built passes need.
 #pragma once
 
-#include "pass_plan.h"
 #include "passes/gbuffer.h"
+#include "passes/gbuffer_needs.h"
 
 namespace taa {
 
@@ -14,7 +14,7 @@ struct PrevGBuffer {
   vk::Image ids;
   vk::Image velocity;
 
-  PrevGBuffer(vk::Context& ctx, const PassPlan& plan, const GBufferTargets& current);
+  PrevGBuffer(vk::Context& ctx, const GBufferNeeds& needs, const GBufferTargets& current);
   void capture(VkCommandBuffer cmd, GBufferTargets& current);
   std::vector<std::string> describe() const;
 };

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <optional>
 
 #include "core/image_io.h"
 #include "draw_list.h"
@@ -14,19 +13,16 @@
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
 #include "passes/reference.h"
-#include "passes/taa_resolve.h"
-#include "passes/tscmaa.h"
 #include "post_chain.h"
 #include "prev_gbuffer.h"
 #include "readback.h"
+#include "resolve_factory.h"
 #include "script/frame_state.h"
 #include "spec/taa_modes.h"
 #include "stereo.h"
-#include "user/user_resolve.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
-#include "vk/transfer.h"
 
 namespace taa {
 
@@ -42,48 +38,37 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
   return size;
 }
 
-GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan) {
-  GBufferConfig c;
-  const glm::ivec2 size = maxRenderSize(spec);
-  c.width = uint32_t(size.x);
-  c.height = uint32_t(size.y);
-  c.deferred = plan.deferred;
-  c.velocity = plan.velocity;
-  c.normal = plan.normal;
-  c.ids = plan.ids;
-  return c;
-}
-
-PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o,
-                          const std::optional<UserShader>& user) {
+// The targets no pass reads but the harness's captures do.
+PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
   PassPlan p = planPasses(spec);
-  if (user) addUserNeeds(p, user->interface);
-  p.ids = p.ids || o.captureIds;
-  p.velocity = p.velocity || o.captureVelocity;
+  p.own.ids = p.own.ids || o.captureIds;
+  p.own.velocity = p.own.velocity || o.captureVelocity;
   return p;
 }
 
-std::unique_ptr<TaaResolvePass> makeResolve(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan) {
-  if (!spec::modeRule(spec.taa.mode).resolve) return nullptr;  // off, or TSCMAA's passes instead
-  if (!spec.taa.shader.empty()) return nullptr;                 // the user's resolve instead
-  return std::make_unique<TaaResolvePass>(ctx, spec, plan);
+// What the resolve may read this frame: the targets the plan allocated, null otherwise.
+ResolveInputs resolveInputs(GBufferTargets& t, PrevGBuffer& prev, vk::Image& color) {
+  auto orNull = [](vk::Image& image) { return image ? &image : nullptr; };
+  ResolveInputs in;
+  in.color = &color;
+  in.depth = &t.depth;
+  in.velocity = orNull(t.velocity);
+  in.ids = orNull(t.ids);
+  in.normal = orNull(t.normal);
+  in.prevDepth = orNull(prev.depth);
+  in.prevNormal = orNull(prev.normal);
+  in.prevIds = orNull(prev.ids);
+  in.prevVelocity = orNull(prev.velocity);
+  return in;
 }
 
-std::unique_ptr<TscmaaPass> makeTscmaa(vk::Context& ctx, const spec::CaseSpec& spec,
-                                       const RenderOptions& o) {
-  if (!spec::modeRule(spec.taa.mode).tscmaa) return nullptr;
-  return std::make_unique<TscmaaPass>(ctx, spec, o.captureCurrent);
-}
-
-std::optional<UserShader> loadUser(const spec::CaseSpec& spec) {
-  if (spec.taa.shader.empty()) return std::nullopt;
-  return loadUserShader(spec);
-}
-
-std::unique_ptr<UserResolvePass> makeUser(vk::Context& ctx, const spec::CaseSpec& spec,
-                                          std::optional<UserShader>& shader) {
-  if (!shader) return nullptr;
-  return std::make_unique<UserResolvePass>(ctx, spec, std::move(*shader));
+// What the built passes read, beyond colour and depth.
+GBufferNeeds passNeeds(const ResolveStage* resolve, const AdaptivePass* adaptive,
+                       const PostChain& post) {
+  GBufferNeeds n = post.needs();
+  if (resolve) n |= resolve->needs();
+  if (adaptive) n |= adaptive->needs();
+  return n;
 }
 
 // One FrameUniforms slot per eye, at the device's uniform offset alignment.
@@ -102,17 +87,16 @@ struct Renderer::State {
   const scene::Scene& scene;
   RenderOptions options;
   GpuScene gpuScene;
-  std::optional<UserShader> userShader;  // moved into `user` once the plan has its needs
   PassPlan plan;
+  // The passes are built first: the G-buffer holds what they say they read.
+  std::unique_ptr<ResolveStage> resolve;  // null when the mode runs none
+  std::unique_ptr<AdaptivePass> adaptive;
+  PostChain post;
+  GBufferNeeds needs;
   GBufferConfig config;
   GBufferTargets targets;
   GBufferPass gbuffer;
   PrevGBuffer prev;
-  std::unique_ptr<TaaResolvePass> resolve;
-  std::unique_ptr<UserResolvePass> user;
-  std::unique_ptr<AdaptivePass> adaptive;
-  std::unique_ptr<TscmaaPass> tscmaa;
-  PostChain post;
   std::unique_ptr<ReferencePass> reference;
   std::unique_ptr<InjectPass> inject;
   VkDeviceSize uniformStride;
@@ -129,20 +113,18 @@ struct Renderer::State {
         scene(sc),
         options(o),
         gpuScene(c, sc),
-        userShader(loadUser(s)),
-        plan(planWithCaptures(s, o, userShader)),
-        config(gbufferConfig(s, plan)),
-        targets(c, config),
-        gbuffer(c, gpuScene, config),
-        prev(c, plan, targets),
-        resolve(makeResolve(c, s, plan)),
-        user(makeUser(c, s, userShader)),
+        plan(planWithCaptures(s, o)),
+        resolve(makeResolveStage(c, s, plan, o)),
         adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(
                                      c, s, gpuScene, buildDrawList(sc, script::frameState(s, 0)),
                                      o.captureAdaptive)
                                : nullptr),
-        tscmaa(makeTscmaa(c, s, o)),
         post(c, s, plan, maxRenderSize(s)),
+        needs(passNeeds(resolve.get(), adaptive.get(), post)),
+        config(planGBuffer(plan, needs, maxRenderSize(s))),
+        targets(c, config),
+        gbuffer(c, gpuScene, config),
+        prev(c, needs, targets),
         reference(o.reference ? std::make_unique<ReferencePass>(c, s, gpuScene) : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         uniformStride(taa::uniformStride(c)),
@@ -158,13 +140,10 @@ struct Renderer::State {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& p : plan.describe()) log.push_back(p);
-    if (resolve) log.push_back(resolve->describe());
-    if (user)
-      for (const auto& line : user->describe()) log.push_back(line);
+    if (resolve)
+      for (const auto& p : resolve->describe()) log.push_back(p);
     if (adaptive)
       for (const auto& p : adaptive->describe()) log.push_back(p);
-    if (tscmaa)
-      for (const auto& line : tscmaa->describe()) log.push_back(line);
     for (const auto& p : post.describe()) log.push_back(p);
     if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
@@ -173,7 +152,6 @@ struct Renderer::State {
                     " per eye)");
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
-    if (resolve) log.push_back("buffer history 2x " + std::to_string(s.render.width) + "x" + std::to_string(s.render.height));
     log.push_back("scene: " + std::to_string(sc.vertices.size()) + " vertices, " +
                   std::to_string(sc.indices.size() / 3) + " triangles, " + std::to_string(sc.textures.size()) +
                   " textures (" + std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
@@ -204,7 +182,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
   vk::Image* resolveInput = nullptr;
-  // Stereo renders the G-buffer once per eye; everything else has one eye.
+  // Stereo renders the G-buffer, and resolves, once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
     const script::FrameState eyeState =
         eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation);
@@ -218,51 +196,24 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.end(cmd);
     if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
     resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
-    if (s.tscmaa) s.tscmaa->record(cmd, &s.timer, eyeState, eye, *resolveInput, s.targets.depth);
+    if (s.resolve)
+      s.resolve->record(cmd, s.timer, eyeState, eye,
+                        resolveInputs(s.targets, s.prev, *resolveInput));
   }
   vk::Image* output = resolveInput;
   glm::ivec2 outSize = state.renderSize;
-  if (s.tscmaa) {
-    output = &s.tscmaa->output();
-    outSize = outputSize(s.spec);
-  } else if (s.user) {
-    ResolveInputs in;
-    in.color = resolveInput;
-    in.depth = &s.targets.depth;
-    in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
-    in.ids = s.targets.ids ? &s.targets.ids : nullptr;
-    in.normal = s.targets.normal ? &s.targets.normal : nullptr;
-    in.prevDepth = s.prev.depth ? &s.prev.depth : nullptr;
-    in.prevNormal = s.prev.normal ? &s.prev.normal : nullptr;
-    in.prevIds = s.prev.ids ? &s.prev.ids : nullptr;
-    s.user->record(cmd, s.timer, state, 0, in);
-    output = &s.user->output();
-    outSize = s.user->outputSize();
-    s.prev.capture(cmd, s.targets);
-  } else if (s.resolve) {
-    TaaInputs in;
-    in.color = resolveInput;
-    in.depth = &s.targets.depth;
-    in.velocity = s.targets.velocity ? &s.targets.velocity : nullptr;
-    in.ids = s.targets.ids ? &s.targets.ids : nullptr;
-    in.normal = s.targets.normal ? &s.targets.normal : nullptr;
-    in.prevDepth = s.prev.depth ? &s.prev.depth : nullptr;
-    in.prevNormal = s.prev.normal ? &s.prev.normal : nullptr;
-    in.prevIds = s.prev.ids ? &s.prev.ids : nullptr;
-    in.prevVelocity = s.prev.velocity ? &s.prev.velocity : nullptr;
-    s.timer.begin(cmd, "taa_resolve");
-    s.resolve->record(cmd, state, in);
-    s.timer.end(cmd);
+  if (s.resolve) {
     output = &s.resolve->output();
-    outSize = glm::ivec2(s.spec.render.width, s.spec.render.height);
-    if (s.adaptive) {
-      const SegmentationInputs seg{resolveInput, &s.targets.depth, &s.targets.normal, &s.targets.ids,
-                                   s.resolve->rejection(), nullptr};
-      const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
-      output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
-    }
-    s.prev.capture(cmd, s.targets);
+    outSize = s.resolve->outputSize();
   }
+  if (s.adaptive) {
+    const SegmentationInputs seg{resolveInput,   &s.targets.depth,       &s.targets.normal,
+                                 &s.targets.ids, s.resolve->rejection(), nullptr};
+    const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
+    output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
+  }
+  // Last frame's targets for the next resolve (nothing when no pass reads them).
+  s.prev.capture(cmd, s.targets);
   output = &s.post.afterResolve(cmd, s.timer, state, *output, outSize);
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
@@ -284,7 +235,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     src.renderSize = state.renderSize;
     src.resolveInput = resolveInput;
     src.targets = &s.targets;
-    src.tscmaa = s.tscmaa.get();
+    src.resolve = s.resolve.get();
     src.reference = s.reference.get();
     src.adaptive = s.adaptive.get();
     s.readback.record(cmd, s.spec, s.options, src, readImages);
@@ -297,8 +248,9 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.cameraCut = state.cameraCut;
   record.historyReset = state.resetHistory;
   record.gpuMs = s.timer.read();
-  if (s.tscmaa) record.stats = tscmaaCounters(s.tscmaa->counts());
-  if (s.adaptive) record.stats = s.adaptive->stats();
+  if (s.resolve) record.stats = s.resolve->stats();
+  if (s.adaptive)
+    for (auto& stat : s.adaptive->stats()) record.stats.push_back(std::move(stat));
   if (readOutput) s.readback.finish(record);
   return record;
 }

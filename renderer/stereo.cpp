@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "spec/taa_modes.h"
+
 namespace taa {
 
 namespace {
@@ -17,7 +19,7 @@ void shift(script::CameraState& c, float d) {
 }  // namespace
 
 int eyeCount(const spec::CaseSpec& spec) {
-  return spec.taa.mode == spec::TaaMode::Tscmaa ? spec.tscmaa.eyes : 1;
+  return spec::modeRule(spec.taa.mode).tscmaa ? spec.tscmaa.eyes : 1;
 }
 
 glm::ivec2 outputSize(const spec::CaseSpec& spec) {

@@ -122,7 +122,7 @@ void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& p
   if (!post.motion_blur)
     p.add(key, "the speed in alpha is written by motion blur; set post.motion_blur: true or "
                "remove it");
-  if (s.taa.mode != TaaMode::Full)
+  if (!modeRule(s.taa.mode).plainFull)
     p.add(key, "only the full resolve reads the speed (anything else would pass it on as "
                "alpha); set taa.mode: full or remove it");
   if (!s.taa.velocity_alpha)
@@ -171,15 +171,16 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   validateJitter(p, spec.jitter, present);
   for (const auto& [key, msg] : taaProblems(spec, present)) p.add(key, msg);
   for (const auto& [key, msg] : userShaderProblems(spec, present)) p.add(key, msg);
-  if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only && spec.taa.mode == TaaMode::Off)
+  if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only &&
+      !runsTaa(modeRule(spec.taa.mode)))
     p.add("material.lod_bias", "applies only with TAA (material.lod_bias_taa_only) and taa.mode is off; enable TAA "
                                "or set lod_bias_taa_only to false");
   if (present.count("debug.scale") && spec.debug.output == DebugOutput::None)
     p.add("debug.scale", "has no effect unless debug.output is set; set it or remove the key");
-  if (spec.debug.output == DebugOutput::Segmentation && spec.taa.mode != TaaMode::Adaptive)
+  const ModeRule& rule = modeRule(spec.taa.mode);
+  if (spec.debug.output == DebugOutput::Segmentation && !rule.adaptive)
     p.add("debug.output", "the segmentation mask comes from adaptive ray tracing; set taa.mode to adaptive");
-  else if (spec.debug.output != DebugOutput::None && spec.taa.mode != TaaMode::Full &&
-           spec.taa.mode != TaaMode::Adaptive)
+  else if (spec.debug.output != DebugOutput::None && !rule.debugViews)
     p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full or adaptive");
   validatePost(p, spec, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);

@@ -6,6 +6,7 @@
 
 #include "common/shared.h"
 #include "invariants/invariant_support.h"
+#include "spec/taa_modes.h"
 
 namespace taa::invariants {
 
@@ -81,7 +82,7 @@ class AdaptiveUnmarked : public Invariant {
 
 std::string adaptiveUnmarkedInapplicable(const CheckedCase& spec) {
   const std::string name = "adaptive_unmarked";
-  if (spec.taa.mode != TaaMode::Adaptive)
+  if (!modeRule(spec.taa.mode).adaptive)
     return name + " checks adaptive ray tracing, but taa.mode is " + enumToString(spec.taa.mode) +
            "; set taa.mode to adaptive or remove it from checks.invariants";
   if (auto why = debugViewReason(name, spec); !why.empty()) return why;

@@ -18,6 +18,7 @@
 
 #include "invariants/history_box.h"
 #include "invariants/invariant_support.h"
+#include "spec/taa_modes.h"
 
 namespace taa::invariants {
 
@@ -120,7 +121,7 @@ std::string historyBoundedInapplicable(const CheckedCase& spec) {
     return name + " checks the clamp/clip box, but " + why +
            "; remove it from checks.invariants or " + fix;
   };
-  if (t.mode != TaaMode::Full)
+  if (!modeRule(t.mode).plainFull)
     return because(std::string("taa.mode is ") + enumToString(t.mode), "set taa.mode to full");
   if (!t.shader.empty() && !t.shader_clamps)
     return because("the user's resolve (taa.shader) does not declare that it clamps",

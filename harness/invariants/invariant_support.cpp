@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "scene/gltf_loader.h"
+#include "spec/taa_modes.h"
 
 namespace taa::invariants {
 
@@ -45,7 +46,7 @@ std::string whatMoves(const CaseSpec& spec) {
 
 std::string noHistoryReason(const std::string& name, const CaseSpec& spec) {
   const auto m = spec.taa.mode;
-  if (m != TaaMode::Off && m != TaaMode::PassThrough) return "";
+  if (modeRule(m).history) return "";
   return name + " needs a temporal history, but taa.mode is " + enumToString(m) +
          "; remove it from checks.invariants or set taa.mode to one that keeps a history";
 }
@@ -56,7 +57,7 @@ std::string renderSizeReason(const std::string& name, const CaseSpec& spec) {
     return name +
            " compares pixels of render-size buffers with the output, but render.upsample is " +
            num(spec.render.upsample) + fix;
-  if (spec.taa.mode == TaaMode::Tscmaa && spec.tscmaa.eyes == 2)
+  if (modeRule(spec.taa.mode).tscmaa && spec.tscmaa.eyes == 2)
     return name +
            " compares pixels of render-size buffers with the output, but tscmaa.eyes 2 puts two "
            "eyes side by side; remove it from checks.invariants or render one eye";

@@ -7,6 +7,7 @@
 
 #include "common/shared.h"
 #include "invariants/invariant_support.h"
+#include "spec/taa_modes.h"
 
 namespace taa::invariants {
 
@@ -88,7 +89,7 @@ std::unique_ptr<Invariant> makeTscmaaNonEdge(const CheckedCase&) {
 }
 
 std::string tscmaaNonEdgeInapplicable(const CheckedCase& spec) {
-  if (spec.taa.mode != TaaMode::Tscmaa)
+  if (!modeRule(spec.taa.mode).tscmaa)
     return std::string("tscmaa_non_edge checks the TSCMAA passes, but taa.mode is ") +
            enumToString(spec.taa.mode) +
            "; set taa.mode to tscmaa or remove it from checks.invariants";

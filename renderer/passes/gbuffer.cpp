@@ -183,6 +183,15 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
       .uniform(GBUF_BINDING_FRAME, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .storageBuffer(GBUF_BINDING_INSTANCES, f.instances, 0, VK_WHOLE_SIZE)
       .push(ctx_, cmd, sky_);
+  // Its shaders share the draw block's declaration: it gets its own values (no instance,
+  // material or alpha test) rather than whatever the last opaque draw pushed, or nothing
+  // at all when the frame has no opaque draw.
+  if (sky_.interface().pushConstantBytes >= sizeof(gpu::DrawPush)) {
+    gpu::DrawPush sky{};
+    sky.alphaCutoff = -1.0f;
+    sky.lodBias = lodBias;
+    sky_.pushConstants(cmd, &sky, sizeof(sky));
+  }
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (config_.deferred) {
     vkCmdEndRendering(cmd);

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "passes/gbuffer_needs.h"
 #include "script/frame_state.h"
 #include "vk/resources.h"
 #include "vk/timestamps.h"
@@ -32,6 +33,16 @@ struct ResolveInputs {
   vk::Image* prevVelocity = nullptr;
 };
 
+// An image the harness reads back beside the output, valid in its top-left `size` pixels;
+// `bits`: an integer mask, read as float bit values. The name "current" replaces the
+// renderer's own copy of the resolve's input (a stage that keeps the eyes side by side).
+struct StageCapture {
+  std::string name;
+  vk::Image* image = nullptr;
+  bool bits = false;
+  glm::ivec2 size{0};
+};
+
 class ResolveStage {
  public:
   virtual ~ResolveStage() = default;
@@ -46,9 +57,16 @@ class ResolveStage {
   virtual vk::Image& output() = 0;
   virtual glm::ivec2 outputSize() const = 0;
 
+  // The G-buffer targets record() reads beyond colour and depth: the pass plan allocates
+  // them (and last frame's copies) from this, so an input not named here is null.
+  virtual GBufferNeeds needs() const = 0;
+
   // Optional images later passes or the harness read; null when the stage has none.
   virtual vk::Image* debugView() { return nullptr; }
   virtual vk::Image* rejection() { return nullptr; }
+
+  // Images read back with the frame's images, when the render options asked for them.
+  virtual std::vector<StageCapture> captures() { return {}; }
 
   // Per-frame figures for FrameRecord::stats, valid once the frame completed.
   virtual std::vector<std::pair<std::string, double>> stats() const { return {}; }

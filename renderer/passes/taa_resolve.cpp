@@ -3,6 +3,7 @@
 #include <cstring>
 #include <glm/matrix.hpp>
 #include <iterator>
+#include <stdexcept>
 
 #include "passes/storage_image.h"
 #include "spec/taa_modes.h"
@@ -125,6 +126,24 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
   return u;
 }
 
+GBufferNeeds taaResolveNeeds(const CaseSpec& spec) {
+  const ModeRule& rule = modeRule(spec.taa.mode);
+  const TaaSpec t = effectiveTaa(spec.taa);
+  // Only the full path reprojects and validates its history; the others read colour alone.
+  const bool full = rule.resolve && rule.path == Resolve::Full;
+  const bool antiGhost = full && t.anti_ghosting;
+  const bool consistency = full && t.consistency;
+  GBufferNeeds n;
+  n.velocity = (full && t.use_velocity != UseVelocity::Off) || antiGhost;
+  n.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency;
+  n.normal = consistency;
+  n.prevDepth = full && (t.depth_culling || consistency);
+  n.prevNormal = consistency;
+  n.prevIds = consistency || antiGhost;
+  n.prevVelocity = antiGhost;
+  return n;
+}
+
 TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const PassPlan& plan)
     : ctx_(ctx),
       spec_(spec),
@@ -151,12 +170,21 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
     rejection_ = storageImage(ctx, "rejection", resolveOutputSize(spec), VK_FORMAT_R32_UINT);
 }
 
-std::string TaaResolvePass::describe() const {
-  return "taa_resolve spec constants: " + taaSpecConstants(spec_, true).describe();
+glm::ivec2 TaaResolvePass::outputSize() const {
+  return resolveOutputSize(spec_);
 }
 
-void TaaResolvePass::record(VkCommandBuffer cmd, const script::FrameState& state,
-                            const TaaInputs& in) {
+std::vector<std::string> TaaResolvePass::describe() const {
+  const glm::ivec2 size = resolveOutputSize(spec_);
+  return {"pass taa_resolve",
+          "taa_resolve spec constants: " + taaSpecConstants(spec_, true).describe(),
+          "buffer history 2x " + std::to_string(size.x) + "x" + std::to_string(size.y)};
+}
+
+void TaaResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
+                            const script::FrameState& state, int eye, const ResolveInputs& in) {
+  if (eye != 0) throw std::logic_error("TaaResolvePass: the built-in resolve has one eye");
+  timer.begin(cmd, "taa_resolve");
   const glm::ivec2 prevSize = state.frame == 0 ? state.renderSize : prevRenderSize_;
   const gpu::TaaUniforms u = makeTaaUniforms(spec_, state, prevSize);
   std::memcpy(uniforms_.mapped(), &u, sizeof(u));
@@ -186,6 +214,7 @@ void TaaResolvePass::record(VkCommandBuffer cmd, const script::FrameState& state
       .store(TAA_BINDING_DEBUG_OUT, debug_ ? debug_ : dummyStorage_)
       .store(TAA_BINDING_REJECT_OUT, rejection_ ? rejection_ : dummyReject_)
       .record(ctx_, cmd, uint32_t(spec_.render.width), uint32_t(spec_.render.height));
+  timer.end(cmd);
 }
 
 }  // namespace taa

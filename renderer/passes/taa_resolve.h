@@ -6,6 +6,7 @@
 
 #include "common/shared.h"
 #include "pass_plan.h"
+#include "passes/resolve_stage.h"
 #include "script/frame_state.h"
 #include "spec/case_spec.h"
 #include "vk/pipeline.h"
@@ -13,19 +14,8 @@
 
 namespace taa {
 
-// What the resolve reads this frame; optional inputs are null when the plan does not
-// need them (a dummy texture is bound in their place).
-struct TaaInputs {
-  vk::Image* color = nullptr;  // render size: lit colour, or motion-blurred colour
-  vk::Image* depth = nullptr;
-  vk::Image* velocity = nullptr;
-  vk::Image* ids = nullptr;
-  vk::Image* normal = nullptr;
-  vk::Image* prevDepth = nullptr;
-  vk::Image* prevNormal = nullptr;
-  vk::Image* prevIds = nullptr;
-  vk::Image* prevVelocity = nullptr;
-};
+// The G-buffer targets the built-in resolve reads for a case's settings.
+GBufferNeeds taaResolveNeeds(const spec::CaseSpec& spec);
 
 // The specialization constants of a case's resolve (exposed for the log and tests).
 vk::SpecConstants taaSpecConstants(const spec::CaseSpec& spec, bool hasHistory);
@@ -33,17 +23,21 @@ vk::SpecConstants taaSpecConstants(const spec::CaseSpec& spec, bool hasHistory);
 gpu::TaaUniforms makeTaaUniforms(const spec::CaseSpec& spec, const script::FrameState& state,
                                  glm::ivec2 prevRenderSize);
 
-class TaaResolvePass {
+// Mono only: validation refuses stereo outside TSCMAA.
+class TaaResolvePass final : public ResolveStage {
  public:
   TaaResolvePass(vk::Context& ctx, const spec::CaseSpec& spec, const PassPlan& plan);
 
-  // Records the resolve for `state`; afterwards output() holds this frame's result.
-  void record(VkCommandBuffer cmd, const script::FrameState& state, const TaaInputs& in);
-  vk::Image& output() { return history_[current_]; }
-  vk::Image* debugView() { return debug_ ? &debug_ : nullptr; }
+  // Records the resolve for `eyeState` (eye 0); afterwards output() holds this frame's result.
+  void record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& eyeState, int eye,
+              const ResolveInputs& in) override;
+  vk::Image& output() override { return history_[current_]; }
+  glm::ivec2 outputSize() const override;
+  GBufferNeeds needs() const override { return taaResolveNeeds(spec_); }
+  vk::Image* debugView() override { return debug_ ? &debug_ : nullptr; }
   // Why each pixel's history went unused (TAA_REJECT_*); adaptive mode only.
-  vk::Image* rejection() { return rejection_ ? &rejection_ : nullptr; }
-  std::string describe() const;
+  vk::Image* rejection() override { return rejection_ ? &rejection_ : nullptr; }
+  std::vector<std::string> describe() const override;
 
  private:
   vk::Context& ctx_;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <glm/matrix.hpp>
+#include <stdexcept>
 
 #include "passes/tscmaa_support.h"
 #include "stereo.h"
@@ -34,14 +35,16 @@ gpu::TscmaaUniforms makeTscmaaUniforms(const spec::TscmaaSpec& t, glm::ivec2 eye
   return u;
 }
 
-TscmaaPass::TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput)
+TscmaaPass::TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput,
+                       bool captureSteps)
     : ctx_(ctx),
       spec_(spec),
       eyeSize_(spec.render.width, spec.render.height),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
-      linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
+      linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
+      captureSteps_(captureSteps) {
   const int eyes = eyeCount(spec);
-  const glm::ivec2 wide = outputSize(spec);
+  const glm::ivec2 wide = taa::outputSize(spec);
   edges_ = tscmaa::edgePipeline(ctx);
   cmaaPipeline_ = tscmaa::cmaaPipeline(ctx);
   taa_ = tscmaa::taaPipeline(ctx);
@@ -79,6 +82,35 @@ vk::Image& TscmaaPass::output() {
   return sideBySide_ ? sideBySide_ : eyes_[0].history[current_];
 }
 
+glm::ivec2 TscmaaPass::outputSize() const {
+  return taa::outputSize(spec_);
+}
+
+std::vector<StageCapture> TscmaaPass::captures() {
+  const glm::ivec2 wide = outputSize();
+  std::vector<StageCapture> out;
+  if (input_) out.push_back({"current", &input_, false, wide});
+  if (captureSteps_) {
+    out.push_back({"cmaa", &cmaa_, false, wide});
+    out.push_back({"tscmaa_mask", &mask_, true, wide});
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> TscmaaPass::stats() const {
+  return tscmaaCounters(counts());
+}
+
+std::vector<std::pair<std::string, double>> tscmaaCounters(
+    const std::vector<TscmaaCounts>& counts) {
+  double edges = 0.0, taaPixels = 0.0;
+  for (const auto& c : counts) {
+    edges += c.edges.count;
+    taaPixels += c.taa.count;
+  }
+  return {{"tscmaa_edges", edges}, {"tscmaa_taa_pixels", taaPixels}};
+}
+
 std::vector<TscmaaCounts> TscmaaPass::counts() const {
   std::vector<TscmaaCounts> out(eyes_.size());
   std::memcpy(out.data(), readback_.mapped(), sizeof(TscmaaCounts) * out.size());
@@ -95,7 +127,9 @@ std::vector<std::string> TscmaaPass::describe() const {
       int(eyes_.size()), eyeSize_.x, eyeSize_.y, double(t.edge_threshold),
       double(t.non_dominant_edge_removal), double(t.blurriness), double(t.taa_share),
       double(t.history_weight));
-  std::vector<std::string> out{buf};
+  std::vector<std::string> out{"pass tscmaa_edges",
+                               "pass tscmaa_cmaa (indirect over the edge list)",
+                               "pass tscmaa_taa (indirect over the TAA list)", buf};
   const size_t listBytes = size_t(eyes_[0].edgeList.size());
   out.push_back("buffer tscmaa lists 2x" + std::to_string(eyes_.size()) + " (" +
                 std::to_string(listBytes / 1024) + " KiB each)");
@@ -104,8 +138,11 @@ std::vector<std::string> TscmaaPass::describe() const {
   return out;
 }
 
-void TscmaaPass::record(VkCommandBuffer cmd, vk::GpuTimer* timer, const script::FrameState& s,
-                        int eye, vk::Image& color, vk::Image& depth) {
+void TscmaaPass::record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& s,
+                        int eye, const ResolveInputs& in) {
+  if (!in.color || !in.depth) throw std::logic_error("TscmaaPass: colour or depth missing");
+  vk::Image& color = *in.color;
+  vk::Image& depth = *in.depth;
   Eye& e = eyes_.at(size_t(eye));
   if (eye == 0) current_ ^= 1;
   auto* base = static_cast<uint8_t*>(uniforms_.mapped());
@@ -115,9 +152,9 @@ void TscmaaPass::record(VkCommandBuffer cmd, vk::GpuTimer* timer, const script::
   std::memcpy(base + e.taaUniformOffset, &t, sizeof(t));
   const std::string suffix = eye ? ".eye" + std::to_string(eye) : "";
   auto scope = [&](const char* name, auto&& body) {
-    if (timer) timer->begin(cmd, name + suffix);
+    timer.begin(cmd, name + suffix);
     body();
-    if (timer) timer->end(cmd);
+    timer.end(cmd);
   };
   if (input_) copyRegion(cmd, color, {0, 0}, input_, e.offset, eyeSize_);
   scope("tscmaa_edges", [&] { detectEdges(cmd, e, color); });

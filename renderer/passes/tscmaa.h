@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/shared.h"
+#include "passes/resolve_stage.h"
 #include "script/frame_state.h"
 #include "spec/case_spec.h"
 #include "vk/pipeline.h"
@@ -26,25 +27,35 @@ struct TscmaaCounts {
 
 gpu::TscmaaUniforms makeTscmaaUniforms(const spec::TscmaaSpec& t, glm::ivec2 eyeSize, int eye);
 
-class TscmaaPass {
+// "tscmaa_edges" and "tscmaa_taa_pixels" summed over the eyes.
+std::vector<std::pair<std::string, double>> tscmaaCounters(const std::vector<TscmaaCounts>& counts);
+
+class TscmaaPass final : public ResolveStage {
  public:
-  // `captureInput` keeps a side-by-side copy of each eye's input colour for read-back.
-  TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput = false);
-  ~TscmaaPass();
+  // `captureInput` keeps a side-by-side copy of each eye's input colour for read-back
+  // ("current"); `captureSteps` reads back the CMAA image ("cmaa") and the edge mask
+  // ("tscmaa_mask").
+  TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput = false,
+             bool captureSteps = false);
+  ~TscmaaPass() override;
   TscmaaPass(const TscmaaPass&) = delete;
   TscmaaPass& operator=(const TscmaaPass&) = delete;
 
-  // Records the three steps for `eye` from its colour and depth (eye size, top-left);
-  // `timer` may be null. Call for every eye of a frame, in order.
-  void record(VkCommandBuffer cmd, vk::GpuTimer* timer, const script::FrameState& eyeState, int eye,
-              vk::Image& color, vk::Image& depth);
+  // Records the three steps for `eye` from its colour and depth (eye size, top-left).
+  // Call for every eye of a frame, in order.
+  void record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& eyeState, int eye,
+              const ResolveInputs& in) override;
 
-  vk::Image& output();                 // this frame's result, eyes side by side
+  vk::Image& output() override;  // this frame's result, eyes side by side
+  glm::ivec2 outputSize() const override;
+  GBufferNeeds needs() const override { return {}; }  // colour and depth only
   vk::Image& cmaa() { return cmaa_; }  // the CMAA result, eyes side by side
   vk::Image& mask() { return mask_; }  // R32_UINT TSCMAA_EDGE_* / TSCMAA_TAA bits
   vk::Image* input() { return input_ ? &input_ : nullptr; }
+  std::vector<StageCapture> captures() override;
   std::vector<TscmaaCounts> counts() const;  // per eye, valid once the frame completed
-  std::vector<std::string> describe() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
+  std::vector<std::string> describe() const override;
 
  private:
   struct Eye;
@@ -63,6 +74,7 @@ class TscmaaPass {
   VkDeviceSize stride_ = 0;
   vk::Sampler point_, linear_;
   int current_ = 0;  // history index written this frame
+  bool captureSteps_ = false;
 };
 
 }  // namespace taa

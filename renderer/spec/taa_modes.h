@@ -16,21 +16,35 @@ struct ModeRule {
   bool resolve;     // runs taa_resolve.comp ...
   Resolve path;     // ... on this path
   bool tscmaa;      // TSCMAA's passes replace the resolve
-  bool adaptive;    // segmentation and ray tracing follow the resolve
+  bool adaptive;    // segmentation and ray tracing follow the resolve (and its mask view)
   bool accumulate;  // consistency is the only history validation (see effectiveTaa)
   float alpha;      // taa.alpha when the case leaves it out (0: the declared default)
+  bool history;     // keeps a temporal history (invariants that judge one apply)
+  bool debugViews;  // the full resolve's debug.output views can replace the output
+  // The output is the full resolve's blend of a rectified history, nothing after it
+  // changed: history_bounded can check it against the box, and it reads the speed motion
+  // blur packs into alpha (taa.velocity_in_alpha).
+  bool plainFull;
 };
 
 // Temporal accumulation's published blend weight is 0.2 (seed 003).
+// clang-format off
 inline constexpr ModeRule kModeRules[] = {
-    {TaaMode::Off, false, Resolve::PassThrough, false, false, false, 0.0f},
-    {TaaMode::PassThrough, true, Resolve::PassThrough, false, false, false, 0.0f},
-    {TaaMode::Basic, true, Resolve::Basic, false, false, false, 0.0f},
-    {TaaMode::Full, true, Resolve::Full, false, false, false, 0.0f},
-    {TaaMode::Accumulate, true, Resolve::Full, false, false, true, 0.2f},
-    {TaaMode::Tscmaa, false, Resolve::PassThrough, true, false, false, 0.0f},
-    {TaaMode::Adaptive, true, Resolve::Full, false, true, false, 0.0f},
+  // mode               resolve path                  tscmaa adaptive accum  alpha  history views  plainFull
+    {TaaMode::Off,         false, Resolve::PassThrough, false, false, false, 0.0f, false, false, false},
+    {TaaMode::PassThrough, true,  Resolve::PassThrough, false, false, false, 0.0f, false, false, false},
+    {TaaMode::Basic,       true,  Resolve::Basic,       false, false, false, 0.0f, true,  false, false},
+    {TaaMode::Full,        true,  Resolve::Full,        false, false, false, 0.0f, true,  true,  true},
+    {TaaMode::Accumulate,  true,  Resolve::Full,        false, false, true,  0.2f, true,  false, false},
+    {TaaMode::Tscmaa,      false, Resolve::PassThrough, true,  false, false, 0.0f, true,  false, false},
+    {TaaMode::Adaptive,    true,  Resolve::Full,        false, true,  false, 0.0f, true,  true,  false},
 };
+// clang-format on
+
+// A temporal resolve of some kind runs (material.lod_bias_taa_only applies the bias).
+constexpr bool runsTaa(const ModeRule& r) {
+  return r.resolve || r.tscmaa;
+}
 
 constexpr const ModeRule& modeRule(TaaMode m) {
   for (const auto& r : kModeRules)

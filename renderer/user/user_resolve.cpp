@@ -156,13 +156,16 @@ vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserIn
   return c;
 }
 
-void addUserNeeds(PassPlan& plan, const user::UserInterface& u) {
-  plan.velocity = plan.velocity || u.velocity;
-  plan.ids = plan.ids || u.ids || u.prevIds;
-  plan.normal = plan.normal || u.normal || u.prevNormal;
-  plan.prevDepth = plan.prevDepth || u.prevDepth;
-  plan.prevIds = plan.prevIds || u.prevIds;
-  plan.prevNormal = plan.prevNormal || u.prevNormal;
+GBufferNeeds userNeeds(const user::UserInterface& u) {
+  GBufferNeeds n;
+  n.velocity = u.velocity;
+  // Last frame's ids and normals are copies of this frame's targets.
+  n.ids = u.ids || u.prevIds;
+  n.normal = u.normal || u.prevNormal;
+  n.prevDepth = u.prevDepth;
+  n.prevIds = u.prevIds;
+  n.prevNormal = u.prevNormal;
+  return n;
 }
 
 struct UserResolvePass::Impl {
@@ -215,7 +218,7 @@ std::vector<std::string> UserResolvePass::describe() const {
   const glm::ivec2 size = userOutputSize(s.spec);
   const std::string dims = std::to_string(size.x) + "x" + std::to_string(size.y);
   std::vector<std::string> out;
-  out.push_back("user_resolve shader " + s.shader.file.string() +
+  out.push_back("pass user_resolve " + s.shader.file.string() +
                 (s.shader.fromCache ? " (SPIR-V from cache)" : "") +
                 " spec constants: " + userSpecConstants(s.spec.taa, s.shader.interface).describe());
   out.push_back("buffer user output 2x " + dims + " rgba16f");

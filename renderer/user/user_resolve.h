@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <memory>
 
-#include "pass_plan.h"
 #include "passes/resolve_stage.h"
 #include "spec/case_spec.h"
 #include "user/user_interface.h"
@@ -34,8 +33,8 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
 // The specialization constants taa.shader_params gives (validated beforehand).
 vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u);
 
-// The G-buffer inputs the shader reads, added to the plan.
-void addUserNeeds(PassPlan& plan, const user::UserInterface& u);
+// The G-buffer inputs the shader declares: the plan allocates exactly these.
+GBufferNeeds userNeeds(const user::UserInterface& u);
 
 class UserResolvePass : public ResolveStage {
  public:
@@ -46,6 +45,7 @@ class UserResolvePass : public ResolveStage {
               const ResolveInputs& in) override;
   vk::Image& output() override;
   glm::ivec2 outputSize() const override;
+  GBufferNeeds needs() const override;
   std::vector<std::string> describe() const override;
 
  private:

@@ -11,6 +11,7 @@
 #include "passes/tscmaa.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"
+#include "vk/timestamps.h"
 #include "vk/transfer.h"
 
 namespace taa::tscmaatest {
@@ -46,8 +47,12 @@ inline SyntheticRun runSynthetic(const spec::CaseSpec& spec, const Image& color)
   auto depth =
       test::uploadFloatImage(Image(color.width, color.height, 1, 0.5f), VK_FORMAT_R32_SFLOAT);
   const auto state = script::frameState(spec, 0);
+  ResolveInputs inputs;
+  inputs.color = &in;
+  inputs.depth = &depth;
+  vk::GpuTimer timer(test::gpu());
   VkCommandBuffer cmd = test::gpu().beginCommands();
-  pass.record(cmd, nullptr, state, 0, in, depth);
+  pass.record(cmd, timer, state, 0, inputs);
   test::gpu().submitAndWait(cmd);
   SyntheticRun r;
   r.mask = readMask(pass.mask());

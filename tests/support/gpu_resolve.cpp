@@ -7,6 +7,7 @@
 #include "passes/taa_resolve.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"
+#include "vk/timestamps.h"
 
 namespace taa::test {
 
@@ -18,9 +19,10 @@ Image roundToHalf(Image image) {
   return image;
 }
 
-void runFrame(TaaResolvePass& pass, const script::FrameState& state, const TaaInputs& in) {
+void runFrame(TaaResolvePass& pass, const script::FrameState& state, const ResolveInputs& in) {
+  vk::GpuTimer timer(gpu());
   VkCommandBuffer cmd = gpu().beginCommands();
-  pass.record(cmd, state, in);
+  pass.record(cmd, timer, state, 0, in);
   gpu().submitAndWait(cmd);
 }
 
@@ -50,7 +52,7 @@ GpuResolveResult gpuResolve(const spec::CaseSpec& spec, const SyntheticResolve& 
 
   const PassPlan plan = planPasses(spec);
   TaaResolvePass pass(gpu(), spec, plan);
-  TaaInputs inputs;
+  ResolveInputs inputs;
   inputs.depth = &depthImage;
   inputs.velocity = &velocityImage;
   inputs.color = &historyInput;

@@ -191,10 +191,9 @@ void main() {
   EXPECT_EQ(u.params[2].type, ParamType::Int);
   EXPECT_EQ(u.params[2].defaultBits, 3u);
 
-  PassPlan plan;
-  addUserNeeds(plan, u);
-  EXPECT_TRUE(plan.velocity && plan.prevDepth);
-  EXPECT_FALSE(plan.ids || plan.normal || plan.prevIds || plan.prevNormal);
+  const GBufferNeeds needs = userNeeds(u);
+  EXPECT_TRUE(needs.velocity && needs.prevDepth);
+  EXPECT_FALSE(needs.ids || needs.normal || needs.prevIds || needs.prevNormal || needs.prevVelocity);
 
   spec::TaaSpec t;
   t.shader = "decl.comp";

@@ -14,6 +14,7 @@
 #include "passes/adaptive/segmentation.h"
 #include "passes/adaptive/trace.h"
 #include "passes/fxaa.h"
+#include "passes/gbuffer_needs.h"
 #include "vk/timestamps.h"
 
 namespace taa {
@@ -43,6 +44,8 @@ class AdaptivePass {
   vk::Image& record(VkCommandBuffer cmd, vk::GpuTimer& timer, const AdaptiveFrame& frame,
                     const SegmentationInputs& in, vk::Image& resolved);
   vk::Image* debugView() { return segmentation_.debugView(); }
+  // Segmentation compares material ids and normal derivatives.
+  GBufferNeeds needs() const { return {.normal = true, .ids = true}; }
 
   // After the frame completed: the shares of pixels traced and FXAA'd.
   std::vector<std::pair<std::string, double>> stats() const;

@@ -1,0 +1,32 @@
+// Which G-buffer targets a pass reads, beyond colour and depth (which every frame has):
+// this frame's velocity, normals and ids, and last frame's copies. The pass plan
+// allocates the union over the passes a case runs (pass_plan.cpp), so a pass states what
+// it reads as a value: a user's resolve reports it from its shader's bindings.
+#pragma once
+
+namespace taa {
+
+struct GBufferNeeds {
+  bool velocity = false;
+  bool normal = false;
+  bool ids = false;
+  bool prevDepth = false;
+  bool prevNormal = false;
+  bool prevIds = false;
+  bool prevVelocity = false;
+
+  constexpr GBufferNeeds& operator|=(const GBufferNeeds& o) {
+    velocity = velocity || o.velocity;
+    normal = normal || o.normal;
+    ids = ids || o.ids;
+    prevDepth = prevDepth || o.prevDepth;
+    prevNormal = prevNormal || o.prevNormal;
+    prevIds = prevIds || o.prevIds;
+    prevVelocity = prevVelocity || o.prevVelocity;
+    return *this;
+  }
+  friend constexpr GBufferNeeds operator|(GBufferNeeds a, const GBufferNeeds& b) { return a |= b; }
+  friend constexpr bool operator==(const GBufferNeeds&, const GBufferNeeds&) = default;
+};
+
+}  // namespace taa

@@ -107,8 +107,8 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
       specIds[ops[0]] = ops[2];
     if (opcode == kUserOpDecorate && ops.size() >= 3 && ops[1] == kUserDecoBinding)
       bindings[ops[0]] = ops[2];
-    if ((opcode >= kUserOpTypeBool && opcode <= kUserOpTypeFloat) || opcode == kUserOpTypeImage ||
-        opcode == kUserOpTypePointer) {
+    if (opcode == kUserOpTypeBool || opcode == kUserOpTypeInt || opcode == kUserOpTypeFloat ||
+        opcode == kUserOpTypeImage || opcode == kUserOpTypePointer) {
       types[ops[0]] = opcode;
       defs[ops[0]] = ops;
     }

@@ -213,6 +213,10 @@ glm::ivec2 UserResolvePass::outputSize() const {
   return userOutputSize(impl_->spec);
 }
 
+GBufferNeeds UserResolvePass::needs() const {
+  return userNeeds(impl_->shader.interface);
+}
+
 std::vector<std::string> UserResolvePass::describe() const {
   const auto& s = *impl_;
   const glm::ivec2 size = userOutputSize(s.spec);

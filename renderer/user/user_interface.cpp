@@ -1,5 +1,6 @@
 #include "user/user_interface.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -147,6 +148,10 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
     if (p.name.rfind("taa_", 0) == 0) continue;
     u.params.push_back(p);
   }
+
+  // SPIR-V orders constants by type, not by declaration: list them by constant_id.
+  std::sort(u.params.begin(), u.params.end(),
+            [](const UserParam& a, const UserParam& b) { return a.specId < b.specId; });
 
   // History k: its write image's declared format.
   for (int k = 0; k < 2; ++k) {

@@ -47,7 +47,7 @@ struct UserInterface {
   bool prevDepth = false, prevIds = false, prevNormal = false;
   // History targets 0 and 1: the format the shader's output image declares, or none.
   std::optional<VkFormat> history[2];
-  std::vector<UserParam> params;  // in declaration order
+  std::vector<UserParam> params;  // by constant_id
 
   const UserParam* param(const std::string& name) const;
   std::vector<std::string> paramNames() const;

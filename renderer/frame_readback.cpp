@@ -53,8 +53,7 @@ void FrameReadback::record(VkCommandBuffer cmd, const spec::CaseSpec& spec, cons
     if (wantsAuxBuffer(spec, spec::AuxBuffer::Normal)) add(Kind::Aux, "normal", t.normal, render);
     if (wantsAuxBuffer(spec, spec::AuxBuffer::MaterialId) || o.captureIds)
       add(Kind::Aux, "material_id", t.ids, render);
-    std::vector<StageCapture> stage;
-    if (src.resolve) stage = src.resolve->captures();
+    const std::vector<StageCapture>& stage = src.captures;
     if (o.captureCurrent) {
       // A stage that keeps every eye's input side by side reads it back; elsewhere the
       // resolve's input is it.
@@ -65,9 +64,6 @@ void FrameReadback::record(VkCommandBuffer cmd, const spec::CaseSpec& spec, cons
       else
         add(Kind::Aux, "current", *src.resolveInput, render);
     }
-    if (src.adaptive)
-      for (const AdaptiveCapture& c : src.adaptive->captures())
-        add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, render);
     for (const StageCapture& c : stage)
       if (c.name != "current") add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, c.size);
   }

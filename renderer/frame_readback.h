@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "frame_record.h"
-#include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/reference.h"
 #include "passes/resolve_stage.h"
@@ -25,9 +24,9 @@ struct FrameSources {
   glm::ivec2 renderSize{0};
   vk::Image* resolveInput = nullptr;  // the resolve's input colour (last eye)
   GBufferTargets* targets = nullptr;
-  ResolveStage* resolve = nullptr;  // null when the case runs none
   ReferencePass* reference = nullptr;
-  AdaptivePass* adaptive = nullptr;
+  // The resolve's and its followers' (ResolveStage::captures, PostChain::captures).
+  std::vector<StageCapture> captures;
 };
 
 class FrameReadback {

@@ -18,7 +18,6 @@ PassPlan planPasses(const spec::CaseSpec& s) {
   // What runs comes from the mode's rule; what each pass reads, from the pass.
   const ModeRule& rule = modeRule(s.taa.mode);
   p.taa = runsTaa(rule);
-  p.tscmaa = rule.tscmaa;
   p.adaptive = rule.adaptive;
   p.motionBlur = s.post.motion_blur;
   p.deferred = s.render.path == RenderPath::Deferred;

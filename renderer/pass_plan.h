@@ -15,9 +15,8 @@ namespace taa {
 
 struct PassPlan {
   bool deferred = false;
-  // A temporal resolve runs (the built-in one or TSCMAA's passes, from the mode's rule).
+  // A temporal resolve runs (which one is makeResolveStage's choice, resolve_factory.cpp).
   bool taa = false;
-  bool tscmaa = false;  // the TSCMAA passes replace the resolve
   // Segmentation, tracing and masked FXAA after the resolve (taa.mode adaptive).
   bool adaptive = false;
   // Passes around the resolve.

@@ -9,7 +9,6 @@
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "pass_plan.h"
-#include "passes/adaptive/adaptive.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
 #include "passes/reference.h"
@@ -63,11 +62,9 @@ ResolveInputs resolveInputs(GBufferTargets& t, PrevGBuffer& prev, vk::Image& col
 }
 
 // What the built passes read, beyond colour and depth.
-GBufferNeeds passNeeds(const ResolveStage* resolve, const AdaptivePass* adaptive,
-                       const PostChain& post) {
+GBufferNeeds passNeeds(const ResolveStage* resolve, const PostChain& post) {
   GBufferNeeds n = post.needs();
   if (resolve) n |= resolve->needs();
-  if (adaptive) n |= adaptive->needs();
   return n;
 }
 
@@ -89,9 +86,9 @@ struct Renderer::State {
   GpuScene gpuScene;
   PassPlan plan;
   // The passes are built first: the G-buffer holds what they say they read.
+  DrawList firstFrame;
   std::unique_ptr<ResolveStage> resolve;  // null when the mode runs none
-  std::unique_ptr<AdaptivePass> adaptive;
-  PostChain post;
+  PostChain post;                         // the passes before, following and after it
   GBufferNeeds needs;
   GBufferConfig config;
   GBufferTargets targets;
@@ -114,13 +111,10 @@ struct Renderer::State {
         options(o),
         gpuScene(c, sc),
         plan(planWithCaptures(s, o)),
-        resolve(makeResolveStage(c, s, plan, o)),
-        adaptive(plan.adaptive ? std::make_unique<AdaptivePass>(
-                                     c, s, gpuScene, buildDrawList(sc, script::frameState(s, 0)),
-                                     o.captureAdaptive)
-                               : nullptr),
-        post(c, s, plan, maxRenderSize(s)),
-        needs(passNeeds(resolve.get(), adaptive.get(), post)),
+        firstFrame(buildDrawList(sc, script::frameState(s, 0))),
+        resolve(makeResolveStage(c, s, plan, options)),
+        post(PassContext{c, s, gpuScene, firstFrame, options}, plan, maxRenderSize(s)),
+        needs(passNeeds(resolve.get(), post)),
         config(planGBuffer(plan, needs, maxRenderSize(s))),
         targets(c, config),
         gbuffer(c, gpuScene, config),
@@ -130,11 +124,8 @@ struct Renderer::State {
         uniformStride(taa::uniformStride(c)),
         frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-        instances(
-            c,
-            std::max<size_t>(1, buildDrawList(sc, script::frameState(s, 0)).instances.size()) *
-                sizeof(gpu::InstanceData),
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
+        instances(c, std::max<size_t>(1, firstFrame.instances.size()) * sizeof(gpu::InstanceData),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c),
         readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
@@ -142,8 +133,6 @@ struct Renderer::State {
     for (const auto& p : plan.describe()) log.push_back(p);
     if (resolve)
       for (const auto& p : resolve->describe()) log.push_back(p);
-    if (adaptive)
-      for (const auto& p : adaptive->describe()) log.push_back(p);
     for (const auto& p : post.describe()) log.push_back(p);
     if (inject) log.push_back("pass inject (stress: non-finite colour on listed frames)");
     if (reference)
@@ -181,6 +170,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   const float lodBias = lodBiasApplies ? s.spec.material.lod_bias : 0.0f;
   s.timer.reset();
   VkCommandBuffer cmd = s.ctx.beginCommands();
+  const FrameView view{cmd,    &s.timer, &state, &s.targets, &draws, s.frameUniforms.handle(),
+                       lodBias};
   vk::Image* resolveInput = nullptr;
   // Stereo renders the G-buffer, and resolves, once per eye; everything else has one eye.
   for (int eye = 0; eye < eyes; ++eye) {
@@ -195,7 +186,9 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
                      state.renderSize, lodBias);
     s.timer.end(cmd);
     if (s.inject && s.inject->appliesTo(frame)) s.inject->record(cmd, s.targets.color);
-    resolveInput = &s.post.beforeResolve(cmd, s.timer, eyeState, s.targets);
+    FrameView eyeView = view;
+    eyeView.state = &eyeState;
+    resolveInput = &s.post.beforeResolve(eyeView, s.targets.color);
     if (s.resolve)
       s.resolve->record(cmd, s.timer, eyeState, eye,
                         resolveInputs(s.targets, s.prev, *resolveInput));
@@ -203,18 +196,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   vk::Image* output = resolveInput;
   glm::ivec2 outSize = state.renderSize;
   if (s.resolve) {
-    output = &s.resolve->output();
+    output = &s.post.followResolve(view, *s.resolve, *resolveInput);
     outSize = s.resolve->outputSize();
-  }
-  if (s.adaptive) {
-    const SegmentationInputs seg{resolveInput,   &s.targets.depth,       &s.targets.normal,
-                                 &s.targets.ids, s.resolve->rejection(), nullptr};
-    const AdaptiveFrame af{&state, &draws, s.frameUniforms.handle(), lodBias};
-    output = &s.adaptive->record(cmd, s.timer, af, seg, *output);
   }
   // Last frame's targets for the next resolve (nothing when no pass reads them).
   s.prev.capture(cmd, s.targets);
-  output = &s.post.afterResolve(cmd, s.timer, state, *output, outSize);
+  output = &s.post.afterResolve(view, *output, outSize);
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
   if (s.reference && readImages) {
@@ -225,8 +212,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     s.timer.end(cmd);
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
-  if (s.resolve && s.resolve->debugView()) output = s.resolve->debugView();
-  if (s.adaptive && s.adaptive->debugView()) output = s.adaptive->debugView();
+  if (vk::Image* v = s.resolve ? s.resolve->debugView() : nullptr) output = v;
+  if (vk::Image* v = s.post.debugView()) output = v;
   const bool readOutput = readImages || s.options.hashEveryFrame;
   if (readOutput) {
     FrameSources src;
@@ -235,9 +222,11 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     src.renderSize = state.renderSize;
     src.resolveInput = resolveInput;
     src.targets = &s.targets;
-    src.resolve = s.resolve.get();
     src.reference = s.reference.get();
-    src.adaptive = s.adaptive.get();
+    if (readImages) {
+      if (s.resolve) src.captures = s.resolve->captures();
+      for (auto& c : s.post.captures()) src.captures.push_back(std::move(c));
+    }
     s.readback.record(cmd, s.spec, s.options, src, readImages);
   }
   s.ctx.submitAndWait(cmd);
@@ -249,8 +238,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   record.historyReset = state.resetHistory;
   record.gpuMs = s.timer.read();
   if (s.resolve) record.stats = s.resolve->stats();
-  if (s.adaptive)
-    for (auto& stat : s.adaptive->stats()) record.stats.push_back(std::move(stat));
+  for (auto& stat : s.post.stats()) record.stats.push_back(std::move(stat));
   if (readOutput) s.readback.finish(record);
   return record;
 }

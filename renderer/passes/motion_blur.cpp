@@ -35,6 +35,10 @@ void MotionBlurPass::record(VkCommandBuffer cmd, vk::Image& color, vk::Image& ve
       .record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
 }
 
+void MotionBlurPass::record(const FrameView& f, vk::Image& input, vk::Image& output) {
+  record(f.cmd, input, f.targets->velocity, f.targets->depth, output, f.state->renderSize);
+}
+
 std::string MotionBlurPass::describe() const {
   char buf[160];
   std::snprintf(buf, sizeof(buf),

@@ -6,6 +6,7 @@
 #include <glm/vec2.hpp>
 #include <string>
 
+#include "passes/frame_pass.h"
 #include "vk/pipeline.h"
 #include "vk/resources.h"
 
@@ -18,15 +19,19 @@ struct MotionBlurSettings {
   float depthTolerance = 0.05f;  // taps nearer than the centre by more (relative) are ignored
 };
 
-class MotionBlurPass {
+class MotionBlurPass final : public BeforeResolvePass {
  public:
   MotionBlurPass(vk::Context& ctx, const MotionBlurSettings& settings);
+
+  // The colour a frame's resolve reads: `input` blurred along the G-buffer's velocity.
+  void record(const FrameView& frame, vk::Image& input, vk::Image& output) override;
+  GBufferNeeds needs() const override { return {.velocity = true}; }
 
   // Blurs the top-left `size` pixels of `color` along `velocity` (RG, render pixels,
   // current minus previous position) into `output`; `depth` is reversed Z.
   void record(VkCommandBuffer cmd, vk::Image& color, vk::Image& velocity, vk::Image& depth,
               vk::Image& output, glm::ivec2 size);
-  std::string describe() const;
+  std::string describe() const override;
 
  private:
   vk::Context& ctx_;

@@ -74,6 +74,15 @@ vk::Image& AdaptivePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
   return filtered_;
 }
 
+vk::Image& AdaptivePass::record(const FrameView& f, ResolveStage& resolve, vk::Image& resolveInput,
+                                vk::Image& resolved) {
+  GBufferTargets& t = *f.targets;
+  const SegmentationInputs seg{&resolveInput,       &t.depth, &t.normal, &t.ids,
+                               resolve.rejection(), nullptr};
+  const AdaptiveFrame frame{f.state, f.draws, f.frameUniforms, f.lodBias};
+  return record(f.cmd, *f.timer, frame, seg, resolved);
+}
+
 std::vector<std::pair<std::string, double>> AdaptivePass::stats() const {
   const gpu::AdaptiveCounts c = segmentation_.counts();
   const double pixels = double(lastSize_.x) * double(lastSize_.y);
@@ -81,9 +90,11 @@ std::vector<std::pair<std::string, double>> AdaptivePass::stats() const {
   return {{"traced_share", double(c.traced) / pixels}, {"fxaa_share", double(c.fxaa) / pixels}};
 }
 
-std::vector<AdaptiveCapture> AdaptivePass::captures() {
+std::vector<StageCapture> AdaptivePass::captures() {
   if (!beforeTrace_) return {};
-  return {{"taa_resolve", &beforeTrace_, false}, {"segmentation", &segmentation_.mask(), true}};
+  // At the frame's render size, which is the resolve's output size (no upsampling here).
+  return {{"taa_resolve", &beforeTrace_, false, lastSize_},
+          {"segmentation", &segmentation_.mask(), true, lastSize_}};
 }
 
 std::vector<std::string> AdaptivePass::describe() const {

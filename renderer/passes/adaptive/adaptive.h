@@ -13,18 +13,11 @@
 #include "gpu_scene.h"
 #include "passes/adaptive/segmentation.h"
 #include "passes/adaptive/trace.h"
+#include "passes/frame_pass.h"
 #include "passes/fxaa.h"
-#include "passes/gbuffer_needs.h"
 #include "vk/timestamps.h"
 
 namespace taa {
-
-// An image the harness reads back; `bits`: an integer mask read as float bit values.
-struct AdaptiveCapture {
-  const char* name;
-  vk::Image* image;
-  bool bits;
-};
 
 struct AdaptiveFrame {
   const script::FrameState* state = nullptr;
@@ -33,7 +26,7 @@ struct AdaptiveFrame {
   float lodBias = 0.0f;
 };
 
-class AdaptivePass {
+class AdaptivePass final : public ResolveFollower {
  public:
   // `capture`: keep a copy of the resolve's output before tracing and read it back
   // with the mask (for the adaptive_unmarked invariant and tests).
@@ -43,16 +36,19 @@ class AdaptivePass {
   // `resolved` is the resolve's output; returns the frame's output.
   vk::Image& record(VkCommandBuffer cmd, vk::GpuTimer& timer, const AdaptiveFrame& frame,
                     const SegmentationInputs& in, vk::Image& resolved);
-  vk::Image* debugView() { return segmentation_.debugView(); }
+  // The same from the frame, the resolve (its rejection mask) and the colour it read.
+  vk::Image& record(const FrameView& frame, ResolveStage& resolve, vk::Image& resolveInput,
+                    vk::Image& resolved) override;
+  vk::Image* debugView() override { return segmentation_.debugView(); }
   // Segmentation compares material ids and normal derivatives.
-  GBufferNeeds needs() const { return {.normal = true, .ids = true}; }
+  GBufferNeeds needs() const override { return {.normal = true, .ids = true}; }
 
   // After the frame completed: the shares of pixels traced and FXAA'd.
-  std::vector<std::pair<std::string, double>> stats() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
   // "taa_resolve" (before tracing) and "segmentation" (the ADAPTIVE_MASK_* value per
   // pixel), when capturing; read back at render size with the frame.
-  std::vector<AdaptiveCapture> captures();
-  std::vector<std::string> describe() const;
+  std::vector<StageCapture> captures() override;
+  std::vector<std::string> describe() const override;
 
  private:
   const spec::CaseSpec& spec_;

@@ -26,11 +26,7 @@ run restores first. See docs/mutation.md.
 
 import argparse
 import json
-import os
-import re
-import shutil
 import signal
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -38,14 +34,10 @@ from pathlib import Path
 sys.dont_write_bytecode = True  # no __pycache__ in the tree
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import mutate_ops as ops  # noqa: E402
+from mutate_report import load_judged, summarize, write_reports  # noqa: E402
+from mutate_runner import Runner, log  # noqa: E402
 
 ROOT = ops.repo_root()
-JUDGED = ROOT / "ci" / "mutate-equivalent.json"
-# Unit tests per mutated folder: the suites of the matching tests/ folder (run first: cheap).
-UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
-                  "harness/golden": ["tests/golden", "tests/harness"],
-                  "harness/invariants": ["tests/invariants"]}
-VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 
 class Interrupted(Exception):
@@ -57,255 +49,6 @@ def _on_signal(signum, _frame):
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     raise Interrupted(f"signal {signum}")
-
-
-def log(*parts):
-    print(time.strftime("%H:%M:%S"), *parts, flush=True)
-
-
-def pass_word(rel):
-    """The pass a shader file belongs to, as run logs and tests name it: cas.comp -> cas,
-    tscmaa/zshape.glsl -> tscmaa, taa/rectify.glsl -> taa, motion_blur.comp -> motion."""
-    path = Path(rel)
-    word = path.parent.name if path.parent.name not in ("shaders", "common") else path.stem
-    return word.split("_")[0]
-
-
-def test_sources(rel):
-    """Harness files: the tests of the matching tests/ folder. Shader files: the GPU tests
-    (tests/renderer, tests/effects) whose file name holds the pass's or the file's name."""
-    if rel.startswith("shaders/"):
-        words = (pass_word(rel), Path(rel).stem)
-        return [src for d in ("tests/renderer", "tests/effects")
-                for src in sorted((ROOT / d).glob("*_test.cpp"))
-                if any(src.name.startswith(w + "_") or "_" + w + "_" in src.name for w in words)]
-    return [src for d in UNIT_TEST_DIRS.get(str(Path(rel).parent), [])
-            for src in sorted((ROOT / d).glob("*_test.cpp"))]
-
-
-def unit_suites(rel):
-    suites = []
-    for src in test_sources(rel):
-        for line in src.read_text().splitlines():
-            if line.startswith(("TEST(", "TEST_F(", "TEST_P(")):
-                suite = line.split("(", 1)[1].split(",", 1)[0].strip()
-                if suite not in suites:
-                    suites.append(suite)
-    return suites
-
-
-def strip_volatile(value):
-    if isinstance(value, dict):
-        return {k: strip_volatile(v) for k, v in value.items()
-                if not any(k == key or k.endswith("_" + key) for key in VOLATILE_KEYS)}
-    if isinstance(value, list):
-        return [strip_volatile(v) for v in value]
-    return value
-
-
-def case_outputs(run_dir):
-    """name -> the case's results without timings and with the output folder written as <out>
-    (frame hashes, status, metrics, invariants), from every shard of one run."""
-    out = {}
-    for f in sorted(run_dir.glob("shard*/results.json")):
-        text = re.sub(re.escape(str(run_dir)) + r"/shard\d+", "<out>", f.read_text())
-        for c in json.loads(text).get("cases", []):
-            out[c["name"]] = strip_volatile(c)
-    return out
-
-
-class Runner:
-    def __init__(self, args):
-        self.args = args
-        self.build = Path(args.build).resolve()
-        self.out = Path(args.out).resolve()
-        self.harness = self.build / "harness" / "taa-harness"
-        self.tests = self.build / "tests" / "taa_tests"
-        self.cases = sorted(Path(args.cases).resolve().glob("*.json"))
-        self.env = dict(os.environ, CI="false")  # a missing golden is a skip, as locally
-
-    def ninja(self, targets, log_file):
-        with open(log_file, "w") as f:
-            return subprocess.run(["ninja", "-C", str(self.build), *targets], stdout=f,
-                                  stderr=subprocess.STDOUT).returncode == 0
-
-    def run_cases(self, ordered, out_dir, fail_fast, timeout):
-        """Runs the cases in --jobs shards; with fail_fast the first failing shard stops all."""
-        shutil.rmtree(out_dir, ignore_errors=True)
-        jobs = max(1, min(self.args.jobs, len(ordered)))
-        procs = []
-        for j in range(jobs):
-            shard_dir = out_dir / f"shard{j}"
-            shard_dir.mkdir(parents=True)
-            cmd = [str(self.harness), "run", *map(str, ordered[j::jobs]), "--out", str(shard_dir)]
-            if fail_fast:
-                cmd.append("--fail-fast")
-            log_f = open(shard_dir / "run.log", "w")
-            procs.append((subprocess.Popen(cmd, stdout=log_f, stderr=subprocess.STDOUT,
-                                           env=self.env, start_new_session=True), log_f))
-        deadline, codes = time.monotonic() + timeout, [None] * jobs
-        try:
-            while any(c is None for c in codes):
-                for j, (p, _) in enumerate(procs):
-                    if codes[j] is None:
-                        codes[j] = p.poll()
-                if fail_fast and any(c not in (None, 0) for c in codes):
-                    break
-                if time.monotonic() > deadline:
-                    return "timeout", out_dir
-                time.sleep(0.5)
-        finally:
-            for p, log_f in procs:
-                if p.poll() is None:
-                    os.killpg(p.pid, signal.SIGTERM)
-                    p.wait()
-                log_f.close()
-        bad = [c for c in codes if c not in (None, 0)]
-        return (bad[0] if bad else 0), out_dir
-
-    def baseline(self):
-        """The unmutated suite's outputs, and its cases ordered fastest first (so that
-        fail-fast meets a cheap failing case early)."""
-        base_dir = self.out / "baseline"
-        results = sorted(base_dir.glob("shard*/results.json"))
-        if not results or self.args.fresh_baseline:
-            log("baseline: building and running the unmutated suite")
-            if not self.ninja(["taa-harness"], self.out / "baseline-build.log"):
-                sys.exit(f"mutate: the unmutated tree does not build (see {self.out}/baseline-build.log)")
-            start = time.monotonic()
-            rc, _ = self.run_cases(self.cases, base_dir, False, 24 * 3600)
-            (self.out / "baseline-seconds").write_text(f"{time.monotonic() - start:.1f}\n")
-            if rc != 0:
-                sys.exit(f"mutate: the unmutated suite fails (exit {rc}, see {base_dir}): fix that first")
-            results = sorted(base_dir.glob("shard*/results.json"))
-        outputs = case_outputs(base_dir)
-        seconds = {}
-        for f in results:
-            for c in json.loads(f.read_text())["cases"]:
-                seconds[c["name"]] = c.get("seconds", 0.0)
-        ordered = sorted(self.cases, key=lambda p: (seconds.get(p.stem, 1e9), p.stem))
-        self.logs = {}
-        for f in results:
-            for c in json.loads(f.read_text())["cases"]:
-                self.logs[c["name"]] = [ln for ln in c.get("log", []) if ln.startswith("pass ")]
-        total = float((self.out / "baseline-seconds").read_text()) if (
-            self.out / "baseline-seconds").exists() else sum(seconds.values())
-        return outputs, ordered, total
-
-    def order_for(self, mutant, ordered):
-        """Cases whose run log names the mutated file's pass first ("pass cas" for cas.comp,
-        "pass tscmaa" for tscmaa/*.glsl): an order only, every case still runs when none fails."""
-        word = "pass " + pass_word(mutant.file)
-        uses = [c for c in ordered if any(ln.startswith(word) for ln in self.logs.get(c.stem, []))]
-        return uses + [c for c in ordered if c not in uses]
-
-    def shader_commands(self):
-        """The build's glslang command per SPIR-V file, and the shader files each one reads
-        (its source and every file it includes, transitively)."""
-        text = subprocess.run(["ninja", "-C", str(self.build), "-t", "commands", "taa_shaders"],
-                              capture_output=True, text=True, check=True).stdout
-        commands = [ln for ln in text.splitlines() if "glslangValidator" in ln]
-        shaders = ROOT / "shaders"
-
-        def reads(f, seen):
-            if f in seen or not f.exists():
-                return seen
-            seen.add(f)
-            for line in f.read_text().splitlines():
-                m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
-                if m:
-                    for base in (f.parent, shaders):
-                        if (base / m.group(1)).exists():
-                            reads((base / m.group(1)).resolve(), seen)
-                            break
-            return seen
-
-        return [(c, {p.relative_to(ROOT).as_posix() for p in reads(Path(c.split()[-1]).resolve(), set())})
-                for c in commands]
-
-    def build_shader_mutant(self, mutant, work):
-        """Shader mutants never touch the tree or the build folder: the mutation goes into a
-        copy of shaders/, the SPIR-V it changes into a copy of the build's, which the harness
-        loads through TAA_SHADER_DIR. (So shared.h mutants change the GLSL side only.)"""
-        src, spv = work / "src", work / "spv"
-        for d in (src, spv):
-            shutil.rmtree(d, ignore_errors=True)
-        shutil.copytree(ROOT / "shaders", src / "shaders")
-        shutil.copytree(self.build / "shaders", spv, ignore=shutil.ignore_patterns("CMakeFiles"))
-        ops.apply(src, mutant)
-        if not hasattr(self, "_shader_commands"):
-            self._shader_commands = self.shader_commands()
-        with open(work / "build.log", "w") as log_f:
-            for command, reads in self._shader_commands:
-                if mutant.file not in reads:
-                    continue
-                command = command.replace(str(self.build / "shaders"), str(spv))
-                command = command.replace(str(ROOT / "shaders"), str(src / "shaders"))
-                log_f.write(command + "\n")
-                log_f.flush()
-                if subprocess.run(command, shell=True, stdout=log_f, stderr=subprocess.STDOUT).returncode:
-                    return False
-        return True
-
-    def unit_tests(self, mutant, work):
-        suites = unit_suites(mutant.file)
-        if not suites:
-            return None
-        flt = ":".join(f"{s}.*:*/{s}.*" for s in suites)
-        with open(work / "unit.log", "w") as f:
-            try:
-                rc = subprocess.run([str(self.tests), f"--gtest_filter={flt}"], stdout=f,
-                                    stderr=subprocess.STDOUT, env=self.env,
-                                    timeout=self.args.unit_timeout).returncode
-            except subprocess.TimeoutExpired:
-                return "caught", "unit tests timed out (a hang)"
-        if rc == 0:
-            return None
-        failed = [ln.split("]", 1)[1].strip() for ln in (work / "unit.log").read_text()
-                  .splitlines() if ln.startswith("[  FAILED  ]") and "." in ln]
-        return "caught", "unit test " + (failed[0] if failed else f"exit {rc}")
-
-    def judge(self, mutant, base_outputs, ordered, total_seconds):
-        ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
-        work = self.out / "work"
-        if mutant.kind == "shader":
-            self.env["TAA_SHADER_DIR"] = str(work / "spv")
-            if not self.build_shader_mutant(mutant, work):
-                return "stillborn", "does not compile"
-        else:
-            self.env.pop("TAA_SHADER_DIR", None)
-            if not self.ninja(["taa-harness", "taa_tests"], work / "build.log"):
-                return "stillborn", "does not build"
-        if mutant.kind == "harness":
-            verdict = self.unit_tests(mutant, work)
-            if verdict:
-                return verdict
-        rc, run_dir = self.run_cases(ordered, work / "run", True, max(600.0, 4 * total_seconds))
-        if rc == "timeout":
-            return "caught", "the suite timed out (a hang)"
-        if rc != 0:
-            first = ""
-            for log_file in sorted(run_dir.glob("shard*/run.log")):
-                for line in log_file.read_text().splitlines():
-                    if line.startswith(("FAIL ", "ERROR ")):
-                        first = line[:160]
-                        break
-            return "caught", f"run exit {rc}" + (f": {first}" if first else "")
-        if mutant.kind == "shader" and self.tests.exists():
-            # The cases passed: the GPU unit tests of the mutated pass get their say (they
-            # check what no image shows, such as TSCMAA's dispatch sizes).
-            verdict = self.unit_tests(mutant, work)
-            if verdict:
-                return verdict
-        outputs = case_outputs(run_dir)
-        changed = [n for n in base_outputs if outputs.get(n) != base_outputs[n]]
-        if changed:
-            first = changed[0]
-            keys = sorted(k for k in set(outputs.get(first, {})) | set(base_outputs[first])
-                          if outputs.get(first, {}).get(k) != base_outputs[first].get(k))
-            return "survived", (f"outputs changed but passed: {', '.join(changed[:5])} "
-                                f"({first}: {', '.join(keys)})")
-        return "no-change", "every case's frame hashes and verdicts equal the unmutated run's"
 
 
 def backup_path(out):
@@ -320,50 +63,6 @@ def restore_leftover(out):
         (ROOT / data["file"]).write_bytes(bytes.fromhex(data["original"]))
         b.unlink()
         log(f"restored {data['file']} left mutated by an interrupted run")
-
-
-def load_judged():
-    return json.loads(JUDGED.read_text()) if JUDGED.exists() else {}
-
-
-def classify(record, judged):
-    """no-change mutants become `equivalent` when judged so for the same line, else `escape`."""
-    if record["status"] != "no-change":
-        return record["status"]
-    j = judged.get(record["id"])
-    if j and j.get("before") == record["before"]:
-        record["why"] = j["why"]
-        return "equivalent"
-    return "escape"
-
-
-def summarize(records, judged, args):
-    counts = {}
-    for r in records:
-        r["verdict"] = classify(r, judged)
-        counts[r["verdict"]] = counts.get(r["verdict"], 0) + 1
-    caught = counts.get("caught", 0)
-    scored = caught + counts.get("survived", 0) + counts.get("escape", 0)
-    score = caught / scored if scored else None
-    return {"seed": args.seed, "max": args.max, "counts": counts, "scored": scored,
-            "score": score, "mutants": records}
-
-
-def write_reports(out, summary):
-    (out / "mutation.json").write_text(json.dumps(summary, indent=1) + "\n")
-    c = summary["counts"]
-    lines = ["# Mutation self-test", "",
-             f"seed {summary['seed']}, {len(summary['mutants'])} mutants: "
-             + ", ".join(f"{k} {v}" for k, v in sorted(c.items())), ""]
-    if summary["score"] is not None:
-        lines += [f"**score: {c.get('caught', 0)} / {summary['scored']} = "
-                  f"{100 * summary['score']:.1f}%** (caught / (caught + survived + escapes))", ""]
-    lines += ["| verdict | id | line | mutation | detail |", "|---|---|---|---|---|"]
-    for r in summary["mutants"]:
-        detail = r.get("why") or r["detail"]
-        lines.append(f"| {r['verdict']} | `{r['id']}` | {r['line']} | `{r['before']}` -> "
-                     f"`{r['after']}` | {detail.replace('|', '/')} |")
-    (out / "mutation.md").write_text("\n".join(lines) + "\n")
 
 
 def main():
@@ -390,6 +89,10 @@ def main():
     args = p.parse_args()
     if args.rejudge:
         report = Path(args.out).resolve()
+        if not (report / "mutation.json").is_file():
+            print(f"mutate: {report / 'mutation.json'} does not exist: --rejudge rewrites the report "
+                  "of an earlier run; pass that run's --out", file=sys.stderr)
+            return 2
         stored = json.loads((report / "mutation.json").read_text())
         summary = summarize(stored["mutants"], load_judged(), args)
         summary.update(seed=stored["seed"], max=stored["max"])
@@ -429,20 +132,15 @@ def main():
             start = time.monotonic()
             if m.kind == "shader":
                 status, detail = runner.judge(m, base_outputs, ordered, total)
-                rec = dict(m.as_json(), status=status, detail=detail,
-                           seconds=round(time.monotonic() - start, 1))
-                records.append(rec)
-                log(f"[{n}/{len(chosen)}] {status:9} {m.id} ({rec['seconds']} s): {detail}")
-                write_reports(out, summarize(records, judged, args))
-                continue
-            original = (ROOT / m.file).read_bytes()
-            backup_path(out).write_text(json.dumps({"file": m.file, "original": original.hex()}))
-            try:
-                ops.apply(ROOT, m)
-                status, detail = runner.judge(m, base_outputs, ordered, total)
-            finally:
-                ops.restore(ROOT, m, original)
-                backup_path(out).unlink()
+            else:
+                original = (ROOT / m.file).read_bytes()
+                backup_path(out).write_text(json.dumps({"file": m.file, "original": original.hex()}))
+                try:
+                    ops.apply(ROOT, m)
+                    status, detail = runner.judge(m, base_outputs, ordered, total)
+                finally:
+                    ops.restore(ROOT, m, original)
+                    backup_path(out).unlink()
             rec = dict(m.as_json(), status=status, detail=detail,
                        seconds=round(time.monotonic() - start, 1))
             records.append(rec)

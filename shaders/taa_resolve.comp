@@ -54,6 +54,8 @@ TaaSettings resolveSettings() {
 #include "taa/validation.glsl"
 #include "taa/consistency.glsl"
 #include "taa/blend_weight.glsl"
+#include "taa/unjitter.glsl"
+#include "taa/output_noise.glsl"
 
 struct Current {
   ivec2 pixel;   // render pixel providing the sample
@@ -81,6 +83,9 @@ Current currentSample(ivec2 q, ivec2 hi) {
 }
 
 void writeOutput(TaaSettings s, ivec2 q, vec3 color, float rejected, float clampDistance, vec2 motionPx) {
+  // The output is also the next frame's history, so the noise enters it (as the seed's
+  // resolve, which adds it to the image it writes).
+  if (s.noise) color += vec3(outputNoise(q, uint(taaUniforms.jitter.z), s.noise_amount));
   vec3 bounded = boundColor(color);
   imageStore(historyOut, q, vec4(s.history_format == HISTORY_FORMAT_RGBA16F ? roundToHalf(bounded) : bounded, 1.0));
   if (kDebug == DEBUG_OUTPUT_VELOCITY) imageStore(debugOut, q, vec4(motionPx * taaUniforms.view.z * 0.5 + 0.5, 0.0, 1.0));
@@ -110,7 +115,12 @@ void main() {
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
       int k = (j + 1) * 3 + (i + 1);
-      vec3 c = texelFetch(colorTex, clamp(cur.pixel + ivec2(i, j), ivec2(0), hi), 0).rgb;
+      ivec2 tp = clamp(cur.pixel + ivec2(i, j), ivec2(0), hi);
+      // The centre tap is the current sample the blend takes (and the box contains); the
+      // eight around it are the neighbourhood. Unjittered, each is the colour at its pixel's
+      // centre instead of its jittered sample.
+      bool unjittered = k == 4 ? s.unjitter_current : s.unjitter_neighborhood;
+      vec3 c = unjittered ? unjitteredColor(colorTex, tp, taaUniforms.jitter.xy, hi) : texelFetch(colorTex, tp, 0).rgb;
       valid[k] = !any(isnan(c));
       c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(kHalfMax));  // +Inf -> half max
       taps[k] = toWorking(s, c);
@@ -167,10 +177,11 @@ void main() {
   if (s.luma_weight) alpha = lottesAlpha(s, luma(current), luma(fromWorking(s, wRectified)));
   if (s.reduce_blend_near_clamp)
     alpha = reduceBlendNearClamp(alpha, workingLuma(s, wHistory), workingLuma(s, box.lo), workingLuma(s, box.hi));
-  if (s.velocity_alpha) {
+  if (s.velocity_alpha || s.velocity_attenuation) {
     float speed = s.velocity_in_alpha ? texelFetch(colorTex, cur.pixel, 0).a * taaUniforms.outputSize.x * taaUniforms.renderSize.z
                                    : length(r.motionPx);
-    alpha = velocityAlpha(s, alpha, speed);
+    if (s.velocity_alpha) alpha = velocityAlpha(s, alpha, speed);
+    if (s.velocity_attenuation) alpha = velocityAttenuation(alpha, speed);
   }
   alpha *= cur.weight;
   if (rejected) alpha = s.rejection_alpha;

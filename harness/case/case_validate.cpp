@@ -125,9 +125,9 @@ void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& p
   if (!modeRule(s.taa.mode).plainFull)
     p.add(key, "only the full resolve reads the speed (anything else would pass it on as "
                "alpha); set taa.mode: full or remove it");
-  if (!s.taa.velocity_alpha)
-    p.add(key, "the speed only drives taa.velocity_alpha; set taa.velocity_alpha: true or "
-               "remove it");
+  if (!s.taa.velocity_alpha && !s.taa.velocity_attenuation)
+    p.add(key, "the speed only drives taa.velocity_alpha and taa.velocity_attenuation; set "
+               "one of them true or remove it");
   if (s.taa.use_velocity != UseVelocity::Off)
     p.add(key, "the resolve would read the velocity buffer anyway; set taa.use_velocity: off "
                "or remove it");

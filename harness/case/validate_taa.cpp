@@ -41,6 +41,12 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
           "adaptive traces and segments at output size against the G-buffer; remove "
           "render.upsample and render.scale_schedule");
   const auto& a = s.adaptive;
+  // The segmentation traces pixels the resolve rejected on screen; off-screen history is
+  // FXAA's, so without a test that rejects on screen there is nothing to trace.
+  const TaaSpec e = effectiveTaa(s.taa);
+  r.needs("adaptive.trace_disoccluded", e.depth_culling || e.consistency || e.anti_ghosting,
+          "taa.depth_culling, taa.consistency or taa.anti_ghosting is true (the resolve's only "
+          "on-screen rejections)");
   if (!a.trace_all) return;
   for (const char* key :
        {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth",
@@ -89,6 +95,21 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s,
             enumToString(taa.mode) + "' cannot: use basic or full");
   tscmaaRules(r, s);
   adaptiveRules(r, s, resamples);
+  // Unjittering undoes the jitter of a frame rendered at output size; upsampling places the
+  // jittered samples itself, and an unjittered frame has nothing to undo.
+  for (const char* key : {"taa.unjitter_current", "taa.unjitter_neighborhood"}) {
+    if (resamples && r.set(key))
+      r.add(key,
+            "rebuilds the pixel centre of a frame at output size, which upsampling already "
+            "does its own way; remove the key or render.upsample and render.scale_schedule");
+    r.needs(key, s.jitter.pattern != JitterPattern::None && s.jitter.scale > 0.0f,
+            "the case jitters (jitter.pattern is not none and jitter.scale above 0)");
+  }
+  // The rejection and segmentation views are masks of a few flat colours; a scale has nothing
+  // to scale there.
+  if (s.debug.output == DebugOutput::Rejection || s.debug.output == DebugOutput::Segmentation)
+    r.needs("debug.scale", false,
+            "debug.output is velocity or clamp_distance (rejection and segmentation are masks)");
 
   // Each setting of common/taa_settings.h means something only in its modes, and only
   // where its rule holds for the settings the resolve runs with.

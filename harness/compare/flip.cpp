@@ -45,27 +45,6 @@ struct FloatKernel {
   }
 };
 
-// dst[x] = sum_i k(i) * at(i)[x] for i in [-r, r]: a correlation, at(i) the source shifted by i.
-// Taps are accumulated over the whole row (outer loop over taps) so the inner loops vectorize.
-template <class At>
-void applyKernel(const FloatKernel& k, int n, At at, float* dst) {
-  const float* c = at(0);
-  const float w0 = k.odd || k.zeroSum ? 0.0f : k.w[0];
-  for (int x = 0; x < n; ++x) dst[x] = w0 * c[x];
-  for (int i = 1; i <= k.radius(); ++i) {
-    const float* plus = at(i);
-    const float* minus = at(-i);
-    const float wi = k.w[size_t(i)];
-    if (k.odd) {
-      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] - minus[x]);
-    } else if (k.zeroSum) {
-      for (int x = 0; x < n; ++x) dst[x] += wi * ((plus[x] - c[x]) + (minus[x] - c[x]));
-    } else {
-      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] + minus[x]);
-    }
-  }
-}
-
 struct FloatKernels {
   FloatKernel csfH[4];  // Y, Cx, Cz first term, Cz second term
   FloatKernel csfV[4];

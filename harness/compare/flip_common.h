@@ -42,6 +42,29 @@ struct Kernel {
   int radius() const { return int(w.size()) - 1; }
 };
 
+// dst[x] = sum_i k(i) * at(i)[x] for i in [-r, r] (a correlation), where at(i) is the source
+// row shifted by i; in the kernel's precision T (double for the reference, float for the fast
+// path). Taps are accumulated over the whole row (outer loop over taps) so the inner loops
+// vectorize. K is Kernel or a kernel of T with the same members.
+template <class T, class K, class At>
+void applyKernel(const K& k, int n, At at, T* dst) {
+  const T* c = at(0);
+  const T w0 = k.odd || k.zeroSum ? T(0) : T(k.w[0]);
+  for (int x = 0; x < n; ++x) dst[x] = w0 * c[x];
+  for (int i = 1; i <= k.radius(); ++i) {
+    const T* plus = at(i);
+    const T* minus = at(-i);
+    const T wi = T(k.w[size_t(i)]);
+    if (k.odd) {
+      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] - minus[x]);
+    } else if (k.zeroSum) {
+      for (int x = 0; x < n; ++x) dst[x] += wi * ((plus[x] - c[x]) + (minus[x] - c[x]));
+    } else {
+      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] + minus[x]);
+    }
+  }
+}
+
 struct CsfTerm {
   Kernel horizontal;  // carries the term's weight and the kernel's normalization
   Kernel vertical;

@@ -25,27 +25,6 @@ struct Plane {
   const double* row(int y) const { return v.data() + size_t(y) * size_t(w); }
 };
 
-// dst[x] = sum_i k(i) * at(i)[x] for i in [-r, r] (a correlation), where at(i) is the source
-// sequence shifted by i. Taps are accumulated over the whole row so the inner loops vectorize.
-template <class At>
-void applyKernel(const Kernel& k, int n, At at, double* dst) {
-  const double* c = at(0);
-  const double w0 = k.odd || k.zeroSum ? 0.0 : k.w[0];
-  for (int x = 0; x < n; ++x) dst[x] = w0 * c[x];
-  for (int i = 1; i <= k.radius(); ++i) {
-    const double* plus = at(i);
-    const double* minus = at(-i);
-    const double wi = k.w[size_t(i)];
-    if (k.odd) {
-      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] - minus[x]);
-    } else if (k.zeroSum) {
-      for (int x = 0; x < n; ++x) dst[x] += wi * ((plus[x] - c[x]) + (minus[x] - c[x]));
-    } else {
-      for (int x = 0; x < n; ++x) dst[x] += wi * (plus[x] + minus[x]);
-    }
-  }
-}
-
 // Along rows, clamp-to-edge.
 void filterRows(const Plane& in, const Kernel& k, Plane& out) {
   const int r = k.radius();

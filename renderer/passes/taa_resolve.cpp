@@ -113,7 +113,7 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
   u.renderSize = glm::vec4(render, 1.0f / render);
   u.prevRenderSize = glm::vec4(prev, 1.0f / prev);
   u.outputSize = glm::vec4(out, 1.0f / out);
-  u.jitter = glm::vec4(s.jitter, 0.0f, 0.0f);
+  u.jitter = glm::vec4(s.jitter, float(s.frame), 0.0f);  // z: the frame index (taa.noise)
   u.view = glm::vec4(s.camera.nearPlane, s.camera.farPlane, spec.debug.scale, 0.0f);
 #define TAA_PARAM_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
 #define TAA_PARAM_B(key, def, id, name, modes, rule, text, doc, impl)

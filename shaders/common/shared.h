@@ -115,7 +115,7 @@ TAA_BLOCK(TaaUniforms) {
   vec4 renderSize;        // this frame's render size: w, h, 1/w, 1/h
   vec4 prevRenderSize;    // last frame's render size (previous G-buffer content)
   vec4 outputSize;        // w, h, 1/w, 1/h
-  vec4 jitter;            // xy: this frame's jitter (render pixels); zw: 0
+  vec4 jitter;            // xy: this frame's jitter (render pixels); z: frame index; w: 0
   vec4 view;              // near, far, debug scale, 0
   vec4 settings[TAA_SETTING_VEC4S];  // float settings at their slots (common/taa_settings.h)
 };

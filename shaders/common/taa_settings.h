@@ -73,7 +73,7 @@
 // something, as a C++ lambda (kAlways: none); rule text: that condition in words.
 // Uniform slots index TaaUniforms::settings (4 floats a vec4); a new float takes the
 // next free slot, and TAA_SETTING_VEC4S grows when they are full.
-#define TAA_SETTING_VEC4S 3
+#define TAA_SETTING_VEC4S 4
 
 // clang-format off
 #define TAA_SETTINGS(E, B, F)                                                                      \
@@ -162,7 +162,8 @@
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "average the 3x3 box with the 5-tap cross box", "shaders/taa/neighborhood.glsl")               \
   E(color_space, ColorSpace, TAA_COLOR_SPACE_VALUES, COLOR_SPACE_YCOCG, 13, kColorSpace,           \
-    kFullOnly, kAlways, "", "space of the box and clipping: rgb or ycocg",                         \
+    kFullOnly, [](const TaaSpec& t) { return t.rectify != Rectify::None; },                        \
+    "taa.rectify is clamp or clip", "space of the box and clipping: rgb or ycocg",                 \
     "shaders/taa/color_space.glsl")                                                                \
   B(shrink_chroma, false, 14, kShrinkChroma, kFullOnly,                                            \
     [](const TaaSpec& t) {                                                                         \
@@ -191,6 +192,10 @@
     [](const TaaSpec& t) { return t.velocity_alpha; }, "taa.velocity_alpha is true",               \
     "speed (output pixels per frame) at which velocity_alpha reaches alpha 1",                     \
     "shaders/taa/blend_weight.glsl")                                                               \
+  B(velocity_attenuation, false, 24, kVelocityAttenuation, kFullOnly, kAlways, "",                \
+    "seed 001: the history's weight is divided by 1 + the distance (output pixels) to the "        \
+    "pixel's position last frame, so 1 pixel away halves it",                                      \
+    "shaders/taa/blend_weight.glsl")                                                               \
   B(reduce_blend_near_clamp, false, 17, kReduceBlend, kFullOnly,                                   \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "Karis anti-flicker: lower alpha (to half on the edge) as the history's luma nears the "       \
@@ -201,6 +206,23 @@
     "for "                                                                                         \
     "velocity_alpha (needs post.motion_blur, mode full, velocity_alpha and use_velocity off)",     \
     "shaders/motion_blur.comp")                                                                    \
+  B(unjitter_current, false, 25, kUnjitterCurrent, kFullOnly, kAlways, "",                        \
+    "seed 000 (a debugging aid): the blend's current sample is the colour at the pixel centre, "   \
+    "bilinear between the jittered samples, instead of the pixel's jittered sample",               \
+    "shaders/taa/unjitter.glsl")                                                                   \
+  B(unjitter_neighborhood, false, 26, kUnjitterNeighborhood, kFullOnly,                            \
+    [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
+    "seed 000 (a debugging aid): the 8 neighbours of the 3x3 box are the colours at their pixel "  \
+    "centres, bilinear between the jittered samples",                                              \
+    "shaders/taa/unjitter.glsl")                                                                   \
+  B(noise, false, 27, kNoise, kBlending, kAlways, "",                                              \
+    "seed 000 (experimental): add noise to the output, uniform in +-noise_amount, the same in "    \
+    "every channel, a hash of the pixel and the frame index",                                      \
+    "shaders/taa/output_noise.glsl")                                                               \
+  F(noise_amount, 0.00196078431f, 0.0f, 1.0f, 12, TAA_PARAM_NOISE_AMOUNT, kBlending,               \
+    [](const TaaSpec& t) { return t.noise; }, "taa.noise is true",                                 \
+    "largest noise added per channel (the seed's code: 1/510, half an 8-bit step)",                \
+    "shaders/taa/output_noise.glsl")                                                               \
   E(history_format, HistoryFormat, TAA_HISTORY_FORMAT_VALUES, HISTORY_FORMAT_RGBA16F, 22,          \
     kHistoryFormat, kResolving, kAlways, "", "precision of the history buffer",                    \
     "renderer/passes/taa_resolve.cpp")

@@ -28,4 +28,12 @@ float velocityAlpha(TaaSettings s, float alpha, float speedPx) {
   return mix(alpha, 1.0, clamp(speedPx / s.velocity_alpha_px, 0.0, 1.0));
 }
 
+// Seed 001 (Intel's updated dynamic resolution sample): "if the pixel in the last frame was
+// 1 pixel away it is attenuated by 1/2", with the distance in pixels of the resolution in use.
+// The seed states that one point only; the history weight (1 - alpha) / (1 + distance) is
+// the simplest curve through it that keeps a still pixel's weight (docs/techniques.md).
+float velocityAttenuation(float alpha, float distancePx) {
+  return 1.0 - (1.0 - alpha) / (1.0 + max(distancePx, 0.0));
+}
+
 #endif

@@ -32,7 +32,9 @@ vec3 fromDomain(TaaSettings s, vec3 d) {
   return d;
 }
 
-bool isYCoCg(TaaSettings s) { return s.color_space == COLOR_SPACE_YCOCG; }
+// Without rectification there is no box to shape, and a YCoCg round trip would only add
+// rounding to the history (validation refuses taa.color_space there).
+bool isYCoCg(TaaSettings s) { return s.color_space == COLOR_SPACE_YCOCG && s.rectify != RECTIFY_NONE; }
 vec3 toWorking(TaaSettings s, vec3 rgb) {
   vec3 d = toDomain(s, rgb);
   return isYCoCg(s) ? rgbToYCoCg(d) : d;

@@ -9,18 +9,29 @@ float linearDepth(TaaUniforms u, float d) {
   return n * f / (n + d * (f - n));
 }
 
+// What velocity sampling maximises: squared motion (longest) or reversed-Z depth (closest).
+float velocityKey(TaaSettings s, sampler2D velocityTex, sampler2D depthTex, ivec2 q) {
+  if (s.velocity_sampling == VELOCITY_SAMPLING_LONGEST_3X3) {
+    vec2 v = texelFetch(velocityTex, q, 0).xy;
+    return dot(v, v);
+  }
+  return texelFetch(depthTex, q, 0).r;
+}
+
 // The render pixel whose velocity this pixel uses: itself, the longest motion in
 // 3x3, or the nearest surface in 3x3 (largest reversed-Z depth), which keeps
 // silhouettes of moving objects from trailing.
 ivec2 velocityPixel(TaaSettings s, sampler2D velocityTex, sampler2D depthTex, ivec2 p, ivec2 hi) {
   if (s.velocity_sampling == VELOCITY_SAMPLING_PIXEL) return p;
+  // The pixel itself is the first candidate and a neighbour must beat it strictly, so ties
+  // (a still view, where every velocity is zero; a flat depth) keep the pixel's own depth and
+  // ids instead of the (-1,-1) neighbour's.
   ivec2 best = p;
-  float bestKey = -1.0;
+  float bestKey = velocityKey(s, velocityTex, depthTex, p);
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
       ivec2 q = clamp(p + ivec2(i, j), ivec2(0), hi);
-      float key = s.velocity_sampling == VELOCITY_SAMPLING_LONGEST_3X3 ? dot(texelFetch(velocityTex, q, 0).xy, texelFetch(velocityTex, q, 0).xy)
-                                         : texelFetch(depthTex, q, 0).r;
+      float key = velocityKey(s, velocityTex, depthTex, q);
       if (key > bestKey) {
         bestKey = key;
         best = q;
@@ -47,10 +58,13 @@ Reprojection reprojectDepth(TaaUniforms u, vec2 uv, float depth) {
 
 // Velocity is in pixels of this frame's render size, so dividing by that size
 // (not the output or allocation size) keeps it right under dynamic resolution.
+// The expected depth is the one the surface had last frame, as on the depth path: the
+// world position under the previous camera. (The velocity buffer is 2D, so a mover's own
+// motion in depth is not in it; this frame's depth, used before, also missed the camera's.)
 Reprojection reprojectVelocity(TaaUniforms u, vec2 uv, vec2 velocityPx, float depth) {
   Reprojection r;
   r.prevUv = uv - velocityPx * u.renderSize.zw;
-  r.expectedDepth = linearDepth(u, depth);
+  r.expectedDepth = reprojectDepth(u, uv, depth).expectedDepth;
   r.motionPx = velocityPx * u.outputSize.xy * u.renderSize.zw;
   return r;
 }

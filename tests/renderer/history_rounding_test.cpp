@@ -21,7 +21,7 @@ test::GpuResolveResult quarterStepResolve(const char* historyFormat) {
     "jitter": {"pattern": "none"},
     "script": {"frames": 2},
     "taa": {"use_velocity": "all", "velocity_sampling": "pixel", "history_filter": "bilinear",
-            "rectify": "none", "color_space": "rgb", "alpha": 0.25, "history_format": ")") +
+            "rectify": "none", "alpha": 0.25, "history_format": ")") +
                            historyFormat + R"("}})";
   test::SyntheticResolve in;
   in.current = Image(8, 2, 4, 1.0f);

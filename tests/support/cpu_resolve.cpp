@@ -334,7 +334,9 @@ void requireMirrored(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
 
 Image cpuResolve(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
   requireMirrored(in, taa);
-  const bool yCoCg = taa.color_space == spec::ColorSpace::YCoCg;
+  // As the shader: without rectification there is no box, so no YCoCg round trip.
+  const bool yCoCg =
+      taa.color_space == spec::ColorSpace::YCoCg && taa.rectify != spec::Rectify::None;
   const Image& color = in.current;
   const vec2 size = sizeOf(color), inv = invSizeOf(color);
   const ivec2 hi(color.width - 1, color.height - 1);

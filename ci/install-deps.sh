@@ -16,6 +16,8 @@ packages=(
   mesa-vulkan-drivers
   vulkan-validationlayers
   glslang-tools
+  # glslang as a library, to compile a user's resolve shader (taa.shader) at run time.
+  glslang-dev
   libglm-dev
   nlohmann-json3-dev
   # PNG reading and writing (renderer/core/png_codec.cpp).

@@ -14,6 +14,9 @@ find_path(MESHOPTIMIZER_INCLUDE_DIR meshoptimizer.h REQUIRED)
 # glTF KHR_draco_mesh_compression decoding (and encoding in its tests).
 find_package(draco REQUIRED)
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+# glslang as a library: a user's resolve (taa.shader) is compiled at run time.
+find_package(Threads REQUIRED)
+find_package(glslang CONFIG REQUIRED)
 
 # OpenImageIO only in the tests, as an independent reader of the files the harness writes.
 if(TAA_BUILD_TESTS)

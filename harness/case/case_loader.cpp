@@ -36,6 +36,7 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
   std::vector<std::pair<std::string, std::string>> refs;  // (key, relative path)
   if (!spec.scene.gltf.empty()) refs.emplace_back("scene.gltf", spec.scene.gltf);
   if (!spec.camera.track.empty()) refs.emplace_back("camera.track", spec.camera.track);
+  if (!spec.taa.shader.empty()) refs.emplace_back("taa.shader", spec.taa.shader);
   for (size_t i = 0; i < spec.movers.size(); ++i) {
     const std::string at = "movers[" + std::to_string(i) + "].";
     if (!spec.movers[i].gltf.empty()) refs.emplace_back(at + "gltf", spec.movers[i].gltf);

@@ -1,4 +1,5 @@
 #include "case/case_validate.h"
+#include "case/validate_user_shader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -252,6 +253,7 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   validateMovers(p, spec.movers, present);
   validateJitter(p, spec.jitter, present);
   for (const auto& [key, msg] : taaProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : userShaderProblems(spec, present)) p.add(key, msg);
   if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only &&
       !runsTaa(modeRule(spec.taa.mode)))
     p.add("material.lod_bias", "applies only with TAA (material.lod_bias_taa_only) and taa.mode is off; enable TAA "

@@ -17,6 +17,7 @@ int cmdRun(const Args& args);
 int cmdBless(const Args& args);
 int cmdNewCase(const Args& args);
 int cmdSweep(const Args& args);
+int cmdScore(const Args& args);
 int cmdBake(const Args& args);
 int cmdCompare(const Args& args);
 

@@ -28,6 +28,7 @@ const std::map<std::string, Command>& commands() {
       {"validate", {cmdValidate, "check case files; --print shows every value in force"}},
       {"new-case", {cmdNewCase, "write a case for a glTF scene with a camera that frames its bounds"}},
       {"sweep", {cmdSweep, "error against run time of technique presets on one script (CSV, table, SVG, report)"}},
+      {"score", {cmdScore, "scorecard of your own resolve shader over the case library next to the built-in one"}},
       {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader; --markdown for the docs table)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
       {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},

@@ -30,12 +30,15 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class HistoryBounded : public Invariant {
  public:
+  // A user's resolve that declares it clamps (taa.shader_clamps) promises the RGB min/max
+  // box; the built-in settings do not describe it.
   explicit HistoryBounded(const CheckedCase& spec)
-      : ycocg_(spec.taa.color_space == ColorSpace::YCoCg),
-        clip_(spec.taa.rectify == Rectify::Clip),
+      : ycocg_(spec.taa.shader.empty() && spec.taa.color_space == ColorSpace::YCoCg),
+        clip_(spec.taa.shader.empty() && spec.taa.rectify == Rectify::Clip),
         shrinkChroma_(ycocg_ && spec.taa.shrink_chroma),
-        lift_(spec.taa.tonemap_weighting == ToneWeight::Karis ? box::Lift::NegativeChannels
-                                                              : box::Lift::ZeroChannels) {}
+        lift_(spec.taa.shader.empty() && spec.taa.tonemap_weighting == ToneWeight::Karis
+                  ? box::Lift::NegativeChannels
+                  : box::Lift::ZeroChannels) {}
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.historyReset) return;
@@ -120,8 +123,12 @@ std::string historyBoundedInapplicable(const CheckedCase& spec) {
   };
   if (!modeRule(t.mode).plainFull)
     return because(std::string("taa.mode is ") + enumToString(t.mode), "set taa.mode to full");
-  if (t.rectify == Rectify::None) return because("taa.rectify is none", "enable taa.rectify");
-  if (t.tonemap_weighting != ToneWeight::None && t.tonemap_weighting != ToneWeight::Karis)
+  if (!t.shader.empty() && !t.shader_clamps)
+    return because("the user's resolve (taa.shader) does not declare that it clamps",
+                   "set taa.shader_clamps to true if its output stays in the 3x3 min/max box");
+  if (t.shader.empty() && t.rectify == Rectify::None)
+    return because("taa.rectify is none", "enable taa.rectify");
+  if (t.shader.empty() && t.tonemap_weighting != ToneWeight::None && t.tonemap_weighting != ToneWeight::Karis)
     return because(std::string("taa.tonemap_weighting is ") + enumToString(t.tonemap_weighting) +
                        ", whose blend is not convex and may leave the box",
                    "set taa.tonemap_weighting to none or karis");

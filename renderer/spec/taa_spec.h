@@ -54,9 +54,29 @@ TAA_DECLARED_ENUM(DebugOutput, TAA_DEBUG_OUTPUT_VALUES)
   inline constexpr int name = slot;
 TAA_SETTINGS(TAA_CXX_SLOT_E, TAA_CXX_SLOT_B, TAA_CXX_SLOT_F)
 
+// One specialization constant of a user's resolve (taa.shader), by its name in the shader.
+struct ShaderParam {
+  std::string name;
+  float value = 0.0f;
+};
+
+template <class V>
+void fields(V& v, ShaderParam& p) {
+  v.field("name", p.name,
+          Meta{"the constant's name in the shader (layout(constant_id = N) const T name)",
+               "renderer/user/user_interface.cpp"});
+  v.field("value", p.value,
+          Meta{"its value: true/false as 1/0 for a bool, a whole number for an int or uint",
+               "renderer/user/user_resolve.cpp"});
+}
+
 struct TaaSpec {
   TaaMode mode = TaaMode::Full;
   TAA_SETTINGS(TAA_CXX_MEMBER_E, TAA_CXX_MEMBER_B, TAA_CXX_MEMBER_F)
+  // A user's own resolve (docs/user-taa.md): replaces the built-in one when set.
+  std::string shader;
+  std::vector<ShaderParam> shader_params;
+  bool shader_clamps = false;
 };
 
 #define TAA_CXX_FIELD_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
@@ -78,6 +98,19 @@ void fields(V& v, TaaSpec& s) {
            "pixels; adaptive: full TAA plus ray-traced samples where a segmentation marks aliasing",
            "renderer/spec/taa_modes.h"});
   TAA_SETTINGS(TAA_CXX_FIELD_E, TAA_CXX_FIELD_B, TAA_CXX_FIELD_F)
+  v.field("shader", s.shader,
+          Meta{"your own resolve: a GLSL compute shader including taa_user.h, relative to the case "
+               "file and inside its folder; replaces the built-in resolve (taa.mode full only, no "
+               "other built-in taa setting)",
+               "renderer/user/user_resolve.cpp"});
+  v.list("shader_params", s.shader_params,
+         Meta{"values for the shader's specialization constants, [{\"name\": ..., \"value\": ...}]; "
+              "checked against what the shader declares",
+              "renderer/user/user_interface.cpp", "", "taa.shader is set"});
+  v.field("shader_clamps", s.shader_clamps,
+          Meta{"the shader promises its output stays inside the current frame's 3x3 RGB min/max box, "
+               "so the history_bounded invariant may check it",
+               "harness/invariants/history_bounded.cpp", "", "taa.shader is set"});
 }
 
 // Adaptive ray tracing (Marrs et al.), active when taa.mode is adaptive: after the

@@ -165,8 +165,13 @@ void specializeLocalSize(ShaderInterface& shader, const SpecConstants& spec) {
 }  // namespace
 
 Pipeline createComputePipeline(Context& ctx, const std::string& shader, const SpecConstants& spec) {
+  return createComputePipelineFromSpirv(ctx, shader, loadSpirv(shader), spec);
+}
+
+Pipeline createComputePipelineFromSpirv(Context& ctx, const std::string& shader,
+                                        const std::vector<uint32_t>& words,
+                                        const SpecConstants& spec) {
   VkDevice device = ctx.device();
-  const auto words = loadSpirv(shader);
   ShaderInterface interface = reflectSpirv(words, shader);
   if (interface.stages != VK_SHADER_STAGE_COMPUTE_BIT)
     throw std::runtime_error(shader + " is not a compute shader");

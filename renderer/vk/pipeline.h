@@ -83,6 +83,10 @@ std::vector<uint32_t> loadSpirv(const std::string& name);
 // a second set is an error naming the shader).
 Pipeline createComputePipeline(Context& ctx, const std::string& shader,
                                const SpecConstants& spec = {});
+// The same from SPIR-V in memory (a user's shader compiled at run time); `name` is for messages.
+Pipeline createComputePipelineFromSpirv(Context& ctx, const std::string& name,
+                                        const std::vector<uint32_t>& words,
+                                        const SpecConstants& spec = {});
 
 struct GraphicsDesc {
   std::string vertexShader;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/shared.h"
 #include "compare/metrics.h"
 #include "core/image_io.h"
 #include "support/gpu.h"

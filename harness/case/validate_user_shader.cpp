@@ -1,0 +1,54 @@
+#include "case/validate_user_shader.h"
+
+#include <filesystem>
+
+#include "case/case_validate.h"
+#include "user/glsl_compiler.h"
+#include "user/user_resolve.h"
+
+namespace taa::cases {
+
+std::vector<std::pair<std::string, std::string>> userShaderProblems(
+    const spec::CheckedCase& spec, const std::set<std::string>& present) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const auto& t = spec.taa;
+  if (t.shader.empty()) {
+    for (const char* k : {"taa.shader_params", "taa.shader_clamps"})
+      if (present.count(k))
+        out.emplace_back(k, "applies only to a user's resolve; set taa.shader or remove it");
+    return out;
+  }
+  if (const std::string why = assetPathProblem(t.shader); !why.empty()) {
+    out.emplace_back("taa.shader", why);
+    return out;
+  }
+  if (t.mode != spec::TaaMode::Full)
+    out.emplace_back(
+        "taa.mode",
+        std::string("a user's resolve (taa.shader) replaces the full resolve, but taa.mode is ") +
+            spec::enumToString(t.mode) + "; set taa.mode to full or remove taa.shader");
+  // The built-in resolve's settings would be accepted and ignored.
+  for (const auto& key : present) {
+    if (key.rfind("taa.", 0) != 0 || key == "taa.mode" || key.rfind("taa.shader", 0) == 0) continue;
+    out.emplace_back(
+        key,
+        "is a setting of the built-in resolve, which taa.shader replaces; remove it "
+        "(or give your shader a specialization constant and set it in taa.shader_params)");
+  }
+  if (spec.debug.output != spec::DebugOutput::None)
+    out.emplace_back("debug.output",
+                     "debug views come from the built-in resolve; remove it with taa.shader");
+  if (!out.empty()) return out;
+  try {
+    const UserShader shader = loadUserShader(spec);
+    for (const auto& p : userParamProblems(t, shader.interface)) {
+      const auto colon = p.find(": ");
+      out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
+    }
+  } catch (const user::ShaderCompileError& e) {
+    out.emplace_back("taa.shader", std::string("does not compile:\n") + e.what());
+  }
+  return out;
+}
+
+}  // namespace taa::cases

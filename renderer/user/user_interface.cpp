@@ -1,0 +1,183 @@
+#include "user/user_interface.h"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "vk/spirv_reflect.h"
+
+namespace taa::user {
+
+namespace {
+
+// The SPIR-V opcodes and decorations read here (SPIR-V specification, section 3).
+constexpr uint32_t kUserOpName = 5, kUserOpTypeBool = 20, kUserOpTypeInt = 21,
+                   kUserOpTypeFloat = 22, kUserOpTypeImage = 25, kUserOpTypePointer = 32,
+                   kUserOpSpecTrue = 48, kUserOpSpecFalse = 49, kUserOpSpec = 50,
+                   kUserOpVariable = 59, kUserOpDecorate = 71;
+constexpr uint32_t kUserDecoSpecId = 1, kUserDecoBinding = 33;
+
+// SPIR-V image formats (section 3.11) a history target may declare.
+VkFormat userHistoryFormat(uint32_t spirvFormat) {
+  switch (spirvFormat) {
+    case 1:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;  // rgba32f
+    case 2:
+      return VK_FORMAT_R16G16B16A16_SFLOAT;  // rgba16f
+    case 3:
+      return VK_FORMAT_R32_SFLOAT;  // r32f
+    case 6:
+      return VK_FORMAT_R32G32_SFLOAT;  // rg32f
+    case 7:
+      return VK_FORMAT_R16G16_SFLOAT;  // rg16f
+    case 9:
+      return VK_FORMAT_R16_SFLOAT;  // r16f
+    default:
+      return VK_FORMAT_UNDEFINED;
+  }
+}
+
+std::string userOperandString(const std::vector<uint32_t>& w, size_t at, size_t end) {
+  std::string s;
+  for (size_t i = at; i < end; ++i)
+    for (int b = 0; b < 4; ++b) {
+      const char c = char((w[i] >> (8 * b)) & 0xffu);
+      if (c == 0) return s;
+      s += c;
+    }
+  return s;
+}
+
+}  // namespace
+
+const char* paramTypeName(ParamType t) {
+  switch (t) {
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Int:
+      return "int";
+    case ParamType::Uint:
+      return "uint";
+    case ParamType::Float:
+      return "float";
+  }
+  return "?";
+}
+
+const UserParam* UserInterface::param(const std::string& name) const {
+  for (const auto& p : params)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::vector<std::string> UserInterface::paramNames() const {
+  std::vector<std::string> out;
+  for (const auto& p : params) out.push_back(p.name);
+  return out;
+}
+
+UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::string& name) {
+  // Descriptor types and presence come from the layer every pipeline uses.
+  const vk::ShaderInterface si = vk::reflectSpirv(w, name);
+  auto has = [&](uint32_t b) { return si.find(0, b) != nullptr; };
+  UserInterface u;
+  if (!has(kUserOutput))
+    throw std::runtime_error(
+        name + " never writes taa_output (binding 10); a resolve must imageStore its result there");
+  u.depth = has(kUserDepth);
+  u.velocity = has(kUserVelocity);
+  u.ids = has(kUserIds);
+  u.normal = has(kUserNormal);
+  u.prevDepth = has(kUserPrevDepth);
+  u.prevIds = has(kUserPrevIds);
+  u.prevNormal = has(kUserPrevNormal);
+
+  std::map<uint32_t, std::string> names;
+  std::map<uint32_t, uint32_t> specIds, bindings, types;  // types: id -> opcode
+  std::map<uint32_t, std::vector<uint32_t>> defs;         // type / constant id -> operands
+  std::vector<std::pair<uint32_t, uint32_t>> variables;   // pointer type, id
+  std::vector<uint32_t> specConstants;
+  for (size_t i = 5; i < w.size();) {
+    const uint32_t count = w[i] >> 16, opcode = w[i] & 0xffffu;
+    if (count == 0 || i + count > w.size())
+      throw std::runtime_error("SPIR-V of " + name + " is truncated");
+    const std::vector<uint32_t> ops(w.begin() + long(i) + 1, w.begin() + long(i + count));
+    if (opcode == kUserOpName && ops.size() >= 2)
+      names[ops[0]] = userOperandString(w, i + 2, i + count);
+    if (opcode == kUserOpDecorate && ops.size() >= 3 && ops[1] == kUserDecoSpecId)
+      specIds[ops[0]] = ops[2];
+    if (opcode == kUserOpDecorate && ops.size() >= 3 && ops[1] == kUserDecoBinding)
+      bindings[ops[0]] = ops[2];
+    if (opcode == kUserOpTypeBool || opcode == kUserOpTypeInt || opcode == kUserOpTypeFloat ||
+        opcode == kUserOpTypeImage || opcode == kUserOpTypePointer) {
+      types[ops[0]] = opcode;
+      defs[ops[0]] = ops;
+    }
+    if (opcode == kUserOpSpecTrue || opcode == kUserOpSpecFalse || opcode == kUserOpSpec) {
+      defs[ops[1]] = ops;
+      types[ops[1]] = opcode;
+      specConstants.push_back(ops[1]);
+    }
+    if (opcode == kUserOpVariable && ops.size() >= 3) variables.emplace_back(ops[0], ops[1]);
+    i += count;
+  }
+
+  for (const uint32_t id : specConstants) {
+    const auto sid = specIds.find(id);
+    if (sid == specIds.end()) continue;  // a constant derived from others, not settable
+    const auto n = names.find(id);
+    if (n == names.end() || n->second.empty())
+      throw std::runtime_error(
+          name + ": specialization constant " + std::to_string(sid->second) +
+          " has no name; declare it as `layout(constant_id = N) const T name = ...;`");
+    const auto& ops = defs[id];
+    UserParam p;
+    p.name = n->second;
+    p.specId = sid->second;
+    const uint32_t typeOp = types[ops[0]];
+    if (typeOp == kUserOpTypeBool) {
+      p.type = ParamType::Bool;
+      p.defaultBits = types[id] == kUserOpSpecTrue ? 1u : 0u;
+    } else {
+      p.type = typeOp == kUserOpTypeFloat                    ? ParamType::Float
+               : defs[ops[0]].size() >= 3 && defs[ops[0]][2] ? ParamType::Int
+                                                             : ParamType::Uint;
+      p.defaultBits = ops.size() >= 3 ? ops[2] : 0u;
+    }
+    // Constants the header itself declares (the workgroup size) are not the user's to set.
+    if (p.name.rfind("taa_", 0) == 0) continue;
+    u.params.push_back(p);
+  }
+
+  // SPIR-V orders constants by type, not by declaration: list them by constant_id.
+  std::sort(u.params.begin(), u.params.end(),
+            [](const UserParam& a, const UserParam& b) { return a.specId < b.specId; });
+
+  // History k: its write image's declared format.
+  for (int k = 0; k < 2; ++k) {
+    const uint32_t in = k ? kUserHistory1 : kUserHistory0,
+                   out = k ? kUserHistory1Out : kUserHistory0Out;
+    if (!has(out)) {
+      if (has(in))
+        throw std::runtime_error(name + " reads history " + std::to_string(k) +
+                                 " but never writes it; define TAA_HISTORY" + std::to_string(k) +
+                                 "_FORMAT and imageStore taa_history" + std::to_string(k) + "_out");
+      continue;
+    }
+    for (const auto& [pointer, id] : variables) {
+      const auto b = bindings.find(id);
+      if (b == bindings.end() || b->second != out) continue;
+      const auto& ptr = defs[pointer];
+      const auto& image = ptr.size() >= 3 ? defs[ptr[2]] : std::vector<uint32_t>{};
+      const VkFormat f = image.size() >= 8 ? userHistoryFormat(image[7]) : VK_FORMAT_UNDEFINED;
+      if (f == VK_FORMAT_UNDEFINED)
+        throw std::runtime_error(
+            name + ": history " + std::to_string(k) +
+            " has an unsupported format; use rgba16f, rgba32f, rg16f, rg32f, r16f or r32f");
+      u.history[k] = f;
+    }
+  }
+  return u;
+}
+
+}  // namespace taa::user

@@ -1,0 +1,56 @@
+// A user's own temporal resolve (taa.shader): their compute shader, compiled at run time,
+// run through the same ResolveStage interface as the built-in resolve. It owns the output
+// (ping-pong, so the shader reads its previous output) and the one or two history targets
+// the shader declares; it binds only the inputs the shader declares.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include "passes/resolve_stage.h"
+#include "spec/case_spec.h"
+#include "user/user_interface.h"
+#include "vk/pipeline.h"
+
+namespace taa {
+
+// The shader of a case (taa.shader), compiled (or taken from the cache) and reflected.
+struct UserShader {
+  std::filesystem::path file;
+  std::vector<uint32_t> spirv;
+  user::UserInterface interface;
+  bool fromCache = false;
+};
+
+// The case's folder is the include root. Throws user::ShaderCompileError on a shader that
+// does not compile or breaks taa_user.h's contract.
+UserShader loadUserShader(const spec::CaseSpec& spec);
+
+// taa.shader_params checked against the declaration: one message per problem (unknown name,
+// wrong type, set twice), each naming the key, empty when all are valid.
+std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user::UserInterface& u);
+
+// The specialization constants taa.shader_params gives (validated beforehand).
+vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u);
+
+// The G-buffer inputs the shader declares: the plan allocates exactly these.
+GBufferNeeds userNeeds(const user::UserInterface& u);
+
+class UserResolvePass : public ResolveStage {
+ public:
+  UserResolvePass(vk::Context& ctx, const spec::CaseSpec& spec, UserShader shader);
+  ~UserResolvePass() override;
+
+  void record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& eyeState, int eye,
+              const ResolveInputs& in) override;
+  vk::Image& output() override;
+  glm::ivec2 outputSize() const override;
+  GBufferNeeds needs() const override;
+  std::vector<std::string> describe() const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace taa

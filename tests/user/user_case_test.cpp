@@ -1,0 +1,113 @@
+// taa.shader in a case: the shader is compiled when the case loads, so a compile error, an
+// unknown or mistyped parameter, a built-in setting it would ignore or a path leaving the
+// case's folder is bad input naming the file, the key and the fix.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "case/case_error.h"
+#include "case/case_loader.h"
+#include "invariants/registry.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class UserCaseTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(TAA_TEST_OUT) / "user_case" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    setenv("TAA_SHADER_CACHE", (dir_ / "cache").c_str(), 1);
+    std::ofstream(dir_ / "mine.comp") << R"(#version 450
+#include "taa_user.h"
+layout(constant_id = 0) const float alpha = 0.1;
+layout(constant_id = 1) const int taps = 1;
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * alpha * float(taps), 1.0));
+}
+)";
+  }
+  std::vector<std::string> problems(const std::string& taa) {
+    try {
+      taa::cases::parseCase(R"({"taa": )" + taa + "}", dir_ / "c.json");
+    } catch (const taa::cases::CaseError& e) {
+      return e.problems();
+    }
+    return {};
+  }
+  static std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += x + "\n";
+    return s;
+  }
+  fs::path dir_;
+};
+
+TEST_F(UserCaseTest, ValidShaderAndParamsLoad) {
+  EXPECT_TRUE(problems(R"({"shader": "mine.comp", "shader_params": [{"name": "alpha", "value": 0.5},
+                                                                     {"name": "taps", "value": 3}]})")
+                  .empty());
+}
+
+TEST_F(UserCaseTest, UnknownParameterNamesTheDeclaredOnes) {
+  const auto p =
+      problems(R"({"shader": "mine.comp", "shader_params": [{"name": "beta", "value": 1}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("c.json: taa.shader_params[0].name: 'beta' is not a specialization constant"),
+            std::string::npos)
+      << p[0];
+  EXPECT_NE(p[0].find("alpha (float), taps (int)"), std::string::npos) << p[0];
+}
+
+TEST_F(UserCaseTest, WrongTypeIsRefused) {
+  const auto p =
+      problems(R"({"shader": "mine.comp", "shader_params": [{"name": "taps", "value": 2.5}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_params[0].value: taps is declared int"), std::string::npos)
+      << p[0];
+}
+
+TEST_F(UserCaseTest, CompileErrorNamesShaderFileAndLine) {
+  std::ofstream(dir_ / "bad.comp")
+      << "#version 450\n#include \"taa_user.h\"\nvoid main() {\n  oops();\n}\n";
+  const auto p = problems(R"({"shader": "bad.comp"})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader: does not compile"), std::string::npos) << p[0];
+  EXPECT_NE(p[0].find("bad.comp:4:"), std::string::npos) << p[0];
+}
+
+TEST_F(UserCaseTest, BuiltInSettingsAndPathsOutsideAreRefused) {
+  auto p = problems(R"({"shader": "mine.comp", "alpha": 0.2})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.alpha: is a setting of the built-in resolve"), std::string::npos)
+      << p[0];
+  p = problems(R"({"shader": "../mine.comp"})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader: '../mine.comp' leaves the case's folder"), std::string::npos)
+      << p[0];
+  p = problems(R"({"shader": "mine.comp", "mode": "basic"})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.mode:"), std::string::npos) << p[0];
+  p = problems(R"({"shader_clamps": true})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_clamps: applies only to a user's resolve"), std::string::npos)
+      << p[0];
+}
+
+TEST_F(UserCaseTest, HistoryBoundedOnlyWhenTheShaderDeclaresItClamps) {
+  auto loaded = taa::cases::parseCase(R"({"taa": {"shader": "mine.comp"}})", dir_ / "c.json");
+  EXPECT_NE(taa::invariants::inapplicable("history_bounded", loaded.spec)
+                .find("does not declare that it clamps"),
+            std::string::npos);
+  loaded = taa::cases::parseCase(R"({"taa": {"shader": "mine.comp", "shader_clamps": true}})",
+                                 dir_ / "c.json");
+  EXPECT_EQ(taa::invariants::inapplicable("history_bounded", loaded.spec), "");
+}
+
+}  // namespace

@@ -144,7 +144,20 @@ void main() {
     return;
   }
 
-  Reprojection r = reproject(s, taaUniforms, depthTex, velocityTex, idsTex, uv, cur.pixel, hi);
+  // With the speed in alpha the resolve reads colour only (seed 001): last frame's colour
+  // at the same pixel, its weight set by the speed motion blur packed into alpha (render
+  // pixels, here scaled to output pixels). Validation refuses what would need depth.
+  Reprojection r;
+  float alphaSpeed = 0.0;
+  if (s.velocity_in_alpha) {
+    r.prevUv = uv;
+    r.expectedDepth = 0.0;
+    r.motionPx = vec2(0.0);
+    alphaSpeed = texelFetch(colorTex, cur.pixel, 0).a * taaUniforms.outputSize.x * taaUniforms.renderSize.z;
+  } else {
+    r = reproject(s, taaUniforms, depthTex, velocityTex, idsTex, uv, cur.pixel, hi);
+  }
+  float speed = s.velocity_in_alpha ? alphaSpeed : length(r.motionPx);
   // Adaptive mode sends pixels off the previous frame to FXAA whether or not the
   // resolve rejects them, so that test is made here, before the clamp.
   bool wasOffscreen = offscreen(r.prevUv);
@@ -169,7 +182,8 @@ void main() {
   }
 
   vec3 wHistory = toWorking(s, history);
-  Box box = neighborhoodBox(s, taps, valid, toWorking(s, current), r.motionPx);
+  // The box reads only the motion's length, which is all the speed in alpha gives.
+  Box box = neighborhoodBox(s, taps, valid, toWorking(s, current), s.velocity_in_alpha ? vec2(speed, 0.0) : r.motionPx);
   vec3 wRectified = rectifyHistory(s, wHistory, box);
   float clampDistance = abs(workingLuma(s, wRectified) - workingLuma(s, wHistory));
 
@@ -177,12 +191,8 @@ void main() {
   if (s.luma_weight) alpha = lottesAlpha(s, luma(current), luma(fromWorking(s, wRectified)));
   if (s.reduce_blend_near_clamp)
     alpha = reduceBlendNearClamp(alpha, workingLuma(s, wHistory), workingLuma(s, box.lo), workingLuma(s, box.hi));
-  if (s.velocity_alpha || s.velocity_attenuation) {
-    float speed = s.velocity_in_alpha ? texelFetch(colorTex, cur.pixel, 0).a * taaUniforms.outputSize.x * taaUniforms.renderSize.z
-                                   : length(r.motionPx);
-    if (s.velocity_alpha) alpha = velocityAlpha(s, alpha, speed);
-    if (s.velocity_attenuation) alpha = velocityAttenuation(alpha, speed);
-  }
+  if (s.velocity_alpha) alpha = velocityAlpha(s, alpha, speed);
+  if (s.velocity_attenuation) alpha = velocityAttenuation(alpha, speed);
   alpha *= cur.weight;
   if (rejected) alpha = s.rejection_alpha;
 

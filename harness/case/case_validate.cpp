@@ -115,9 +115,49 @@ void validateRender(Problems& p, RenderSpec& r) {
       p.add("render.scale_schedule[" + std::to_string(i) + "].frame", "keys must be in increasing frame order");
 }
 
-// Post passes: settings that would silently do nothing are errors, and velocity in
-// alpha only holds together when motion blur writes the speed and a full resolve
-// reads it in place of the velocity buffer.
+// Velocity in alpha is seed 001's colour-only resolve: motion blur writes the speed, the
+// full resolve reads it with last frame's colour at the same pixel, and nothing else. So
+// every setting that needs depth, velocity or ids is refused beside it; with motion blur
+// off it falls back to the velocity buffer, as the seed's TAA does (docs/techniques.md).
+void validateVelocityInAlpha(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
+  const std::string key = "taa.velocity_in_alpha";
+  const auto& t = s.taa;
+  if (!modeRule(t.mode).plainFull)
+    p.add(key,
+          "only the full resolve reads the speed (anything else would pass it on as "
+          "alpha); set taa.mode: full or remove it");
+  if (!t.velocity_alpha && !t.velocity_attenuation)
+    p.add(key,
+          "the speed only drives taa.velocity_alpha and taa.velocity_attenuation; set "
+          "taa.velocity_alpha: true (or taa.velocity_attenuation: true) or remove it");
+  if (!s.post.motion_blur) {
+    if (t.use_velocity == UseVelocity::Off)
+      p.add(key,
+            "with post.motion_blur off it falls back to the velocity buffer, which "
+            "taa.use_velocity: off does not read; set taa.use_velocity: all (or movers), "
+            "or post.motion_blur: true");
+    return;
+  }
+  if (t.use_velocity != UseVelocity::Off)
+    p.add(key,
+          "the resolve reads colour only and takes the speed from alpha; set "
+          "taa.use_velocity: off or remove taa.velocity_in_alpha");
+  const std::string colourOnly = "needs depth, velocity or ids, and with " + key +
+                                 " the resolve reads colour only (seed 001); ";
+  for (const auto& [name, on] : {std::pair<const char*, bool>{"taa.depth_culling", t.depth_culling},
+                                 {"taa.consistency", t.consistency},
+                                 {"taa.anti_ghosting", t.anti_ghosting}})
+    if (on) p.add(name, colourOnly + "set it false or remove " + key);
+  for (const char* name : {"taa.velocity_sampling", "taa.reject_offscreen"})
+    if (present.count(name))
+      p.add(name, std::string("has no effect: the resolve does not reproject with ") + key +
+                      " (seed 001 blends last frame's colour at the same pixel); remove it");
+  if (s.debug.output == DebugOutput::Velocity)
+    p.add("debug.output", "the velocity view shows the reprojection's motion, and " + key +
+                              " has only a speed; choose another view or remove " + key);
+}
+
+// Post passes: settings that would silently do nothing are errors.
 void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
   const auto& post = s.post;
   if (present.count("post.sharpen_amount") && post.sharpen == Sharpen::None)
@@ -126,20 +166,7 @@ void validatePost(Problems& p, const CaseSpec& s, const std::set<std::string>& p
   for (const char* key : {"post.motion_blur_samples", "post.motion_blur_scale"})
     if (present.count(key) && !post.motion_blur)
       p.add(key, "set but post.motion_blur is off; set post.motion_blur: true or remove it");
-  if (!s.taa.velocity_in_alpha) return;
-  const std::string key = "taa.velocity_in_alpha";
-  if (!post.motion_blur)
-    p.add(key, "the speed in alpha is written by motion blur; set post.motion_blur: true or "
-               "remove it");
-  if (!modeRule(s.taa.mode).plainFull)
-    p.add(key, "only the full resolve reads the speed (anything else would pass it on as "
-               "alpha); set taa.mode: full or remove it");
-  if (!s.taa.velocity_alpha && !s.taa.velocity_attenuation)
-    p.add(key, "the speed only drives taa.velocity_alpha and taa.velocity_attenuation; set "
-               "one of them true or remove it");
-  if (s.taa.use_velocity != UseVelocity::Off)
-    p.add(key, "the resolve would read the velocity buffer anyway; set taa.use_velocity: off "
-               "or remove it");
+  if (s.taa.velocity_in_alpha) validateVelocityInAlpha(p, s, present);
 }
 
 }  // namespace

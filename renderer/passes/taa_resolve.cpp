@@ -77,10 +77,51 @@ constexpr bool taaSlotsValid() {
 static_assert(taaSlotsValid(),
               "uniform slots in common/taa_settings.h overlap or exceed TAA_SETTING_VEC4S");
 
+// The settings the resolve runs: with motion blur off nothing writes the speed into alpha,
+// so velocity_in_alpha falls back to the per-pixel velocities, as seed 001's TAA does.
+TaaSpec resolveTaa(const CaseSpec& spec) {
+  TaaSpec t = effectiveTaa(spec.taa);
+  if (!spec.post.motion_blur) t.velocity_in_alpha = false;
+  return t;
+}
+
+// Bytes of one texel of each image the resolve samples (see taaResolveReads).
+void addResolveRead(std::vector<ResolveRead>& reads, bool read, const char* name, VkFormat f) {
+  if (read) reads.push_back({name, vk::formatBytes(f)});
+}
+
 }  // namespace
 
+std::vector<ResolveRead> taaResolveReads(const CaseSpec& spec) {
+  const GBufferNeeds n = taaResolveNeeds(spec);
+  const bool history = modeRule(spec.taa.mode).path != Resolve::PassThrough;
+  const VkFormat historyFormat = resolveTaa(spec).history_format == HistoryFormat::Rgba32f
+                                     ? VK_FORMAT_R32G32B32A32_SFLOAT
+                                     : VK_FORMAT_R16G16B16A16_SFLOAT;
+  // The formats gbuffer.cpp, prev_gbuffer.cpp and motion_blur.cpp allocate; record() checks
+  // them against the images it binds.
+  std::vector<ResolveRead> r;
+  addResolveRead(r, true, "colour", VK_FORMAT_R16G16B16A16_SFLOAT);
+  addResolveRead(r, history, "history", historyFormat);
+  addResolveRead(r, n.depth, "depth", VK_FORMAT_D32_SFLOAT);
+  addResolveRead(r, n.velocity, "velocity", VK_FORMAT_R16G16_SFLOAT);
+  addResolveRead(r, n.ids, "ids", VK_FORMAT_R32_UINT);
+  addResolveRead(r, n.normal, "normal", VK_FORMAT_R16G16B16A16_SFLOAT);
+  addResolveRead(r, n.prevDepth, "prev_depth", VK_FORMAT_D32_SFLOAT);
+  addResolveRead(r, n.prevNormal, "prev_normal", VK_FORMAT_R16G16B16A16_SFLOAT);
+  addResolveRead(r, n.prevIds, "prev_ids", VK_FORMAT_R32_UINT);
+  addResolveRead(r, n.prevVelocity, "prev_velocity", VK_FORMAT_R16G16_SFLOAT);
+  return r;
+}
+
+uint32_t taaResolveReadBytes(const CaseSpec& spec) {
+  uint32_t bytes = 0;
+  for (const auto& r : taaResolveReads(spec)) bytes += r.bytes;
+  return bytes;
+}
+
 vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
-  const TaaSpec t = effectiveTaa(spec.taa);
+  const TaaSpec t = resolveTaa(spec);
   const Resolve path = modeRule(t.mode).path;
   // A setting the path has no use for gets 0, so a pipeline depends only on what it runs.
   const uint32_t inPath = pathModes(path);
@@ -128,9 +169,12 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
 
 GBufferNeeds taaResolveNeeds(const CaseSpec& spec) {
   const ModeRule& rule = modeRule(spec.taa.mode);
-  const TaaSpec t = effectiveTaa(spec.taa);
-  // Only the full path reprojects and validates its history; the others read colour alone.
+  const TaaSpec t = resolveTaa(spec);
+  // Only the full path reprojects and validates its history; the others read colour alone,
+  // and so does the full path with the speed in alpha (seed 001: no depth, no velocity;
+  // validation refuses the settings that would need them).
   const bool full = rule.resolve && rule.path == Resolve::Full;
+  const bool colourOnly = full && t.velocity_in_alpha;
   const bool antiGhost = full && t.anti_ghosting;
   const bool consistency = full && t.consistency;
   GBufferNeeds n;
@@ -141,6 +185,7 @@ GBufferNeeds taaResolveNeeds(const CaseSpec& spec) {
   n.prevNormal = consistency;
   n.prevIds = consistency || antiGhost;
   n.prevVelocity = antiGhost;
+  n.depth = full && !colourOnly;
   return n;
 }
 
@@ -176,9 +221,43 @@ glm::ivec2 TaaResolvePass::outputSize() const {
 
 std::vector<std::string> TaaResolvePass::describe() const {
   const glm::ivec2 size = resolveOutputSize(spec_);
-  return {"pass taa_resolve",
-          "taa_resolve spec constants: " + taaSpecConstants(spec_, true).describe(),
-          "buffer history 2x " + std::to_string(size.x) + "x" + std::to_string(size.y)};
+  std::vector<std::string> out = {
+      "pass taa_resolve", "taa_resolve spec constants: " + taaSpecConstants(spec_, true).describe(),
+      "buffer history 2x " + std::to_string(size.x) + "x" + std::to_string(size.y)};
+  if (spec_.taa.velocity_in_alpha && !spec_.post.motion_blur)
+    out.push_back(
+        "taa_resolve: taa.velocity_in_alpha falls back to the velocity buffer, "
+        "post.motion_blur is off so nothing writes the speed into alpha (seed 001)");
+  std::string reads;
+  for (const auto& r : taaResolveReads(spec_))
+    reads += (reads.empty() ? "" : " + ") + r.name + " " + std::to_string(r.bytes);
+  out.push_back("taa_resolve reads per pixel: " + reads + " = " +
+                std::to_string(taaResolveReadBytes(spec_)) + " bytes");
+  return out;
+}
+
+// The bytes-per-pixel figure describe() logs is the formats of the images bound here.
+void TaaResolvePass::checkResolveReads(const ResolveInputs& in, vk::Image& history,
+                                       const GBufferNeeds& n) const {
+  uint32_t bytes = 0;
+  auto add = [&](bool read, const vk::Image* image) {
+    if (read && image) bytes += vk::formatBytes(image->desc().format);
+  };
+  const bool full = modeRule(spec_.taa.mode).path != Resolve::PassThrough;
+  add(true, in.color);
+  add(full, &history);
+  add(n.depth, in.depth);
+  add(n.velocity, in.velocity);
+  add(n.ids, in.ids);
+  add(n.normal, in.normal);
+  add(n.prevDepth, in.prevDepth);
+  add(n.prevNormal, in.prevNormal);
+  add(n.prevIds, in.prevIds);
+  add(n.prevVelocity, in.prevVelocity);
+  if (bytes != taaResolveReadBytes(spec_))
+    throw std::logic_error("TaaResolvePass: the bound images read " + std::to_string(bytes) +
+                           " bytes a pixel, taaResolveReads says " +
+                           std::to_string(taaResolveReadBytes(spec_)));
 }
 
 void TaaResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
@@ -200,8 +279,12 @@ void TaaResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
   auto sample = [&](uint32_t binding, vk::Image* image, vk::Image& fallback, VkSampler sampler) {
     d.sample(binding, image ? *image : fallback, sampler);
   };
+  const GBufferNeeds needs = taaResolveNeeds(spec_);
+  checkResolveReads(in, previous, needs);
   sample(TAA_BINDING_COLOR, in.color, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_DEPTH, in.depth, dummyFloat_, point_.handle());
+  // Depth is always rendered; a resolve that does not read it gets the dummy, so that the
+  // colour-only resolve (seed 001) provably takes no depth.
+  sample(TAA_BINDING_DEPTH, needs.depth ? in.depth : nullptr, dummyFloat_, point_.handle());
   sample(TAA_BINDING_VELOCITY, in.velocity, dummyFloat_, point_.handle());
   sample(TAA_BINDING_IDS, in.ids, dummyUint_, point_.handle());
   sample(TAA_BINDING_NORMAL, in.normal, dummyFloat_, point_.handle());

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <glm/vec2.hpp>
+#include <string>
+#include <vector>
 
 #include "common/shared.h"
 #include "pass_plan.h"
@@ -16,6 +18,16 @@ namespace taa {
 
 // The G-buffer targets the built-in resolve reads for a case's settings.
 GBufferNeeds taaResolveNeeds(const spec::CaseSpec& spec);
+
+// One image the resolve samples and the bytes of one of its texels. Per pixel the resolve
+// reads one texel of each (its neighbour taps hit the texture cache), the count seed 001
+// gives as 128 bits (two colours, two velocities) and 64 with the speed in alpha.
+struct ResolveRead {
+  std::string name;
+  uint32_t bytes;
+};
+std::vector<ResolveRead> taaResolveReads(const spec::CaseSpec& spec);
+uint32_t taaResolveReadBytes(const spec::CaseSpec& spec);
 
 // The specialization constants of a case's resolve (exposed for the log and tests).
 vk::SpecConstants taaSpecConstants(const spec::CaseSpec& spec, bool hasHistory);
@@ -40,6 +52,7 @@ class TaaResolvePass final : public ResolveStage {
   std::vector<std::string> describe() const override;
 
  private:
+  void checkResolveReads(const ResolveInputs& in, vk::Image& history, const GBufferNeeds& n) const;
   vk::Context& ctx_;
   const spec::CaseSpec& spec_;
   vk::Pipeline withHistory_;

@@ -202,9 +202,9 @@
     "edge of the box",                                                                             \
     "shaders/taa/blend_weight.glsl")                                                               \
   B(velocity_in_alpha, false, 18, kVelocityInAlpha, kFullOnly, kAlways, "",                        \
-    "motion blur packs the per-pixel speed into colour alpha, so the resolve reads colour only "   \
-    "for "                                                                                         \
-    "velocity_alpha (needs post.motion_blur, mode full, velocity_alpha and use_velocity off)",     \
+    "motion blur packs the per-pixel speed into colour alpha and the resolve reads colour only, "  \
+    "no depth and no reprojection (seed 001; mode full, velocity_alpha or velocity_attenuation, "  \
+    "use_velocity off); without post.motion_blur it falls back to the velocity buffer",            \
     "shaders/motion_blur.comp")                                                                    \
   B(unjitter_current, false, 25, kUnjitterCurrent, kFullOnly, kAlways, "",                        \
     "seed 000 (a debugging aid): the blend's current sample is the colour at the pixel centre, "   \

@@ -28,9 +28,9 @@ spec::CaseSpec planTestCase(const std::string& taa, const std::string& rest = ""
 }
 
 TEST(GBufferNeeds, UnionKeepsEveryTargetOfEitherSide) {
-  const GBufferNeeds fields[] = {{.velocity = true},    {.normal = true},     {.ids = true},
-                                 {.prevDepth = true},   {.prevNormal = true}, {.prevIds = true},
-                                 {.prevVelocity = true}};
+  const GBufferNeeds fields[] = {{.velocity = true},     {.normal = true},     {.ids = true},
+                                 {.prevDepth = true},    {.prevNormal = true}, {.prevIds = true},
+                                 {.prevVelocity = true}, {.depth = true}};
   for (const GBufferNeeds& a : fields) {
     EXPECT_EQ(a | GBufferNeeds{}, a);
     EXPECT_EQ(GBufferNeeds{} | a, a);

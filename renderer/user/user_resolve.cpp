@@ -158,6 +158,7 @@ vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserIn
 
 GBufferNeeds userNeeds(const user::UserInterface& u) {
   GBufferNeeds n;
+  n.depth = u.depth;
   n.velocity = u.velocity;
   // Last frame's ids and normals are copies of this frame's targets.
   n.ids = u.ids || u.prevIds;

@@ -193,7 +193,8 @@ void main() {
 
   const GBufferNeeds needs = userNeeds(u);
   EXPECT_TRUE(needs.velocity && needs.prevDepth);
-  EXPECT_FALSE(needs.ids || needs.normal || needs.prevIds || needs.prevNormal || needs.prevVelocity);
+  EXPECT_FALSE(needs.depth || needs.ids || needs.normal || needs.prevIds || needs.prevNormal ||
+               needs.prevVelocity);
 
   spec::TaaSpec t;
   t.shader = "decl.comp";

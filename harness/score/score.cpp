@@ -11,6 +11,7 @@
 #include "compare/metrics.h"
 #include "core/input_file.h"
 #include "core/output_file.h"
+#include "invariants/flicker_meter.h"
 #include "invariants/invariant_support.h"
 #include "invariants/registry.h"
 #include "renderer.h"
@@ -33,24 +34,8 @@ struct ScoreLane {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<invariants::Invariant> ghosting;
   std::vector<double> ms;
-  Image prevLuma;
-  double flickerSum = 0.0;
-  int flickerFrames = 0;
+  invariants::FlickerMeter flicker;
 };
-
-Image scoreLuma(const Image& img) {
-  Image out(img.width, img.height, 1);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) out.at(x, y) = invariants::tonemappedLuma(img, x, y);
-  return out;
-}
-
-double scoreMeanAbsDiff(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.data.size(); ++i)
-    sum += std::fabs(double(a.data[i]) - double(b.data[i]));
-  return a.data.empty() ? 0.0 : sum / double(a.data.size());
-}
 
 double scoreMean(const std::vector<double>& v) {
   double s = 0.0;
@@ -136,9 +121,7 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
     l.renderer = std::make_unique<Renderer>(device, l.loaded.spec, l.scene, ro);
     if (c.movers) l.ghosting = invariants::makeInvariant("no_ghosting", l.loaded.spec);
   }
-  Image prevReferenceLuma;
-  double referenceFlickerSum = 0.0;
-  int referenceFlickerFrames = 0;
+  invariants::FlickerMeter referenceFlicker;
   for (int f = 0; f < c.frames; ++f) {
     Image reference;
     for (size_t i = 0; i < lanes.size(); ++i) {
@@ -151,12 +134,7 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
       l.ms.push_back(ms);
       if (i == 0) reference = r.reference;
       for (float v : r.color.data) l.score.nonFinite += std::isfinite(v) ? 0 : 1;
-      const Image luma = scoreLuma(r.color);
-      if (f > 0) {
-        l.flickerSum += scoreMeanAbsDiff(luma, l.prevLuma);
-        ++l.flickerFrames;
-      }
-      l.prevLuma = luma;
+      l.flicker.add(r.color, f > 0);
       l.score.rmse += compare::computeMetrics(reference, r.color).rmse / c.frames;
       l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, r.color).mean);
       if (l.ghosting && f >= l.loaded.spec.checks.from_frame) {
@@ -169,18 +147,13 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
         l.ghosting->observe(v);
       }
     }
-    const Image refLuma = scoreLuma(reference);
-    if (f > 0) {
-      referenceFlickerSum += scoreMeanAbsDiff(refLuma, prevReferenceLuma);
-      ++referenceFlickerFrames;
-    }
-    prevReferenceLuma = refLuma;
+    referenceFlicker.add(reference, f > 0);
   }
-  c.referenceFlicker = referenceFlickerFrames ? referenceFlickerSum / referenceFlickerFrames : 0.0;
+  c.referenceFlicker = referenceFlicker.mean();
   for (auto& lp : lanes) {
     auto& l = *lp;
     l.score.flip = scoreMean(l.score.flipPerFrame);
-    l.score.flicker = l.flickerFrames ? l.flickerSum / l.flickerFrames : 0.0;
+    l.score.flicker = l.flicker.mean();
     l.score.convergence = convergenceFrame(l.score.flipPerFrame);
     l.score.frameMs = run::percentile(l.ms, 50.0);
     if (l.ghosting) {

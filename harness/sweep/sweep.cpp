@@ -9,7 +9,7 @@
 #include "compare/metrics.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
-#include "invariants/invariant_support.h"
+#include "invariants/flicker_meter.h"
 #include "renderer.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
@@ -44,23 +44,8 @@ struct Lane {
   scene::Scene scene;
   std::unique_ptr<Renderer> renderer;
   std::vector<double> taaMs, frameMs;
-  Image prevLuma;
-  double flickerSum = 0.0;
-  int flickerFrames = 0;
+  invariants::FlickerMeter flicker;
 };
-
-Image tonemappedLuma(const Image& img) {
-  Image out(img.width, img.height, 1);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) out.at(x, y) = invariants::tonemappedLuma(img, x, y);
-  return out;
-}
-
-double meanAbsDiff(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.data.size(); ++i) sum += std::fabs(double(a.data[i]) - double(b.data[i]));
-  return a.data.empty() ? 0.0 : sum / double(a.data.size());
-}
 
 double mean(const std::vector<double>& v) {
   double s = 0.0;
@@ -138,9 +123,7 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
   result.fromFrame = std::clamp(options.fromFrame, 0, first.script.frames - 1);
   result.referenceSamples = first.reference.samples;
   std::vector<PresetResult> out(lanes.size());
-  Image prevReferenceLuma;
-  double referenceFlickerSum = 0.0;
-  int referenceFlickerFrames = 0;
+  invariants::FlickerMeter referenceFlicker;
   for (int f = 0; f < result.frames; ++f) {
     // The frame before the first measured one is read too: flicker needs a predecessor.
     const bool read = f + 1 >= result.fromFrame;
@@ -161,24 +144,12 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
       }
       if (!read) continue;
       if (i == 0) reference = r.reference;
-      const Image luma = tonemappedLuma(r.color);
-      if (f > result.fromFrame && !l.prevLuma.data.empty()) {
-        l.flickerSum += meanAbsDiff(luma, l.prevLuma);
-        ++l.flickerFrames;
-      }
-      l.prevLuma = luma;
+      l.flicker.add(r.color, f > result.fromFrame);
       if (f < result.fromFrame) continue;
       out[i].rmsePerFrame.push_back(compare::computeMetrics(reference, r.color).rmse);
       out[i].flipPerFrame.push_back(compare::flipLdrFromHdr(reference, r.color).mean);
     }
-    if (read) {
-      const Image refLuma = tonemappedLuma(reference);
-      if (f > result.fromFrame && !prevReferenceLuma.data.empty()) {
-        referenceFlickerSum += meanAbsDiff(refLuma, prevReferenceLuma);
-        ++referenceFlickerFrames;
-      }
-      prevReferenceLuma = refLuma;
-    }
+    if (read) referenceFlicker.add(reference, f > result.fromFrame);
   }
   for (size_t i = 0; i < lanes.size(); ++i) {
     auto& l = *lanes[i];
@@ -187,8 +158,8 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
     p.patch = l.patch;
     p.rmse = mean(p.rmsePerFrame);
     p.flipMean = mean(p.flipPerFrame);
-    p.flicker = l.flickerFrames ? l.flickerSum / l.flickerFrames : 0.0;
-    p.referenceFlicker = referenceFlickerFrames ? referenceFlickerSum / referenceFlickerFrames : 0.0;
+    p.flicker = l.flicker.mean();
+    p.referenceFlicker = referenceFlicker.mean();
     p.taaMs = run::percentile(l.taaMs, 50.0);
     p.frameMs = run::percentile(l.frameMs, 50.0);
     for (const auto& line : l.renderer->log())

@@ -1,0 +1,51 @@
+// Internal to the glTF loader: the converter that gltf_convert.cpp (textures, materials,
+// meshes) and gltf_nodes.cpp (nodes, cameras, animations) implement together.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <glm/mat3x3.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/gltf_accessors.h"
+#include "scene/scene.h"
+#include "scene/scene_error.h"
+
+namespace taa::scene::gltf_detail {
+
+class Converter {
+ public:
+  Converter(const std::filesystem::path& file, const tinygltf::Model& g,
+            const std::string& warnings, Scene& s)
+      : file_(file), g_(g), warnings_(warnings), s_(s) {}
+  Model run();
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw SceneError(file_, what); }
+  std::vector<float> readAccessor(int index, const std::string& what, int components) {
+    return readGltfAccessor(file_, g_, index, what, components);
+  }
+  std::vector<uint32_t> readIndices(int index, const std::string& what) {
+    return readGltfIndices(file_, g_, index, what);
+  }
+  // `linear`: data rather than colour (a normal map), cached apart from a colour use.
+  int texture(int index, const std::string& what, bool linear = false);
+  int material(int index);
+  void normalTexture(int index, const tinygltf::Material& gm, const std::string& name, Material& m);
+  int mesh(int index);
+  void addNode(int root, Model& model);
+  void addOneNode(int index, int parent, Model& model);
+  void addAnimation(const tinygltf::Animation& a, size_t index, Model& model);
+
+  const std::filesystem::path& file_;
+  const tinygltf::Model& g_;
+  const std::string& warnings_;
+  Scene& s_;
+  std::map<int, int> textures_, materials_, meshes_, nodes_;
+  std::map<int, glm::mat3> uvTransforms_;  // per glTF material: its base colour's UV transform
+};
+
+}  // namespace taa::scene::gltf_detail

@@ -1,0 +1,168 @@
+// The glTF converter's scene graph: the default scene's roots, nodes (parents first),
+// cameras, skins and animations. Textures, materials and meshes are gltf_convert.cpp's.
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include "scene/gltf_convert.h"
+#include "scene/gltf_converter.h"
+
+namespace taa::scene::gltf_detail {
+
+// Depth-first with an explicit stack, parents before children in file order: a chain of
+// 100,000 nodes must not exhaust the call stack.
+void Converter::addNode(int root, Model& model) {
+  std::vector<std::pair<int, int>> pending{{root, -1}};  // (glTF index, parent's model index)
+  while (!pending.empty()) {
+    const auto [index, parent] = pending.back();
+    pending.pop_back();
+    addOneNode(index, parent, model);
+    const std::vector<int>& children = g_.nodes[size_t(index)].children;
+    const int self = int(model.nodes.size()) - 1;
+    for (auto c = children.rbegin(); c != children.rend(); ++c) pending.emplace_back(*c, self);
+  }
+}
+
+void Converter::addOneNode(int index, int parent, Model& model) {
+  if (index < 0 || size_t(index) >= g_.nodes.size())
+    fail("a scene or node refers to missing nodes[" + std::to_string(index) + "]");
+  // A node is recorded before its children are visited, so a cycle meets it again too.
+  if (nodes_.count(index))
+    fail("nodes[" + std::to_string(index) +
+         "] is reached twice (a cycle or shared child); the hierarchy must be a tree");
+  const tinygltf::Node& gn = g_.nodes[size_t(index)];
+  Node n;
+  n.name = gn.name.empty() ? "node" + std::to_string(index) : gn.name;
+  n.parent = parent;
+  n.skin = gn.skin;  // a glTF skin index: every skin is loaded, in file order
+  for (double w : gn.weights) n.weights.push_back(float(w));
+  if (gn.matrix.size() == 16) {
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(gn.matrix[size_t(i)]);
+    decomposeTrs(m, n.translation, n.rotation, n.scale);
+  } else {
+    if (gn.translation.size() == 3)
+      n.translation =
+          glm::vec3(float(gn.translation[0]), float(gn.translation[1]), float(gn.translation[2]));
+    if (gn.rotation.size() == 4)
+      n.rotation = glm::quat(float(gn.rotation[3]), float(gn.rotation[0]), float(gn.rotation[1]),
+                             float(gn.rotation[2]));
+    if (gn.scale.size() == 3)
+      n.scale = glm::vec3(float(gn.scale[0]), float(gn.scale[1]), float(gn.scale[2]));
+  }
+  if (gn.mesh >= 0) {
+    if (size_t(gn.mesh) >= g_.meshes.size())
+      fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
+    n.mesh = mesh(gn.mesh);
+  }
+  if (gn.camera >= 0) {
+    if (size_t(gn.camera) >= g_.cameras.size())
+      fail("nodes[" + std::to_string(index) + "] refers to a missing camera");
+    n.camera = gn.camera;
+  }
+  nodes_[index] = int(model.nodes.size());
+  model.nodes.push_back(std::move(n));
+}
+
+void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& model) {
+  Animation out;
+  out.name = a.name.empty() ? "animation" + std::to_string(index) : a.name;
+  for (size_t c = 0; c < a.channels.size(); ++c) {
+    const tinygltf::AnimationChannel& ch = a.channels[c];
+    const std::string what =
+        "animations[" + std::to_string(index) + "].channels[" + std::to_string(c) + "]";
+    const auto node = nodes_.find(ch.target_node);
+    if (node == nodes_.end()) continue;  // targets a node outside the default scene
+    AnimChannel o;
+    o.node = node->second;
+    int comps = 3;
+    if (ch.target_path == "translation")
+      o.path = AnimPath::Translation;
+    else if (ch.target_path == "rotation") {
+      o.path = AnimPath::Rotation;
+      comps = 4;
+    } else if (ch.target_path == "scale") {
+      o.path = AnimPath::Scale;
+    } else if (ch.target_path == "weights") {
+      o.path = AnimPath::Weights;
+      const int mesh = model.nodes[size_t(o.node)].mesh;
+      o.targets = mesh >= 0 ? int(s_.meshes[size_t(mesh)].targets.size()) : 0;
+      if (o.targets == 0) continue;  // a node without morph targets: nothing to move
+      comps = 1;
+    } else {
+      fail(what + " targets path '" + ch.target_path + "', which glTF 2.0 does not define");
+    }
+    if (ch.sampler < 0 || size_t(ch.sampler) >= a.samplers.size())
+      fail(what + " refers to a missing sampler");
+    const tinygltf::AnimationSampler& s = a.samplers[size_t(ch.sampler)];
+    if (s.interpolation == "STEP")
+      o.interpolation = Interpolation::Step;
+    else if (s.interpolation == "CUBICSPLINE")
+      o.interpolation = Interpolation::CubicSpline;
+    else if (s.interpolation == "LINEAR" || s.interpolation.empty())
+      o.interpolation = Interpolation::Linear;
+    else
+      fail(what + " interpolation '" + s.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
+    o.times = readAccessor(s.input, what + " input", 1);
+    const std::vector<float> values = readAccessor(s.output, what + " output", comps);
+    const size_t per = o.interpolation == Interpolation::CubicSpline ? 3 : 1;
+    if (o.path == AnimPath::Weights) {
+      if (o.times.empty() || values.size() != o.times.size() * per * size_t(o.targets))
+        fail(what + " has " + std::to_string(values.size()) + " weights for " +
+             std::to_string(o.times.size()) + " keys of " + std::to_string(o.targets) +
+             " morph targets; re-export it");
+      o.weights = values;
+    } else if (o.times.empty() || values.size() != o.times.size() * per * size_t(comps))
+      fail(what + " has " + std::to_string(values.size() / size_t(comps)) + " output values for " +
+           std::to_string(o.times.size()) + " keys; expected " +
+           std::to_string(o.times.size() * per));
+    for (size_t k = 1; k < o.times.size(); ++k)
+      if (!(o.times[k] > o.times[k - 1])) fail(what + " key times must strictly increase");
+    for (size_t i = 0; o.path != AnimPath::Weights && i < values.size() / size_t(comps); ++i)
+      o.values.emplace_back(values[i * size_t(comps)], values[i * size_t(comps) + 1],
+                            values[i * size_t(comps) + 2],
+                            comps == 4 ? values[i * size_t(comps) + 3] : 0.0f);
+    out.duration = std::max(out.duration, o.times.back());
+    out.channels.push_back(std::move(o));
+  }
+  model.animations.push_back(std::move(out));
+}
+
+Model Converter::run() {
+  Model model;
+  model.name = file_.stem().string();
+  std::vector<int> roots;
+  if (!g_.scenes.empty()) {
+    const int which =
+        g_.defaultScene >= 0 && size_t(g_.defaultScene) < g_.scenes.size() ? g_.defaultScene : 0;
+    roots = g_.scenes[size_t(which)].nodes;
+  } else {
+    // No scene: every node that is nobody's child is a root.
+    std::vector<bool> child(g_.nodes.size(), false);
+    for (const auto& n : g_.nodes)
+      for (int c : n.children)
+        if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
+    for (size_t i = 0; i < g_.nodes.size(); ++i)
+      if (!child[i]) roots.push_back(int(i));
+  }
+  for (const tinygltf::Camera& c : g_.cameras) {
+    Camera cam;
+    cam.perspective = c.type == "perspective";
+    if (cam.perspective) {
+      cam.yfov = float(c.perspective.yfov);
+      cam.znear = float(c.perspective.znear);
+      cam.zfar = float(c.perspective.zfar);
+    }
+    model.cameras.push_back(cam);
+  }
+  for (int r : roots) addNode(r, model);
+  if (model.nodes.empty())
+    fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
+  model.skins = readGltfSkins(file_, g_, nodes_);
+  for (const Node& n : model.nodes)
+    if (n.skin >= 0 && size_t(n.skin) >= model.skins.size())
+      fail("node '" + n.name + "' refers to missing skins[" + std::to_string(n.skin) + "]");
+  for (size_t i = 0; i < g_.animations.size(); ++i) addAnimation(g_.animations[i], i, model);
+  return model;
+}
+
+}  // namespace taa::scene::gltf_detail

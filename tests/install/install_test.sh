@@ -43,6 +43,16 @@ env -u CI "$exe" run mine/cases/my_case.json --out user-run >user-run.log  # no 
 "$exe" run mine/cases/my_case.json --out user-run2 | grep -q "^PASS my_case" || { echo "user shader case did not pass its goldens"; exit 1; }
 "$exe" sweep mine/cases/plain.json --presets builtin,mine --presets-file mine/presets.json --out user-sweep >/dev/null
 grep -q "^mine," user-sweep/sweep.csv || { echo "sweep has no row for the user shader preset"; exit 1; }
+# The report's A/B split: the built-in resolve against the user shader on one replay.
+mkdir -p mine/cases/presets
+cp mine/presets.json mine/cases/presets/presets.json
+echo "{$scene, \"output\": {\"frames\": [7]}, \"report\": {\"ab\": \"mine\"}}" >mine/cases/ab.json
+env -u CI "$exe" run mine/cases/ab.json --out user-ab >/dev/null
+[ -f user-ab/ab/frame_0007.ab.png ] || { echo "report.ab wrote no B frame for the user shader preset"; exit 1; }
+if cmp -s user-ab/ab/frame_0007.png user-ab/ab/frame_0007.ab.png; then
+  echo "report.ab's B frame (user shader) equals A (built-in resolve)"; exit 1
+fi
+grep -q "frame_0007.ab.png" user-ab/report.html || { echo "the report shows no A/B split"; exit 1; }
 "$exe" score mine/cases/my_resolve.comp --cases mine/cases --out user-score >/dev/null
 [ -s user-score/score.json ] || { echo "score wrote no score.json"; exit 1; }
 printf '#version 450\n#include "taa_user.h"\nvoid main() {\n  nope();\n}\n' >mine/cases/broken.comp

@@ -118,6 +118,8 @@ nlohmann::json resolvedJson(const spec::CheckedCase& spec) {
   JsonWriter writer(out);
   auto copy = spec;
   fields(writer, copy);
+  // taa.moving is a second parameter set only when the case gives one.
+  if (!spec.taa.moving.active) out["taa"].erase("moving");
   return out;
 }
 

@@ -319,6 +319,7 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   // A mode may have its own default alpha (accumulation: seed 003's 0.2).
   if (const float alpha = modeRule(spec.taa.mode).alpha; alpha > 0.0f && !present.count("taa.alpha"))
     spec.taa.alpha = alpha;
+  resolveTaaMoving(spec.taa, present);
   if (spec.output.frames.empty()) spec.output.frames.push_back(frames - 1);
   std::sort(spec.output.frames.begin(), spec.output.frames.end());
   spec.output.frames.erase(std::unique(spec.output.frames.begin(), spec.output.frames.end()),

@@ -79,7 +79,55 @@ void tscmaaRules(Rules& r, const CaseSpec& s) {
                              " pixels, over the limit of 8192; set render.width to 4096 or less");
 }
 
+// taa.moving: uniforms of the built-in resolve, so its modes and its keys' own modes; the
+// float keys take the rules of their still twins (evaluated on the still settings: the
+// switches they depend on are the same in both sets).
+void movingRules(Rules& r, const CaseSpec& s) {
+  if (!r.set("taa.moving")) return;
+  const TaaSpec e = effectiveTaa(s.taa);
+  const uint32_t bit = modeBit(s.taa.mode);
+  r.needs("taa.moving", (bit & kBlending) != 0 && s.taa.shader.empty(),
+          modesText(kBlending) + " with the built-in resolve (its float settings are uniforms)");
+  auto check = [&](const std::string& key, uint32_t modes, bool holds, const char* what) {
+    r.needs(key, (modes & bit) != 0, modesText(modes));
+    if (modes & bit) r.needs(key, holds, what);
+  };
+#define TAA_MOVING_CHECK_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_CHECK_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_CHECK_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  check("taa.moving." #key, modes, rule(e), text);
+  TAA_SETTINGS(TAA_MOVING_CHECK_E, TAA_MOVING_CHECK_B, TAA_MOVING_CHECK_F)
+#undef TAA_MOVING_CHECK_E
+#undef TAA_MOVING_CHECK_B
+#undef TAA_MOVING_CHECK_F
+  const auto& m = s.taa.moving;
+  if (m.to_px <= m.from_px)
+    r.add("taa.moving.to_px", "must be above taa.moving.from_px (the blend ramps between them)");
+  if (e.luma_weight && r.set("taa.moving.alpha"))
+    r.add("taa.moving.alpha",
+          "taa.luma_weight chooses alpha per pixel within [alpha_min, alpha_max]; set "
+          "taa.moving.alpha_min / alpha_max instead");
+  const float lo = r.set("taa.moving.alpha_min") ? m.alpha_min : s.taa.alpha_min;
+  const float hi = r.set("taa.moving.alpha_max") ? m.alpha_max : s.taa.alpha_max;
+  if (e.luma_weight && lo > hi)
+    r.add("taa.moving.alpha_min", "the moving alpha_min must not exceed the moving alpha_max");
+  // An enum or switch inside taa.moving is an unknown key to the reader; it would need
+  // another pipeline per frame, which is why the object holds floats only.
+}
+
 }  // namespace
+
+void resolveTaaMoving(TaaSpec& taa, const std::set<std::string>& present) {
+  taa.moving.active = present.count("taa.moving") > 0;
+#define TAA_MOVING_COPY_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_COPY_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_COPY_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  if (!present.count("taa.moving." #key)) taa.moving.key = taa.key;
+  TAA_SETTINGS(TAA_MOVING_COPY_E, TAA_MOVING_COPY_B, TAA_MOVING_COPY_F)
+#undef TAA_MOVING_COPY_E
+#undef TAA_MOVING_COPY_B
+#undef TAA_MOVING_COPY_F
+}
 
 std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s,
                                                              const std::set<std::string>& present) {
@@ -131,6 +179,8 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s,
 #undef TAA_CHECK_E
 #undef TAA_CHECK_B
 #undef TAA_CHECK_F
+
+  movingRules(r, s);
 
   // Rules between settings.
   if (!(rule.resolve && rule.path == Resolve::Full)) return r.out;

@@ -16,4 +16,8 @@ namespace taa::cases {
 std::vector<std::pair<std::string, std::string>> taaProblems(const spec::CaseSpec& spec,
                                                               const std::set<std::string>& present);
 
+// Marks taa.moving active when the case sets it and gives every float it leaves out the
+// still value, so the blend moves only what the case names (call after validation).
+void resolveTaaMoving(spec::TaaSpec& taa, const std::set<std::string>& present);
+
 }  // namespace taa::cases

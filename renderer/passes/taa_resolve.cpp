@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "passes/storage_image.h"
+#include "passes/taa_moving.h"
 #include "spec/taa_modes.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
@@ -146,7 +147,8 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
 
 gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState& s,
                                  glm::ivec2 prevRenderSize) {
-  const TaaSpec t = effectiveTaa(spec.taa);
+  // taa.moving blends the float settings by the camera's speed; without it, the still ones.
+  const TaaSpec t = blendMoving(spec.taa, movingWeight(spec.taa.moving, s));
   gpu::TaaUniforms u{};
   u.invViewProj = glm::inverse(s.camera.viewProjection);
   u.prevViewProj = s.prevCamera.viewProjection;

@@ -70,9 +70,49 @@ void fields(V& v, ShaderParam& p) {
                "renderer/user/user_resolve.cpp"});
 }
 
+// taa.moving (seed 000: "ideally one would smoothly blend parameters when switching sets"):
+// a second value for any float setting of the resolve, blended in by the camera's speed on
+// screen. Only floats: they are uniforms, so they can change every frame; enums and switches
+// are specialization constants and would need another pipeline.
+#define TAA_CXX_NONE_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
+#define TAA_CXX_NONE_B(key, def, id, name, modes, rule, text, doc, impl)
+struct TaaMovingSpec {
+  float from_px = 0.5f;
+  float to_px = 4.0f;
+  float depth = 10.0f;
+  TAA_SETTINGS(TAA_CXX_NONE_E, TAA_CXX_NONE_B, TAA_CXX_MEMBER_F)
+  // Not a key: the case sets taa.moving. The case loader copies the still value into every
+  // float the object leaves out, so a blend changes only what the case names.
+  bool active = false;
+};
+
+#define TAA_CXX_MOVING_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  v.field(#key, s.key, Range<float>{lo, hi},                                         \
+          Meta{"taa." #key " while the camera moves (default: taa." #key ")", impl,  \
+               "TaaUniforms.settings slot " #slot " (" #name "), blended", text});
+
+template <class V>
+void fields(V& v, TaaMovingSpec& s) {
+  const char* impl = "renderer/passes/taa_moving.cpp";
+  v.field("from_px", s.from_px, Range<float>{0.0f, 1e6f},
+          Meta{"camera speed on screen (render pixels per frame) up to which the still settings "
+               "apply unchanged",
+               impl});
+  v.field("to_px", s.to_px, Range<float>{0.0f, 1e6f},
+          Meta{"camera speed from which the moving settings apply in full; between from_px and "
+               "to_px the weight is a smoothstep",
+               impl});
+  v.field("depth", s.depth, Range<float>{1e-3f, 1e6f},
+          Meta{"the speed is that of points this far in front of the camera (world units), the "
+               "largest of five across the screen, reprojected from the previous frame",
+               impl});
+  TAA_SETTINGS(TAA_CXX_NONE_E, TAA_CXX_NONE_B, TAA_CXX_MOVING_F)
+}
+
 struct TaaSpec {
   TaaMode mode = TaaMode::Full;
   TAA_SETTINGS(TAA_CXX_MEMBER_E, TAA_CXX_MEMBER_B, TAA_CXX_MEMBER_F)
+  TaaMovingSpec moving;
   // A user's own resolve (docs/user-taa.md): replaces the built-in one when set.
   std::string shader;
   std::vector<ShaderParam> shader_params;
@@ -98,6 +138,10 @@ void fields(V& v, TaaSpec& s) {
            "pixels; adaptive: full TAA plus ray-traced samples where a segmentation marks aliasing",
            "renderer/spec/taa_modes.h"});
   TAA_SETTINGS(TAA_CXX_FIELD_E, TAA_CXX_FIELD_B, TAA_CXX_FIELD_F)
+  v.object("moving", s.moving,
+           Meta{"a second set of the resolve's float settings, blended in smoothly as the camera "
+                "moves (seed 000); any float taa key, plus from_px, to_px and depth",
+                "renderer/passes/taa_moving.cpp"});
   v.field("shader", s.shader,
           Meta{"your own resolve: a GLSL compute shader including taa_user.h, relative to the case "
                "file and inside its folder; replaces the built-in resolve (taa.mode full only, no "

@@ -171,9 +171,12 @@ void main() {
 
   vec3 history;
   if (s.consistency) {
+    // Taps are tested against the depth this pixel's surface had last frame (its world
+    // position under last frame's camera), as depth culling is; this frame's depth would
+    // fail every surface whose distance changed under a dolly.
+    float expectedDepth = reprojectDepth(taaUniforms, uv, texelFetch(depthTex, cur.pixel, 0).r).expectedDepth;
     Consistent cs = consistentHistory(s, taaUniforms, historyTex, prevIdsTex, prevDepthTex, prevNormalTex, r.prevUv,
-                                      texelFetch(idsTex, cur.pixel, 0).r,
-                                      linearDepth(taaUniforms, texelFetch(depthTex, cur.pixel, 0).r),
+                                      texelFetch(idsTex, cur.pixel, 0).r, expectedDepth,
                                       texelFetch(normalTex, cur.pixel, 0).xyz);
     history = cs.color;
     if (cs.level == CONSISTENCY_REJECTED) rejected = true;

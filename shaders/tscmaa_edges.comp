@@ -1,9 +1,10 @@
 #version 450
-// TSCMAA step 1: luma edge detection over the whole eye. Each pixel decides its four
-// sides from the 3x3 luma around it (a side's edge is the same whichever of its two
-// pixels decides it), writes the mask, and appends itself to the edge list and, if its
-// hash falls in the TAA share, to the TAA list. The lists carry the group counts of the
-// indirect passes over them, so those passes cost what the edge count costs.
+// TSCMAA step 1: CMAA's edge detection over the whole eye. Each pixel finds its four
+// sides from the 5x5 colours around it, judging each side as its owner pixel does (so a
+// side's edge is the same whichever of its two pixels asks), writes the mask, and
+// appends itself to the edge list and, if its hash falls in the TAA share, to the TAA
+// list. The lists carry the group counts of the indirect passes over them, so those
+// passes cost what the edge count costs.
 #extension GL_GOOGLE_include_directive : require
 #include "common/shared.h"
 #include "tscmaa/edge_rules.glsl"
@@ -22,45 +23,51 @@ layout(std430, binding = TSCMAA_BINDING_TAA_LIST) buffer TaaList {
   uint taaEntries[];
 };
 
-float gLuma[3][3];  // [dy + 1][dx + 1]; -1 outside the eye
+// Display-encoded colours of the 5x5 pixels around this one ([dy + 2][dx + 2]), and
+// whether each lies inside the eye.
+vec3 gColor[5][5];
+bool gInside[5][5];
 
-// Edge across the vertical boundary right of (dx, dy), dx in -1..0, dy in -1..1.
-float hEdge(int dx, int dy) {
-  float a = gLuma[dy + 1][dx + 1], b = gLuma[dy + 1][dx + 2];
-  return a < 0.0 || b < 0.0 ? 0.0 : abs(a - b);
+// The 4-bit value of the edge right of (dx, dy), or below it; 0 where the pixel across
+// lies outside the grid or the eye (the image border is not an edge).
+int rightEdge(int dx, int dy) {
+  if (dx >= 2 || !gInside[dy + 2][dx + 2] || !gInside[dy + 2][dx + 3]) return 0;
+  return edgeValue(gColor[dy + 2][dx + 2], gColor[dy + 2][dx + 3], u.params.x);
+}
+int bottomEdge(int dx, int dy) {
+  if (dy >= 2 || !gInside[dy + 2][dx + 2] || !gInside[dy + 3][dx + 2]) return 0;
+  return edgeValue(gColor[dy + 2][dx + 2], gColor[dy + 3][dx + 2], u.params.x);
 }
 
-// Edge across the horizontal boundary below (dx, dy), dx in -1..1, dy in -1..0.
-float vEdge(int dx, int dy) {
-  float a = gLuma[dy + 1][dx + 1], b = gLuma[dy + 2][dx + 1];
-  return a < 0.0 || b < 0.0 ? 0.0 : abs(a - b);
+// CMAA decides each edge once, at its owner: the pixel left of a vertical edge, above a
+// horizontal one. The twelve values it weighs are the owner's right and bottom edges,
+// those of its four neighbours, the bottom edge of its upper-right and the right edge of
+// its lower-left neighbour; the edge judged comes first.
+bool ownerKeeps(int dx, int dy, bool right) {
+  int r = rightEdge(dx, dy), b = bottomEdge(dx, dy);
+  int v[12] = int[12](right ? r : b, right ? b : r, rightEdge(dx + 1, dy), bottomEdge(dx + 1, dy),
+                      rightEdge(dx, dy + 1), bottomEdge(dx, dy + 1), rightEdge(dx - 1, dy),
+                      bottomEdge(dx - 1, dy), rightEdge(dx, dy - 1), bottomEdge(dx, dy - 1),
+                      bottomEdge(dx + 1, dy - 1), rightEdge(dx - 1, dy + 1));
+  return edgeKept(v, u.params.y);
 }
-
-float max6(float a, float b, float c, float d, float e, float f) {
-  return max(max(max(a, b), max(c, d)), max(e, f));
-}
-
-bool kept(float e, float m) { return edgeKept(e, m, u.params.x, u.params.y); }
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(u.size.xy);
   if (any(greaterThanEqual(p, size))) return;
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i) {
+  for (int j = -2; j <= 2; ++j)
+    for (int i = -2; i <= 2; ++i) {
       ivec2 q = p + ivec2(i, j);
       bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
-      gLuma[j + 1][i + 1] = inside ? edgeLuma(texelFetch(colorTex, q, 0).rgb) : -1.0;
+      gInside[j + 2][i + 2] = inside;
+      gColor[j + 2][i + 2] = inside ? edgeColor(texelFetch(colorTex, q, 0).rgb) : vec3(0.0);
     }
-  // Each side against the six edges that touch it: two in line, two at each end.
-  float l = hEdge(-1, 0), t = vEdge(0, -1), r = hEdge(0, 0), b = vEdge(0, 0);
-  float lt = hEdge(-1, -1), lb = hEdge(-1, 1), rt = hEdge(0, -1), rb = hEdge(0, 1);
-  float tl = vEdge(-1, -1), tr = vEdge(1, -1), bl = vEdge(-1, 0), br = vEdge(1, 0);
   uint m = 0u;
-  if (kept(l, max6(lt, lb, tl, t, bl, b))) m |= TSCMAA_EDGE_LEFT;
-  if (kept(t, max6(tl, tr, lt, l, rt, r))) m |= TSCMAA_EDGE_TOP;
-  if (kept(r, max6(rt, rb, t, tr, b, br))) m |= TSCMAA_EDGE_RIGHT;
-  if (kept(b, max6(bl, br, l, lb, r, rb))) m |= TSCMAA_EDGE_BOTTOM;
+  if (ownerKeeps(-1, 0, true)) m |= TSCMAA_EDGE_LEFT;
+  if (ownerKeeps(0, -1, false)) m |= TSCMAA_EDGE_TOP;
+  if (ownerKeeps(0, 0, true)) m |= TSCMAA_EDGE_RIGHT;
+  if (ownerKeeps(0, 0, false)) m |= TSCMAA_EDGE_BOTTOM;
 
   ivec2 g = p + ivec2(int(u.eye.x), 0);
   if (m != 0u && taaHash(uvec2(g)) < u.eye.y) m |= TSCMAA_TAA;

@@ -147,14 +147,16 @@ void fields(V& v, TaaSpec& s) {
                "file and inside its folder; replaces the built-in resolve (taa.mode full only, no "
                "other built-in taa setting)",
                "renderer/user/user_resolve.cpp"});
-  v.list("shader_params", s.shader_params,
-         Meta{"values for the shader's specialization constants, [{\"name\": ..., \"value\": ...}]; "
-              "checked against what the shader declares",
-              "renderer/user/user_interface.cpp", "", "taa.shader is set"});
-  v.field("shader_clamps", s.shader_clamps,
-          Meta{"the shader promises its output stays inside the current frame's 3x3 RGB min/max box, "
-               "so the history_bounded invariant may check it",
-               "harness/invariants/history_bounded.cpp", "", "taa.shader is set"});
+  v.list(
+      "shader_params", s.shader_params,
+      Meta{"values for the shader's specialization constants, [{\"name\": ..., \"value\": ...}]; "
+           "checked against what the shader declares",
+           "renderer/user/user_interface.cpp", "", "taa.shader is set"});
+  v.field(
+      "shader_clamps", s.shader_clamps,
+      Meta{"the shader promises its output stays inside the current frame's 3x3 RGB min/max box, "
+           "so the history_bounded invariant may check it",
+           "harness/invariants/history_bounded.cpp", "", "taa.shader is set"});
 }
 
 // Adaptive ray tracing (Marrs et al.), active when taa.mode is adaptive: after the
@@ -249,19 +251,21 @@ struct TscmaaSpec {
 template <class V>
 void fields(V& v, TscmaaSpec& s) {
   const char* edges = "shaders/tscmaa/edge_rules.glsl";
-  v.field("edge_threshold", s.edge_threshold, Range<float>{0.0f, 1.0f},
-          Meta{"smallest perceptual-luma difference (sqrt of Y/(1+Y)) that makes an edge; the seed "
-               "recommends 1/32 .. 1",
-               edges});
-  v.field("non_dominant_edge_removal", s.non_dominant_edge_removal, Range<float>{0.0f, 8.0f},
-          Meta{"an edge loses this many times the amount by which the strongest edge touching it "
-               "is stronger, before the threshold test (0 keeps every edge over the threshold)",
-               edges});
   v.field(
-      "blurriness", s.blurriness, Range<float>{0.0f, 4.0f},
-      Meta{"weight of the neighbours in the simple-shape blend of pixels with 2 to 4 edges (not "
-           "edge detection)",
-           "shaders/tscmaa/simple_shape.glsl"});
+      "edge_threshold", s.edge_threshold, Range<float>{0.0f, 1.0f},
+      Meta{"CMAA's edge threshold: the smallest difference of display-encoded colours (clipped to "
+           "[0, 1], square root, Rec. 709 weights on each channel's difference) that makes an "
+           "edge; the seed recommends 1/32 .. 1",
+           edges});
+  v.field("non_dominant_edge_removal", s.non_dominant_edge_removal, Range<float>{0.0f, 8.0f},
+          Meta{"CMAA's non-dominant edge removal: an edge must reach mean + this x (max - mean) of "
+               "the twelve edges around it (0: the mean; 1: only the strongest stay); the seed "
+               "recommends 0 .. 3",
+               edges});
+  v.field("blurriness", s.blurriness, Range<float>{0.0f, 4.0f},
+          Meta{"scales the neighbours' weights in CMAA's simple-shape blend of pixels with 2 to 4 "
+               "edges (0.7 gives CMAA's own 0.08/0.11/0.05; not edge detection)",
+               "shaders/tscmaa/simple_shape.glsl"});
   v.field(
       "taa_share", s.taa_share, Range<float>{0.0f, 1.0f},
       Meta{"share of edge pixels that also get TAA, chosen by a fixed hash of the pixel", edges});

@@ -24,6 +24,8 @@ bool tapConsistent(TaaSettings s, TaaUniforms u, TAA_PREV_GBUFFER_PARAMS, ivec2 
   vec2 uv = (vec2(historyPixel) + 0.5) * u.outputSize.zw;
   ivec2 q = prevRenderPixel(u, uv);
   if ((texelFetch(prevIdsTex, q, 0).r & 0x7fffffffu) != (ids & 0x7fffffffu)) return false;
+  // Sky against sky is the same "surface": it has no depth to compare and no normal.
+  if ((ids & 0x7fffffffu) == IDS_SKY) return true;
   float prevDepth = linearDepth(u, texelFetch(prevDepthTex, q, 0).r);
   if (abs(prevDepth - expectedDepth) > s.consistency_depth * max(expectedDepth, 1e-20)) return false;
   return dot(texelFetch(prevNormalTex, q, 0).xyz, normal) >= s.consistency_normal;

@@ -1,26 +1,47 @@
-// TSCMAA edge detection rules, mirrored exactly by the CPU reference in
-// tests/support/cpu_tscmaa.cpp: every expression that could be contracted into an FMA
-// is `precise`, so the GPU mask and the CPU mask agree bit for bit.
+// TSCMAA edge detection rules: CMAA's (Strugar, Intel 2014; its sample's CMAA.hlsl,
+// EdgeDetectColorCalcDiff, Edges0PS and PruneNonDominantEdges), mirrored exactly by the
+// CPU reference in tests/support/cpu_tscmaa.cpp: every expression that could be
+// contracted into an FMA is `precise`, so the GPU mask and the CPU mask agree bit for bit.
 #ifndef TSCMAA_EDGE_RULES_GLSL
 #define TSCMAA_EDGE_RULES_GLSL
 
-// Perceptual luma in [0, 1): the square root of the Reinhard-mapped Rec. 709 luminance.
-// The seed's threshold (1/22) is meant for display-encoded values; the square root
-// stands in for the display curve, Reinhard for the HDR range.
-float edgeLuma(vec3 c) {
-  c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(65504.0));
-  precise float y = (0.2126 * c.r + 0.7152 * c.g) + 0.0722 * c.b;
-  precise float mapped = y / (1.0 + y);
-  return sqrt(mapped);
+// Colour as displayed. CMAA detects edges on the 8-bit display-encoded back buffer, and
+// TSCMAA's 1/22 threshold was tuned there. Linear HDR is clipped to the display's range
+// and encoded with the square root, CMAA 2's own stand-in for the sRGB curve
+// (ProcessColorForEdgeDetect), which unlike pow is exact on every IEEE device.
+vec3 edgeColor(vec3 c) {
+  c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(1.0));
+  return sqrt(c);
 }
 
-// Non-dominant edge removal: an edge of strength e loses `removal` times the amount by
-// which the strongest edge touching it (m) is stronger, then must exceed the threshold.
-// Texture detail beside a silhouette thus drops out, and with it the blur CMAA would
-// spend on it; an edge as strong as its neighbours keeps the plain threshold test.
-bool edgeKept(float e, float m, float threshold, float removal) {
-  precise float lowered = e - removal * max(m - e, 0.0);
-  return lowered > threshold;
+// CMAA's edge value between two display-encoded colours: the Rec. 709 luma weights on
+// the per-channel differences, less the threshold, kept in 4 bits rounded up so that
+// any difference over the threshold is at least 1/15. Returned as the 4-bit count.
+int edgeValue(vec3 a, vec3 b, float threshold) {
+  vec3 d = abs(a - b);
+  precise float diff = (0.2126 * d.r + 0.7152 * d.g) + 0.0722 * d.b;
+  precise float above = clamp(diff - threshold, 0.0, 1.0);
+  precise float scaled = above * 15.0 + 0.99;
+  return int(scaled);
+}
+
+// CMAA's non-dominant edge removal. An edge is judged against the twelve edge values of
+// its owner pixel's neighbourhood (`values[0]` is the edge itself): it stays if it
+// reaches the mix of their mean and maximum set by `removal`. CMAA's sample sums the
+// mean over its last group of four only (an assignment where an accumulation was meant);
+// the mean here is of all twelve, as its comment and the article describe.
+bool edgeKept(int values[12], float removal) {
+  if (values[0] == 0) return false;
+  int maxValue = 0;
+  int sum = 0;
+  for (int i = 0; i < 12; ++i) {
+    maxValue = max(maxValue, values[i]);
+    sum += values[i];
+  }
+  // In units of 1/180 (twelve values of 1/15 each) the mean is the plain sum, and no
+  // division is left to round differently on another device.
+  precise float threshold = float(sum) * (1.0 - removal) + float(12 * maxValue) * removal;
+  return float(12 * values[0]) >= threshold;
 }
 
 // A fixed 16-bit hash of the (side-by-side) pixel: the TAA share is the edge pixels

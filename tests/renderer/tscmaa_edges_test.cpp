@@ -22,9 +22,10 @@ spec::TscmaaSpec knobs(float threshold, float removal, float share = 0.5f) {
   return t;
 }
 
-// The linear grey whose edge luma is `l`: l^2 = y / (1 + y).
-float greyForLuma(float l) {
-  return l * l / (1.0f - l * l);
+// The linear grey displayed as `l` (edge detection encodes with the square root; the
+// luma weights sum to 1, so a grey step's difference is the step itself).
+float greyShownAs(float l) {
+  return l * l;
 }
 
 uint32_t bitsAt(const std::vector<uint32_t>& mask, int w, int x, int y) {
@@ -35,7 +36,7 @@ TEST(TscmaaEdgeCpu, ThresholdDecidesWhetherAStepIsAnEdge) {
   const float t = 1.0f / 22.0f;
   for (const float step : {t * 0.8f, t * 1.2f}) {
     const Image img =
-        grey(16, 8, [&](int x, int) { return greyForLuma(x < 8 ? 0.4f : 0.4f + step); });
+        grey(16, 8, [&](int x, int) { return greyShownAs(x < 8 ? 0.4f : 0.4f + step); });
     const auto mask = test::tscmaaEdgeMask(img, knobs(t, 0.5f, 0.0f));
     const bool edge = step > t;
     for (int y = 0; y < 8; ++y)
@@ -49,23 +50,66 @@ TEST(TscmaaEdgeCpu, ThresholdDecidesWhetherAStepIsAnEdge) {
   }
 }
 
+// CMAA's edge value: the excess of the luma-weighted difference of display-encoded
+// colours over the threshold, in fifteenths rounded up (by its +0.99), at most 15.
+TEST(TscmaaEdgeCpu, EdgeValueIsTheExcessOverTheThresholdInFifteenths) {
+  const float t = 1.0f / 22.0f;
+  auto value = [&](float a, float b) {  // two greys, given as displayed
+    const float ca[3] = {std::sqrt(a * a), std::sqrt(a * a), std::sqrt(a * a)};
+    const float cb[3] = {std::sqrt(b * b), std::sqrt(b * b), std::sqrt(b * b)};
+    return test::tscmaaEdgeValue(ca, cb, t);
+  };
+  EXPECT_EQ(value(0.5f, 0.5f + 0.9f * t), 0);
+  EXPECT_EQ(value(0.2f, 0.2f + t + 0.003f), 1);
+  EXPECT_EQ(value(0.2f, 0.2f + t + 1.5f / 15.0f), 2);
+  EXPECT_EQ(value(0.0f, 1.0f), 15);
+  // Colour as displayed: HDR values past white are all white, NaN is black.
+  const float hdrA[3] = {test::tscmaaEdgeChannel(2.0f), test::tscmaaEdgeChannel(2.0f),
+                         test::tscmaaEdgeChannel(2.0f)};
+  const float hdrB[3] = {test::tscmaaEdgeChannel(50.0f), test::tscmaaEdgeChannel(50.0f),
+                         test::tscmaaEdgeChannel(50.0f)};
+  EXPECT_EQ(test::tscmaaEdgeValue(hdrA, hdrB, t), 0);
+  EXPECT_EQ(test::tscmaaEdgeChannel(std::nanf("")), 0.0f);
+  // Per-channel differences with Rec. 709 weights: a pure blue step is weak, green strong.
+  const float black[3] = {0.0f, 0.0f, 0.0f}, blue[3] = {0.0f, 0.0f, 0.5f},
+              green[3] = {0.0f, 0.5f, 0.0f};
+  EXPECT_EQ(test::tscmaaEdgeValue(black, blue, t), 0);
+  EXPECT_GT(test::tscmaaEdgeValue(black, green, t), 4);
+}
+
+// CMAA's rule on the twelve values of an owner pixel (the judged edge first): the edge
+// must reach mean + removal x (max - mean).
+TEST(TscmaaEdgeCpu, RemovalMixesTheNeighbourhoodsMeanAndMaximum) {
+  const int weakBesideStrong[12] = {1, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  EXPECT_TRUE(test::tscmaaEdgeKept(weakBesideStrong, 0.0f));  // 1 >= mean 11/12
+  EXPECT_FALSE(test::tscmaaEdgeKept(weakBesideStrong, 0.5f));
+  const int even[12] = {5, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5};
+  for (const float removal : {0.0f, 0.5f, 1.0f}) EXPECT_TRUE(test::tscmaaEdgeKept(even, removal));
+  const int belowMean[12] = {1, 8, 8, 8, 0, 0, 0, 0, 0, 0, 0, 0};
+  EXPECT_FALSE(test::tscmaaEdgeKept(belowMean, 0.0f));  // 1 < mean 25/12
+  const int secondStrongest[12] = {9, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  EXPECT_TRUE(test::tscmaaEdgeKept(secondStrongest, 0.8f));
+  EXPECT_FALSE(test::tscmaaEdgeKept(secondStrongest, 1.0f));  // at 1 only the strongest stay
+  const int none[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  EXPECT_FALSE(test::tscmaaEdgeKept(none, 0.0f));
+}
+
 // A weak horizontal step (left half) meets a strong vertical edge: with removal the
-// weak edge's last piece, which touches the strong edge, drops out; its other pieces,
-// which touch only equals, stay.
+// weak edge's pieces within reach of the strong edge drop out; its other pieces, which
+// touch only equals, stay, and the strong edge stays whole.
 TEST(TscmaaEdgeCpu, NonDominantRemovalDropsWeakEdgesTouchingStrongOnes) {
   const Image img = grey(16, 16, [](int x, int y) {
-    return x >= 8 ? greyForLuma(0.95f) : greyForLuma(y < 8 ? 0.30f : 0.37f);
+    return x >= 8 ? greyShownAs(0.95f) : greyShownAs(y < 8 ? 0.30f : 0.37f);
   });
-  const auto kept = test::tscmaaEdgeMask(img, knobs(1.0f / 22.0f, 0.0f, 0.0f));
   const auto removed = test::tscmaaEdgeMask(img, knobs(1.0f / 22.0f, 0.5f, 0.0f));
-  EXPECT_TRUE(bitsAt(kept, 16, 7, 7) & TSCMAA_EDGE_BOTTOM);
-  EXPECT_FALSE(bitsAt(removed, 16, 7, 7) & TSCMAA_EDGE_BOTTOM);
-  EXPECT_FALSE(bitsAt(removed, 16, 7, 8) & TSCMAA_EDGE_TOP);
-  for (int x = 0; x < 7; ++x) {
+  for (int x = 6; x < 8; ++x) {
+    EXPECT_FALSE(bitsAt(removed, 16, x, 7) & TSCMAA_EDGE_BOTTOM) << x;
+    EXPECT_FALSE(bitsAt(removed, 16, x, 8) & TSCMAA_EDGE_TOP) << x;
+  }
+  for (int x = 0; x < 6; ++x) {
     EXPECT_TRUE(bitsAt(removed, 16, x, 7) & TSCMAA_EDGE_BOTTOM) << x;
     EXPECT_TRUE(bitsAt(removed, 16, x, 8) & TSCMAA_EDGE_TOP) << x;
   }
-  // The strong edge dominates and stays whole.
   for (int y = 0; y < 16; ++y) EXPECT_TRUE(bitsAt(removed, 16, 7, y) & TSCMAA_EDGE_RIGHT) << y;
 }
 
@@ -106,7 +150,7 @@ TEST(TscmaaEdgeGpu, MaskMatchesCpuReferenceBitForBit) {
   posttest::setPixel(img, 10, 10, posttest::kNaN);
   posttest::setPixel(img, 30, 20, posttest::kInf);
   for (const auto& [threshold, removal] :
-       {std::pair{1.0f / 22.0f, 0.5f}, std::pair{1.0f / 32.0f, 0.0f}, std::pair{0.1f, 2.0f}}) {
+       {std::pair{1.0f / 22.0f, 0.5f}, std::pair{1.0f / 32.0f, 0.0f}, std::pair{0.1f, 1.0f}}) {
     const auto spec =
         tscmaatest::tscmaaCase("\"edge_threshold\": " + std::to_string(threshold) +
                                    ", \"non_dominant_edge_removal\": " + std::to_string(removal),

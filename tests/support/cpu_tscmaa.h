@@ -11,8 +11,12 @@
 
 namespace taa::test {
 
-float tscmaaEdgeLuma(float r, float g, float b);
-bool tscmaaEdgeKept(float e, float m, float threshold, float removal);
+// One display-encoded channel (clipped to [0, 1], square root), as edgeColor.
+float tscmaaEdgeChannel(float c);
+// CMAA's 4-bit edge value between two encoded colours, as edgeValue.
+int tscmaaEdgeValue(const float a[3], const float b[3], float threshold);
+// CMAA's non-dominant removal on an owner's twelve values (the judged edge first).
+bool tscmaaEdgeKept(const int values[12], float removal);
 uint32_t tscmaaTaaHash(uint32_t x, uint32_t y);
 
 // TSCMAA_EDGE_* and TSCMAA_TAA bits of every pixel (row-major) of one eye's colour;

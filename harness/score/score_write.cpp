@@ -1,9 +1,9 @@
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/svg_plot.h"
+#include "report/text_util.h"
 #include "score/score.h"
 
 namespace taa::score {
@@ -12,14 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string scoreFmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), f, v);
-  return buf;
-}
-
 std::string ghostText(const LaneScore& l) {
-  return l.ghostingMeasured ? scoreFmt("%.4f", l.ghosting) : "-";
+  return l.ghostingMeasured ? report::formatFixed(l.ghosting, 4) : "-";
 }
 
 // FLIP of every case, one series per lane, against the case: where the user's resolve
@@ -63,11 +57,11 @@ std::string scoreMarkdown(const Scorecard& s) {
     const auto& c = s.cases[i];
     for (const auto& l : c.lanes)
       out += "| " + std::to_string(i) + " | " + c.name + (c.stress ? " (stress)" : "") + " | " +
-             l.lane + " | " + scoreFmt("%.4f", l.flip) + " | " + scoreFmt("%.4f", l.rmse) + " | " +
-             scoreFmt("%.4f", l.flicker) + " (" + scoreFmt("%.4f", c.referenceFlicker) + ") | " +
-             std::to_string(l.convergence) + " / " + std::to_string(c.frames) + " | " +
-             ghostText(l) + " | " + std::to_string(l.nonFinite) + " | " +
-             scoreFmt("%.2f", l.frameMs) + " |\n";
+             l.lane + " | " + report::formatFixed(l.flip, 4) + " | " +
+             report::formatFixed(l.rmse, 4) + " | " + report::formatFixed(l.flicker, 4) + " (" +
+             report::formatFixed(c.referenceFlicker, 4) + ") | " + std::to_string(l.convergence) +
+             " / " + std::to_string(c.frames) + " | " + ghostText(l) + " | " +
+             std::to_string(l.nonFinite) + " | " + report::formatFixed(l.frameMs, 2) + " |\n";
   }
   return out;
 }
@@ -111,10 +105,10 @@ void writeScorecard(const fs::path& dir, const Scorecard& s) {
   std::vector<std::vector<std::string>> rows;
   for (size_t i = 0; i < s.cases.size(); ++i)
     for (const auto& l : s.cases[i].lanes)
-      rows.push_back({std::to_string(i), s.cases[i].name, l.lane, scoreFmt("%.4f", l.flip),
-                      scoreFmt("%.4f", l.rmse), scoreFmt("%.4f", l.flicker),
+      rows.push_back({std::to_string(i), s.cases[i].name, l.lane, report::formatFixed(l.flip, 4),
+                      report::formatFixed(l.rmse, 4), report::formatFixed(l.flicker, 4),
                       std::to_string(l.convergence), ghostText(l), std::to_string(l.nonFinite),
-                      scoreFmt("%.2f", l.frameMs)});
+                      report::formatFixed(l.frameMs, 2)});
   report::ReportSection section;
   section.title = "Scorecard: " + s.shader;
   section.note =

@@ -1,8 +1,8 @@
-#include <cstdio>
 
 #include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/svg_plot.h"
+#include "report/text_util.h"
 #include "sweep/sweep.h"
 
 namespace taa::sweep {
@@ -10,12 +10,6 @@ namespace taa::sweep {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), f, v);
-  return buf;
-}
 
 std::vector<size_t> front(const SweepResult& r) {
   std::vector<double> x, y;
@@ -26,7 +20,9 @@ std::vector<size_t> front(const SweepResult& r) {
   return report::paretoFront(x, y);
 }
 
-bool onFront(const std::vector<size_t>& f, size_t i) { return std::find(f.begin(), f.end(), i) != f.end(); }
+bool onFront(const std::vector<size_t>& f, size_t i) {
+  return std::find(f.begin(), f.end(), i) != f.end();
+}
 
 void writeText(const fs::path& file, const std::string& text) {
   writeFileAtomically(file, text);
@@ -62,36 +58,42 @@ std::string plot(const SweepResult& r, bool standalone) {
 
 std::string markdownTable(const SweepResult& r) {
   const auto f = front(r);
-  std::string s = "| preset | FLIP mean | RMSE | flicker (reference) | TAA ms | frame ms | Pareto |\n"
-                  "|---|---:|---:|---:|---:|---:|:---:|\n";
+  std::string s =
+      "| preset | FLIP mean | RMSE | flicker (reference) | TAA ms | frame ms | Pareto |\n"
+      "|---|---:|---:|---:|---:|---:|:---:|\n";
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
-    s += "| " + p.name + " | " + fmt("%.4f", p.flipMean) + " | " + fmt("%.4f", p.rmse) + " | " +
-         fmt("%.4f", p.flicker) + " (" + fmt("%.4f", p.referenceFlicker) + ") | " + fmt("%.2f", p.taaMs) + " | " +
-         fmt("%.2f", p.frameMs) + " | " + (onFront(f, i) ? "yes" : "") + " |\n";
+    s += "| " + p.name + " | " + report::formatFixed(p.flipMean, 4) + " | " +
+         report::formatFixed(p.rmse, 4) + " | " + report::formatFixed(p.flicker, 4) + " (" +
+         report::formatFixed(p.referenceFlicker, 4) + ") | " + report::formatFixed(p.taaMs, 2) +
+         " | " + report::formatFixed(p.frameMs, 2) + " | " + (onFront(f, i) ? "yes" : "") + " |\n";
   }
   return s;
 }
 
 void writeSweep(const fs::path& dir, const SweepResult& r) {
   createOutputDirectory(dir);
-  std::string csv = "preset,flip_mean,rmse,flicker,reference_flicker,taa_ms,frame_ms,pareto,patch\n";
+  std::string csv =
+      "preset,flip_mean,rmse,flicker,reference_flicker,taa_ms,frame_ms,pareto,patch\n";
   const auto f = front(r);
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
     std::string patch = p.patch;
     for (auto& c : patch)
       if (c == '"') c = '\'';
-    csv += p.name + "," + fmt("%.6g", p.flipMean) + "," + fmt("%.6g", p.rmse) + "," + fmt("%.6g", p.flicker) + "," +
-           fmt("%.6g", p.referenceFlicker) + "," + fmt("%.4f", p.taaMs) + "," + fmt("%.4f", p.frameMs) + "," +
-           (onFront(f, i) ? "1" : "0") + ",\"" + patch + "\"\n";
+    csv += p.name + "," + report::formatNumber(p.flipMean, 6) + "," +
+           report::formatNumber(p.rmse, 6) + "," + report::formatNumber(p.flicker, 6) + "," +
+           report::formatNumber(p.referenceFlicker, 6) + "," + report::formatFixed(p.taaMs, 4) +
+           "," + report::formatFixed(p.frameMs, 4) + "," + (onFront(f, i) ? "1" : "0") + ",\"" +
+           patch + "\"\n";
   }
   writeText(dir / "sweep.csv", csv);
   std::string frames = "preset,frame,rmse,flip_mean\n";
   for (const auto& p : r.presets)
     for (size_t k = 0; k < p.rmsePerFrame.size(); ++k)
-      frames += p.name + "," + std::to_string(r.fromFrame + int(k)) + "," + fmt("%.6g", p.rmsePerFrame[k]) + "," +
-                fmt("%.6g", p.flipPerFrame[k]) + "\n";
+      frames += p.name + "," + std::to_string(r.fromFrame + int(k)) + "," +
+                report::formatNumber(p.rmsePerFrame[k], 6) + "," +
+                report::formatNumber(p.flipPerFrame[k], 6) + "\n";
   writeText(dir / "frames.csv", frames);
   writeText(dir / "sweep.md", markdownTable(r));
   writeText(dir / "sweep.svg", plot(r, true));
@@ -99,14 +101,16 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
   std::vector<std::vector<std::string>> rows;
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
-    rows.push_back({p.name, fmt("%.4f", p.flipMean), fmt("%.4f", p.rmse), fmt("%.4f", p.flicker),
-                    fmt("%.2f", p.taaMs), fmt("%.2f", p.frameMs), onFront(f, i) ? "yes" : "", p.patch});
+    rows.push_back({p.name, report::formatFixed(p.flipMean, 4), report::formatFixed(p.rmse, 4),
+                    report::formatFixed(p.flicker, 4), report::formatFixed(p.taaMs, 2),
+                    report::formatFixed(p.frameMs, 2), onFront(f, i) ? "yes" : "", p.patch});
   }
   report::ReportSection section;
   section.title = "Sweep: " + r.caseName;
-  section.note = "Each preset replays the same script; errors are means over frames " + std::to_string(r.fromFrame) +
-                 ".." + std::to_string(r.frames - 1) + " against the supersampled reference (" +
-                 std::to_string(r.referenceSamples) + " samples), times are GPU timestamps on " + r.device + ".";
+  section.note = "Each preset replays the same script; errors are means over frames " +
+                 std::to_string(r.fromFrame) + ".." + std::to_string(r.frames - 1) +
+                 " against the supersampled reference (" + std::to_string(r.referenceSamples) +
+                 " samples), times are GPU timestamps on " + r.device + ".";
   section.svg = plot(r, false);
   section.tableHtml = report::htmlTable(
       {"preset", "FLIP mean", "RMSE", "flicker", "TAA ms", "frame ms", "Pareto", "settings"}, rows);

@@ -128,6 +128,13 @@ std::string curves(const run::CaseResult& c) {
   o.integerX = true;
   o.xLabel = "frame";
   for (const auto& f : c.frames) o.xMarks.push_back(f.frame);
+  // The whole sequence, so that one checked frame shows where it lies in it.
+  const size_t sequence =
+      std::max({c.frameMs.size(), c.referenceRmse.size(), c.frameSha256.size()});
+  if (sequence > 1) {
+    o.xMin = 0.0;
+    o.xMax = double(sequence - 1);
+  }
   std::string s = "<h3>Over the sequence</h3>\n<div class=\"plots\">\n";
   {
     std::vector<PlotSeries> series;

@@ -42,6 +42,39 @@ std::string px(double v) {
 
 constexpr double kCharWidth = 6.6;  // monospace at font-size 11
 
+// Where a point label goes: its box, its baseline and whether it is anchored at its end.
+struct LabelBox {
+  double x0, y0, x1, y1;
+  double baseline;
+  bool anchorEnd;
+};
+
+bool labelsOverlap(const LabelBox& a, const LabelBox& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+// Beside its marker at (cx, cy), in the first of four places (above or below, right or left;
+// left first near the plot's right edge, so it is not cut off) that overlaps no label placed
+// before; the first place when every one does. Pareto fronts of close presets stay readable.
+LabelBox placeLabel(double cx, double cy, size_t chars, double rightEdge,
+                    const std::vector<LabelBox>& placed) {
+  constexpr double kLabelCharWidth = 6.0;  // font-size 10
+  const double width = double(chars) * kLabelCharWidth;
+  const bool leftFirst = cx > rightEdge - 80.0;
+  std::vector<LabelBox> candidates;
+  for (const bool left : {leftFirst, !leftFirst})
+    for (const bool above : {true, false}) {
+      const double baseline = above ? cy - 5.0 : cy + 13.0;
+      const double x0 = left ? cx - 5.0 - width : cx + 5.0;
+      candidates.push_back({x0, baseline - 9.0, x0 + width, baseline + 2.0, baseline, left});
+    }
+  for (const auto& c : candidates)
+    if (std::none_of(placed.begin(), placed.end(),
+                     [&](const LabelBox& p) { return labelsOverlap(c, p); }))
+      return c;
+  return candidates.front();
+}
+
 std::string colourOf(const std::vector<PlotSeries>& series, size_t i) {
   return series[i].colour.empty() ? kPalette[i % std::size(kPalette)] : series[i].colour;
 }
@@ -109,6 +142,9 @@ Axis makeAxis(std::vector<double> values, bool log, bool fromZero, bool snap, bo
     return a;
   }
   if (fromZero) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+  // All zero (an exact match) on an axis from zero: show [0, 1], not a range around 0 that
+  // would offer negative errors.
+  if (fromZero && hi == lo) hi = lo + 1.0;
   if (integer && hi - lo < 1) hi = lo + 1;
   a.ticks = niceTicks(lo, hi, maxTicks);
   const double step = a.ticks.size() > 1 ? a.ticks[1] - a.ticks[0] : 1.0;
@@ -184,6 +220,8 @@ std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& o)
     xs.insert(xs.end(), s.x.begin(), s.x.end());
     ys.insert(ys.end(), s.y.begin(), s.y.end());
   }
+  for (const double bound : {o.xMin, o.xMax})
+    if (std::isfinite(bound)) xs.push_back(bound);
   const bool anyData = [&] {
     for (const auto& s : series)
       for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
@@ -251,6 +289,7 @@ std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& o)
   std::vector<size_t> order(series.size());
   std::iota(order.begin(), order.end(), size_t{0});
   std::stable_partition(order.begin(), order.end(), [&](size_t i) { return !series[i].highlight; });
+  std::vector<LabelBox> placedLabels;
   for (const size_t i : order) {
     const PlotSeries& ps = series[i];
     const std::string colour = colourOf(series, i);
@@ -285,12 +324,13 @@ std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& o)
         else
           s += "/>\n";
         if (ps.showLabels && j < ps.pointLabels.size()) {
-          // Near the right edge the label goes to the marker's left so it is not cut off.
-          const double cx = ax.pixel(ps.x[j]);
-          const bool left = cx > ax.p1 - 80.0;
-          s += "<text class=\"point-label\" x=\"" + px(left ? cx - 5 : cx + 5) + "\" y=\"" +
-               px(ay.pixel(ps.y[j]) - 5) + "\" font-size=\"10\"" + (left ? " text-anchor=\"end\"" : "") + ">" +
-               escapeMarkup(ps.pointLabels[j]) + "</text>\n";
+          const LabelBox b = placeLabel(ax.pixel(ps.x[j]), ay.pixel(ps.y[j]),
+                                        ps.pointLabels[j].size(), ax.p1, placedLabels);
+          placedLabels.push_back(b);
+          s += "<text class=\"point-label\" x=\"" + px(b.anchorEnd ? b.x1 : b.x0) + "\" y=\"" +
+               px(b.baseline) + "\" font-size=\"10\"" +
+               (b.anchorEnd ? " text-anchor=\"end\"" : "") + ">" + escapeMarkup(ps.pointLabels[j]) +
+               "</text>\n";
         }
       }
     }

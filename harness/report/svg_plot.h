@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,11 @@ struct PlotOptions {
   bool yFromZero = true;       // linear y axis starts at 0 so small errors do not look large
   bool integerX = false;       // x ticks only at integers (frame numbers)
   std::vector<double> xMarks;  // dashed vertical guides, e.g. the frames checked against goldens
-  bool standalone = false;     // add the xmlns attribute needed by a separate .svg file
+  // The x axis covers at least [xMin, xMax] (NaN: the data alone decides), e.g. a case's whole
+  // sequence when only one frame of it has a point.
+  double xMin = std::numeric_limits<double>::quiet_NaN();
+  double xMax = std::numeric_limits<double>::quiet_NaN();
+  bool standalone = false;  // add the xmlns attribute needed by a separate .svg file
 };
 
 std::string svgPlot(const std::vector<PlotSeries>& series, const PlotOptions& options);

@@ -85,3 +85,59 @@ TEST(ReportSvgPlot, NonFiniteAndLogScaleBreakLines) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every point label's box as drawn: 6 px per character at font-size 10, extending right of x,
+// or left of it when anchored at its end; from 9 px above the baseline to 2 below.
+struct DrawnLabel {
+  double x0, y0, x1, y1;
+};
+
+std::vector<DrawnLabel> drawnLabels(const std::string& svg) {
+  std::vector<DrawnLabel> out;
+  for (size_t at = svg.find("class=\"point-label\""); at != std::string::npos;
+       at = svg.find("class=\"point-label\"", at + 1)) {
+    const size_t close = svg.find('>', at), end = svg.find("</text>", close);
+    const double x = std::stod(svg.substr(svg.find("x=\"", at) + 3));
+    const double y = std::stod(svg.substr(svg.find("y=\"", at) + 3));
+    const double width = 6.0 * double(end - close - 1);
+    const bool anchorEnd =
+        svg.substr(at, close - at).find("text-anchor=\"end\"") != std::string::npos;
+    out.push_back({anchorEnd ? x - width : x, y - 9.0, anchorEnd ? x : x + width, y + 2.0});
+  }
+  return out;
+}
+
+TEST(ReportSvgPlot, PointLabelsOfNearbyPointsDoNotOverlap) {
+  // Three presets within a few pixels of each other: each label takes another side.
+  PlotSeries front{.x = {10.0, 10.3, 10.6},
+                   .y = {0.010, 0.0101, 0.0102},
+                   .markers = true,
+                   .pointLabels = {"msaa_4x", "tscmaa", "default"},
+                   .showLabels = true};
+  PlotSeries wide{.x = {1.0, 100.0}, .y = {0.0, 0.2}};
+  const auto boxes = drawnLabels(svgPlot({wide, front}, {.logX = true}));
+  ASSERT_EQ(boxes.size(), 3u);
+  for (size_t i = 0; i < boxes.size(); ++i)
+    for (size_t j = i + 1; j < boxes.size(); ++j) {
+      const auto &a = boxes[i], &b = boxes[j];
+      EXPECT_FALSE(a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1)
+          << "labels " << i << " and " << j << " overlap";
+    }
+}
+
+// An exact match plots RMSE 0 on an axis from 0 to 1 (no negative errors), over the whole
+// sequence when the options ask for it.
+TEST(ReportSvgPlot, AllZeroFromZeroAndForcedXRange) {
+  PlotSeries one{.x = {23.0}, .y = {0.0}, .line = false, .markers = true};
+  const std::string svg = svgPlot({one}, {.integerX = true, .xMin = 0.0, .xMax = 23.0});
+  EXPECT_EQ(svg.find(">-"), std::string::npos);  // no negative tick label
+  EXPECT_NE(svg.find(">1.0<"), std::string::npos);
+  EXPECT_NE(svg.find(">0<"), std::string::npos);  // frame 0 is on the axis
+  EXPECT_NE(svg.find(">20<"), std::string::npos);
+  const std::string bare = svgPlot({one}, {.integerX = true});
+  EXPECT_EQ(bare.find(">0<"), std::string::npos);  // without the range the axis starts at 23
+}
+
+}  // namespace

@@ -59,7 +59,10 @@ void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComp
     region.width = std::min(zoom.width, actual.width - region.x);
     region.height = std::min(zoom.height, actual.height - region.y);
     fc.images.zoomChosen = true;
-  } else if (golden && errorMap) {
+  } else if (golden && errorMap &&
+             std::any_of(errorMap->data.begin(), errorMap->data.end(),
+                         [](float e) { return e != 0.0f; })) {
+    // (An exact match has no worst region: the crop would show an arbitrary corner.)
     const int w = std::max(1, std::min(actual.width, std::max(8, actual.width / 10)));
     const int h = std::max(1, std::min(actual.height, std::max(8, actual.height / 10)));
     region = compare::worstRegion(*errorMap, w, h);

@@ -37,7 +37,10 @@ TEST_F(HarnessCli, MissingGoldensSkipLocallyThenBlessThenExactPass) {
 
 TEST_F(HarnessCli, ManifestRecordsReasonDriverCommitAndHistory) {
   ASSERT_EQ(bless("small").exitCode, 0);
-  ASSERT_EQ(harness("bless " + casePath("small") + " --out " + (root_ / "b2").string() + " --reason 'second'").exitCode, 0);
+  ASSERT_EQ(harness("bless " + casePath("small") + " --out " + (root_ / "b2").string() +
+                    " --reason 'second'")
+                .exitCode,
+            0);
   std::ifstream in(root_ / "goldens/small/manifest.json");
   const auto m = nlohmann::json::parse(in);
   EXPECT_EQ(m["reason"], "second");
@@ -53,12 +56,23 @@ TEST_F(HarnessCli, ManifestRecordsReasonDriverCommitAndHistory) {
 TEST_F(HarnessCli, ChangedPixelsInTheSameEnvironmentAreARegression) {
   ASSERT_EQ(bless("small").exitCode, 0);
   // A different alpha is a real change of the output.
-  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.5}})"));
+  writeCase("small",
+            std::string(kSmallCase)
+                .replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.5}})"));
   const auto r = run("small");
   EXPECT_EQ(r.exitCode, 1) << r.output;
-  EXPECT_NE(r.output.find("pixels differ from the golden in the same environment"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pixels differ from the golden in the same environment"),
+            std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("STALE small"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(root_ / "out/small/frame_0005.diff.png"));
+  // A regression is magnified where it is worst; an exact match has no worst region to show.
+  EXPECT_TRUE(fs::exists(root_ / "out/small/frame_0005.zoom_diff.png"));
+  writeCase("small", kSmallCase);
+  fs::remove_all(root_ / "out");
+  ASSERT_EQ(run("small").exitCode, 0);
+  EXPECT_FALSE(fs::exists(root_ / "out/small/frame_0005.zoom_diff.png"));
+  EXPECT_FALSE(fs::exists(root_ / "out/small/frame_0005.zoom_actual.png"));
 }
 
 TEST_F(HarnessCli, EditedCaseWithUnchangedPixelsPassesWithStaleNote) {
@@ -68,7 +82,9 @@ TEST_F(HarnessCli, EditedCaseWithUnchangedPixelsPassesWithStaleNote) {
   writeCase("small", edited);
   const auto r = run("small");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("NOTE small: the case file (or a file it references) changed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("NOTE small: the case file (or a file it references) changed"),
+            std::string::npos)
+      << r.output;
 }
 
 TEST_F(HarnessCli, OtherCpuFeatureLevelUsesTolerancesAndStillCatchesARegression) {
@@ -82,8 +98,9 @@ TEST_F(HarnessCli, OtherCpuFeatureLevelUsesTolerancesAndStillCatchesARegression)
   EXPECT_NE(res["fingerprint"].get<std::string>().find("override:sse4.1"), std::string::npos);
   EXPECT_TRUE(res["cases"][0]["frames"][1]["tolerance_mode"].get<bool>());
   // The same environment change with a real regression (no jitter: the frame aliases).
-  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1,
-                                                     R"(, "jitter": {"pattern": "none"}})"));
+  writeCase("small", std::string(kSmallCase)
+                         .replace(std::string(kSmallCase).rfind('}'), 1,
+                                  R"(, "jitter": {"pattern": "none"}})"));
   r = run("small", "", sse);
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("FAIL small frame 5 golden tolerance"), std::string::npos) << r.output;
@@ -93,21 +110,25 @@ TEST_F(HarnessCli, BadInputExitsTwoAndNamesFileKeyAndFix) {
   writeCase("bad", R"({"taa": {"alpah": 0.2}})");
   const auto r = run("bad");
   EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find("bad.json: taa.alpah: unknown key; did you mean 'taa.alpha'?"), std::string::npos)
+  EXPECT_NE(r.output.find("bad.json: taa.alpah: unknown key; did you mean 'taa.alpha'?"),
+            std::string::npos)
       << r.output;
 }
 
 TEST_F(HarnessCli, HelpPrintsUsageAndExitsZeroUnknownOptionsExitTwo) {
-  for (const char* cmd : {"run", "render", "bless", "sweep", "bake", "new-case", "validate", "techniques"}) {
+  for (const char* cmd :
+       {"run", "render", "bless", "sweep", "bake", "new-case", "validate", "techniques"}) {
     const auto r = harness(std::string(cmd) + " --help");
     EXPECT_EQ(r.exitCode, 0) << cmd << ": " << r.output;
-    EXPECT_EQ(r.output.rfind("usage: taa-harness " + std::string(cmd), 0), 0u) << cmd << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("usage: taa-harness " + std::string(cmd), 0), 0u)
+        << cmd << ": " << r.output;
   }
   // An option a command does not know is an error, never silently ignored.
   for (const char* cmd : {"techniques --bogus", "validate --bogus x.json", "run --bogus x.json"}) {
     const auto r = harness(cmd);
     EXPECT_EQ(r.exitCode, 2) << cmd << ": " << r.output;
-    EXPECT_NE(r.output.find("unknown option --bogus"), std::string::npos) << cmd << ": " << r.output;
+    EXPECT_NE(r.output.find("unknown option --bogus"), std::string::npos)
+        << cmd << ": " << r.output;
   }
   EXPECT_EQ(harness("techniques extra").exitCode, 2);
   EXPECT_EQ(harness("validate").exitCode, 2);
@@ -116,7 +137,8 @@ TEST_F(HarnessCli, HelpPrintsUsageAndExitsZeroUnknownOptionsExitTwo) {
 TEST_F(HarnessCli, MissingDeviceExitsThreeWithTheFix) {
   const auto r = run("small", "--device no-such-gpu");
   EXPECT_EQ(r.exitCode, 3) << r.output;
-  EXPECT_NE(r.output.find("no Vulkan 1.3 device matches 'no-such-gpu'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no Vulkan 1.3 device matches 'no-such-gpu'"), std::string::npos)
+      << r.output;
 }
 
 TEST_F(HarnessCli, BlessRefusesFailingInvariantsUnlessForced) {
@@ -156,7 +178,9 @@ TEST_F(HarnessCli, ReblessOnlyTheCasesThatFailedLastRun) {
 
 TEST_F(HarnessCli, MetricModeBoundsDriftInsteadOfBitExactness) {
   ASSERT_EQ(bless("small").exitCode, 0);
-  writeCase("small", std::string(kSmallCase).replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.11}})"));
+  writeCase("small",
+            std::string(kSmallCase)
+                .replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.11}})"));
   EXPECT_EQ(run("small").exitCode, 1);
   EXPECT_EQ(run("small", "--metric flip_mean --above 0.5").exitCode, 0);
   const auto r = run("small", "--metric flip_mean --above 0.0000001");
@@ -166,12 +190,15 @@ TEST_F(HarnessCli, MetricModeBoundsDriftInsteadOfBitExactness) {
 }
 
 TEST_F(HarnessCli, ShardsPartitionTheCases) {
-  for (const char* n : {"a", "b", "c"}) writeCase(n, R"({"render": {"width": 16, "height": 9}, "script": {"frames": 1}, "checks": {"golden": false}})");
+  for (const char* n : {"a", "b", "c"})
+    writeCase(
+        n,
+        R"({"render": {"width": 16, "height": 9}, "script": {"frames": 1}, "checks": {"golden": false}})");
   fs::remove(root_ / "cases/small.json");
   std::string seen;
   for (int i = 1; i <= 2; ++i) {
-    const auto r = harness("run " + (root_ / "cases").string() + " --shard " + std::to_string(i) + "/2 --out " +
-                           (root_ / ("o" + std::to_string(i))).string());
+    const auto r = harness("run " + (root_ / "cases").string() + " --shard " + std::to_string(i) +
+                           "/2 --out " + (root_ / ("o" + std::to_string(i))).string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(root_ / ("o" + std::to_string(i)) / "results.json");
     const auto results = nlohmann::json::parse(in);
@@ -189,7 +216,8 @@ namespace {
 
 TEST_F(HarnessCli, EditingAReferencedSceneFileMakesTheGoldensStale) {
   fs::create_directories(root_ / "cases/scenes");
-  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf", root_ / "cases/scenes/box.gltf");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf",
+                root_ / "cases/scenes/box.gltf");
   writeCase("box", R"({"scene": {"gltf": "scenes/box.gltf"}, "render": {"width": 32, "height": 18},
                       "camera": {"position": [0, 2, 6], "target": [0, 1, 0]}, "script": {"frames": 2}})");
   ASSERT_EQ(bless("box").exitCode, 0);
@@ -197,7 +225,9 @@ TEST_F(HarnessCli, EditingAReferencedSceneFileMakesTheGoldensStale) {
   std::ofstream(root_ / "cases/scenes/box.gltf", std::ios::app) << "\n";  // same scene, other bytes
   const auto r = run("box");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("NOTE box: the case file (or a file it references) changed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("NOTE box: the case file (or a file it references) changed"),
+            std::string::npos)
+      << r.output;
 }
 
 }  // namespace
@@ -207,15 +237,18 @@ namespace taa {
 namespace {
 
 TEST_F(HarnessCli, NoVulkanDriverExitsThreeNamingThePackage) {
-  const auto r = run("small", "", "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
+  const auto r =
+      run("small", "", "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
   EXPECT_EQ(r.exitCode, 3) << r.output;
   EXPECT_NE(r.output.find("apt-get install mesa-vulkan-drivers"), std::string::npos) << r.output;
 }
 
 TEST_F(HarnessCli, NewCaseFramesAGltfSceneAndTheResultRendersAndValidates) {
   fs::create_directories(root_ / "cases/scenes");
-  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf", root_ / "cases/scenes/box.gltf");
-  auto r = harness("new-case --scene " + (root_ / "cases/scenes/box.gltf").string() + " --name boxed");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/textured_box.gltf",
+                root_ / "cases/scenes/box.gltf");
+  auto r =
+      harness("new-case --scene " + (root_ / "cases/scenes/box.gltf").string() + " --name boxed");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(root_ / "cases/boxed.json");
   const auto j = nlohmann::json::parse(in);
@@ -223,7 +256,8 @@ TEST_F(HarnessCli, NewCaseFramesAGltfSceneAndTheResultRendersAndValidates) {
   // The camera looks at the centre of the scene's bounds from outside them.
   const auto& pos = j["camera"]["position"];
   const auto& target = j["camera"]["target"];
-  const double dx = pos[0].get<double>() - target[0].get<double>(), dy = pos[1].get<double>() - target[1].get<double>(),
+  const double dx = pos[0].get<double>() - target[0].get<double>(),
+               dy = pos[1].get<double>() - target[1].get<double>(),
                dz = pos[2].get<double>() - target[2].get<double>();
   EXPECT_GT(std::sqrt(dx * dx + dy * dy + dz * dz), 1.0);
   r = harness("render " + casePath("boxed") + " --out " + (root_ / "render").string());
@@ -232,8 +266,8 @@ TEST_F(HarnessCli, NewCaseFramesAGltfSceneAndTheResultRendersAndValidates) {
   r = harness("new-case --scene " + (root_ / "cases/scenes/box.gltf").string() + " --name boxed");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   // A scene outside the cases folder cannot be referenced by a case.
-  r = harness("new-case --scene " + std::string(TAA_SOURCE_DIR) + "/cases/scenes/box.glb --name far --cases " +
-              (root_ / "cases").string());
+  r = harness("new-case --scene " + std::string(TAA_SOURCE_DIR) +
+              "/cases/scenes/box.glb --name far --cases " + (root_ / "cases").string());
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("is not inside"), std::string::npos) << r.output;
 }

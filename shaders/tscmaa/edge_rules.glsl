@@ -6,12 +6,14 @@
 #define TSCMAA_EDGE_RULES_GLSL
 
 // Colour as displayed. CMAA detects edges on the 8-bit display-encoded back buffer, and
-// TSCMAA's 1/22 threshold was tuned there. Linear HDR is clipped to the display's range
-// and encoded with the square root, CMAA 2's own stand-in for the sRGB curve
-// (ProcessColorForEdgeDetect), which unlike pow is exact on every IEEE device.
+// TSCMAA's 1/22 threshold was tuned there; here the colour is still linear HDR, so it goes
+// through this harness's own display transform (the PNGs' Reinhard c / (1 + c)), then the
+// square root, CMAA 2's stand-in for the sRGB curve (ProcessColorForEdgeDetect), which
+// unlike pow gives the CPU reference's bits on lavapipe.
 vec3 edgeColor(vec3 c) {
-  c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(1.0));
-  return sqrt(c);
+  c = clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(65504.0));
+  precise vec3 mapped = c / (1.0 + c);
+  return sqrt(mapped);
 }
 
 // CMAA's edge value between two display-encoded colours: the Rec. 709 luma weights on

@@ -22,10 +22,10 @@ spec::TscmaaSpec knobs(float threshold, float removal, float share = 0.5f) {
   return t;
 }
 
-// The linear grey displayed as `l` (edge detection encodes with the square root; the
-// luma weights sum to 1, so a grey step's difference is the step itself).
+// The linear grey displayed as `l`: edge detection encodes sqrt(c / (1 + c)), so c = l^2 / (1 -
+// l^2); the luma weights sum to 1, so a grey step's difference is the step itself.
 float greyShownAs(float l) {
-  return l * l;
+  return l * l / (1.0f - l * l);
 }
 
 uint32_t bitsAt(const std::vector<uint32_t>& mask, int w, int x, int y) {
@@ -63,13 +63,15 @@ TEST(TscmaaEdgeCpu, EdgeValueIsTheExcessOverTheThresholdInFifteenths) {
   EXPECT_EQ(value(0.2f, 0.2f + t + 0.003f), 1);
   EXPECT_EQ(value(0.2f, 0.2f + t + 1.5f / 15.0f), 2);
   EXPECT_EQ(value(0.0f, 1.0f), 15);
-  // Colour as displayed: HDR values past white are all white, NaN is black.
+  // Colour as displayed (Reinhard, as the PNGs): HDR highlights keep the difference the display
+  // shows between them, which a clip to 1 would lose; NaN is black, +Inf the brightest value.
   const float hdrA[3] = {test::tscmaaEdgeChannel(2.0f), test::tscmaaEdgeChannel(2.0f),
                          test::tscmaaEdgeChannel(2.0f)};
   const float hdrB[3] = {test::tscmaaEdgeChannel(50.0f), test::tscmaaEdgeChannel(50.0f),
                          test::tscmaaEdgeChannel(50.0f)};
-  EXPECT_EQ(test::tscmaaEdgeValue(hdrA, hdrB, t), 0);
+  EXPECT_EQ(test::tscmaaEdgeValue(hdrA, hdrB, t), 2);  // 0.816 against 0.990
   EXPECT_EQ(test::tscmaaEdgeChannel(std::nanf("")), 0.0f);
+  EXPECT_GT(test::tscmaaEdgeChannel(INFINITY), 0.9999f);
   // Per-channel differences with Rec. 709 weights: a pure blue step is weak, green strong.
   const float black[3] = {0.0f, 0.0f, 0.0f}, blue[3] = {0.0f, 0.0f, 0.5f},
               green[3] = {0.0f, 0.5f, 0.0f};

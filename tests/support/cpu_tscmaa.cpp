@@ -9,7 +9,9 @@
 namespace taa::test {
 
 float tscmaaEdgeChannel(float c) {
-  return std::sqrt(std::isnan(c) ? 0.0f : std::clamp(c, 0.0f, 1.0f));
+  c = std::isnan(c) ? 0.0f : std::clamp(c, 0.0f, 65504.0f);
+  const float mapped = c / (1.0f + c);
+  return std::sqrt(mapped);
 }
 
 int tscmaaEdgeValue(const float a[3], const float b[3], float threshold) {

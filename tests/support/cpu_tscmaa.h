@@ -11,7 +11,7 @@
 
 namespace taa::test {
 
-// One display-encoded channel (clipped to [0, 1], square root), as edgeColor.
+// One display-encoded channel (Reinhard c / (1 + c), square root), as edgeColor.
 float tscmaaEdgeChannel(float c);
 // CMAA's 4-bit edge value between two encoded colours, as edgeValue.
 int tscmaaEdgeValue(const float a[3], const float b[3], float threshold);

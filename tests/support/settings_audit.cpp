@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "case/case_error.h"
+#include "case/case_loader.h"
+#include "scene/scene_error.h"
 #include "support/effects.h"
 #include "support/gpu.h"
 
@@ -15,15 +17,19 @@ namespace taa::test::audit {
 
 namespace {
 
-// 96x54, eight frames: the camera strafes past the fence (thin geometry), a cube crosses it
-// (a mover and its disocclusion), and a strong light on a shiny floor gives HDR highlights.
+// 96x54, eight frames: the camera strafes past the fence (thin geometry) at a few pixels a
+// frame and turns back, a spinning cube crosses it and reaches its end (disocclusion, repeat),
+// a sphere gives smoothly varying normals, and a strong light on a shiny floor gives HDR
+// highlights.
 const char* kAuditBase = R"({
   "scene": {"builtin": "fence"},
   "render": {"width": 96, "height": 54},
   "script": {"frames": 8},
   "lighting": {"intensity": 12, "specular": 2, "shininess": 64},
-  "camera": {"strafe": {"speed": 1.5, "distance": 4}},
-  "movers": [{"shape": "cube", "start": [-2, 0.5, 1], "end": [2, 0.5, 1], "speed": 3}]
+  "camera": {"strafe": {"speed": 30, "distance": 1}},
+  "movers": [{"shape": "cube", "start": [-2, 0.5, 1], "end": [2, 0.5, 1], "speed": 45,
+              "rotation_speed_deg": 90},
+             {"shape": "sphere", "start": [1.5, 0.8, 2], "end": [1.5, 0.8, 2], "speed": 0}]
 })";
 
 nlohmann::json patchFor(const std::string& key, const nlohmann::json& value) {
@@ -65,7 +71,13 @@ AuditRun renderPatched(const AuditPath& path, const nlohmann::json& keyPatch) {
   }
   RenderOptions options;
   options.hashEveryFrame = true;  // every frame's colour, not only the last
-  run.frames = renderCase(spec, {}, options);
+  try {
+    run.frames = renderCase(spec, {}, options);
+  } catch (const scene::SceneError& e) {
+    // Rules that need the loaded scene (a normal map, an alpha-tested texture): exit 2 too.
+    run.refused = true;
+    run.message = e.what();
+  }
   return run;
 }
 
@@ -103,7 +115,7 @@ std::vector<nlohmann::json> numberCandidates(const nlohmann::json& row,
   std::vector<double> tries = {d * 2, d / 2};
   if (row.contains("range")) {
     const double lo = row["range"][0].get<double>(), hi = row["range"][1].get<double>();
-    tries.insert(tries.end(), {(d + hi) / 2, (d + lo) / 2, hi, lo});
+    tries.insert(tries.end(), {lo, hi, (d + hi) / 2, (d + lo) / 2});
   } else {
     tries.insert(tries.end(), {d + 1, d - 1});
   }
@@ -176,9 +188,18 @@ nlohmann::json currentValue(const nlohmann::json& row, const AuditPath& path) {
   return j.contains(ptr) ? j[ptr] : row["default"];
 }
 
-// Lists whose members the audit can give a meaningful value: a frame, a pixel, an offset, a
-// path through the fence.
-nlohmann::json listValue(const std::string& key) {
+const nlohmann::json& schemaRows() {
+  static const nlohmann::json rows = cases::settingsSchema();
+  return rows;
+}
+
+// Keys whose value the audit chooses itself: lists (a frame, a pixel, an offset, a path through
+// the fence), MSAA at a count lavapipe offers (4; it has no 2), and a visible near plane.
+nlohmann::json chosenValue(const std::string& key) {
+  if (key == "render.msaa") return 4;
+  // A near plane that cuts into the floor before the camera: smaller ones change only depth
+  // precision, which basic and off never read.
+  if (key == "camera.near") return 2.0;
   if (key == "script.reset_history_at" || key == "inject.frames")
     return nlohmann::json::parse("[4]");
   if (key == "inject.pixels") return nlohmann::json::parse("[[20, 20], [40, 30]]");
@@ -193,7 +214,7 @@ nlohmann::json listValue(const std::string& key) {
 std::vector<nlohmann::json> alternatives(const nlohmann::json& row, const AuditPath& path) {
   const std::string type = row["type"];
   const auto d = currentValue(row, path);
-  if (const auto list = listValue(row["key"]); !list.is_null()) return {list};
+  if (const auto chosen = chosenValue(row["key"]); !chosen.is_null()) return {chosen};
   if (type == "bool") return {!d.get<bool>()};
   if (type == "enum") {
     std::vector<nlohmann::json> out;
@@ -221,7 +242,7 @@ namespace {
 // COND hold: "taa.rectify is clamp or clip and taa.color_space is ycocg" gives rectify clamp and
 // color_space ycocg; of "a, b or c is true" the first. Null when COND is not of that form or
 // is a taa.mode (the paths are the modes).
-nlohmann::json enablerFor(const std::string& refusal) {
+nlohmann::json enablerFor(const std::string& refusal, const AuditPath& path) {
   const std::string lead = "has no effect unless ";
   const size_t at = refusal.find(lead);
   if (at == std::string::npos) return nullptr;
@@ -237,17 +258,28 @@ nlohmann::json enablerFor(const std::string& refusal) {
     if (is == std::string::npos) return nullptr;
     std::string key = clause.substr(0, is), value = clause.substr(is + 4);
     key = key.substr(0, std::min(key.find(','), key.find(" or ")));
-    value = value.substr(0, std::min(value.find(','), value.find(" or ")));
-    if (key == "taa.mode" || key.find(' ') != std::string::npos ||
-        value.find(' ') != std::string::npos)
-      return nullptr;
-    nlohmann::json v = value;
-    if (value == "true" || value == "false") v = value == "true";
-    if (!value.empty() && (std::isdigit(static_cast<unsigned char>(value[0])) != 0))
-      v = std::stod(value);
+    if (key == "taa.mode") continue;  // the paths are the modes
+    if (key.find(' ') != std::string::npos) return nullptr;
+    nlohmann::json v;
+    if (value != "set" && (value.find(' ') == std::string::npos || value.find(',') < value.find(' ') ||
+                           value.find(" or ") == value.find(' '))) {
+      value = value.substr(0, std::min(value.find(','), value.find(" or ")));
+      v = value;
+      if (value == "true" || value == "false") v = value == "true";
+      if (!value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) != 0) {
+        const double n = std::stod(value);
+        v = n == std::floor(n) ? nlohmann::json(int(n)) : nlohmann::json(n);
+      }
+    } else {
+      // "is set", "is above 0", "is not 0": the value the audit would try for that key.
+      for (const auto& row : schemaRows())
+        if (row["key"] == key)
+          if (const auto alts = alternatives(row, path); !alts.empty()) v = alts[0];
+      if (v.is_null()) return nullptr;
+    }
     patch.merge_patch(patchFor(key, v));
   }
-  return patch;
+  return patch.empty() ? nullptr : patch;
 }
 
 // `path` with `enabler` merged in, named after it: "full+taa.consistency=true".
@@ -269,24 +301,30 @@ void auditValue(const std::string& key, const nlohmann::json& value, const Audit
   AuditRow r{key, path.name, value.dump(), Verdict::Acts, ""};
   try {
     const AuditRun& base = baseline(path);
-    if (const auto enabler = base.refused ? enablerFor(base.message) : nullptr;
+    if (const auto enabler = base.refused ? enablerFor(base.message, path) : nullptr;
         !enabler.is_null() && depth < 3) {
       // The enabling setting needs one of its own (motion_adaptive_gamma needs variance_clip).
-      auditValue(key, value, enabledPath(path, enabler), more, rows, depth + 1);
-      return;
+      if (const AuditPath next = enabledPath(path, enabler); next.patch != path.patch) {
+        auditValue(key, value, next, more, rows, depth + 1);
+        return;
+      }
     }
     if (base.refused) {
-      r.verdict = Verdict::Failed;
-      r.message = "the path itself is refused: " + base.message;
+      // The path refuses the key's default (lod_bias needs lod_bias_taa_only false in mode off):
+      // the key acts if another value is accepted there, and is refused if not.
+      const AuditRun run = renderPatched(path, patchFor(key, value));
+      r.verdict = run.refused ? Verdict::Refused : Verdict::Acts;
+      r.message = run.refused ? run.message : "accepted where the default is refused: " + base.message;
     } else if (const AuditRun run = renderPatched(path, patchFor(key, value)); run.refused) {
       r.verdict = Verdict::Refused;
       r.message = run.message;
       // Refused for want of another setting: also try it with that setting, where it is accepted.
-      if (const auto enabler = enablerFor(run.message); !enabler.is_null() && depth < 3) {
-        rows.push_back(r);
-        auditValue(key, value, enabledPath(path, enabler), more, rows, depth + 1);
-        return;
-      }
+      if (const auto enabler = enablerFor(run.message, path); !enabler.is_null() && depth < 3)
+        if (const AuditPath next = enabledPath(path, enabler); next.patch != path.patch) {
+          rows.push_back(r);
+          auditValue(key, value, next, more, rows, depth + 1);
+          return;
+        }
     } else if (const std::string diff = firstDifference(base, run); !diff.empty()) {
       r.message = diff + " differs";
     } else if (more) {

@@ -14,7 +14,7 @@
 namespace taa::cases {
 
 // (key path, message with the fix) for every key set where it cannot act.
-std::vector<std::pair<std::string, std::string>> inertProblems(const spec::CaseSpec& spec,
-                                                               const std::set<std::string>& present);
+std::vector<std::pair<std::string, std::string>> inertProblems(
+    const spec::CaseSpec& spec, const std::set<std::string>& present);
 
 }  // namespace taa::cases

@@ -56,7 +56,8 @@ Agreement tracedAgainstRaster(const std::string& scene, bool rayLod, int frames 
       "jitter": {"pattern": "none"}, "taa": {"mode": "adaptive"},
       "adaptive": {"trace_all": true, "samples": 1, "ray_lod": )" +
                                        (rayLod ? "true" : "false") + R"(},
-      "script": {"frames": )" + std::to_string(frames) + "}}");
+      "script": {"frames": )" + std::to_string(frames) +
+                                       "}}");
   RenderOptions o;
   o.captureCurrent = true;
   const auto records = test::renderCaseWith(spec, o, {frames - 1});
@@ -65,7 +66,9 @@ Agreement tracedAgainstRaster(const std::string& scene, bool rayLod, int frames 
   return agreement(last.color, test::auxImage(last, "current"));
 }
 
-std::string builtin(const std::string& name) { return R"("scene": {"builtin": ")" + name + R"("})"; }
+std::string builtin(const std::string& name) {
+  return R"("scene": {"builtin": ")" + name + R"("})";
+}
 
 TEST(AdaptiveTrace, TracedPixelsEqualTheRasterAtPixelCentres) {
   // Tolerance: rays and raster agree to float rounding inside surfaces; what differs
@@ -190,9 +193,11 @@ TEST(AdaptiveSegmentation, EachWeightMarksPixelsByItself) {
   const std::string none =
       R"("history_count": 0, "weight_normal": 0, "weight_depth": 0, "weight_material": 0, "weight_luminance": 0)";
   EXPECT_EQ(tracedShare(none), 0.0);
-  for (const char* weight : {"weight_normal", "weight_depth", "weight_material", "weight_luminance"}) {
+  for (const char* weight :
+       {"weight_normal", "weight_depth", "weight_material", "weight_luminance"}) {
     std::string alone = none;
-    alone.replace(alone.find(std::string(weight) + "\": 0") + std::string(weight).size() + 3, 1, "1");
+    alone.replace(alone.find(std::string(weight) + "\": 0") + std::string(weight).size() + 3, 1,
+                  "1");
     const double share = tracedShare(alone);
     std::printf("[ traced share ] %s alone: %.4f\n", weight, share);
     EXPECT_GT(share, 0.0) << weight;

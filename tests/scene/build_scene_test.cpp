@@ -82,7 +82,8 @@ TEST(SceneBuild, AlphaOverrideOnASceneWithoutAlphaIsRefused) {
       buildScene(c);
       ADD_FAILURE() << "accepted " << spec::enumToString(mode);
     } catch (const SceneError& e) {
-      EXPECT_NE(std::string(e.what()).find("t.json: material.alpha_mode: no material of the scene has alpha"),
+      EXPECT_NE(std::string(e.what()).find(
+                    "t.json: material.alpha_mode: no material of the scene has alpha"),
                 std::string::npos)
           << e.what();
     }

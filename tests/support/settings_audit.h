@@ -63,6 +63,17 @@ std::vector<AuditPath> auditPaths(bool full);
 // acts.
 std::vector<nlohmann::json> alternatives(const nlohmann::json& row, const AuditPath& path);
 
+// The merge patch setting `key` ("movers[].KEY": the audit scene's first mover) to `value`.
+nlohmann::json patchFor(const std::string& key, const nlohmann::json& value);
+
+// Validation's "has no effect unless COND; set that" (Rules::needs) as a merge patch making COND
+// hold on `path`; null when COND is not of that form or names only taa.mode (the paths are the
+// modes). enablesMore: whether it sets a key the path does not set yet (no going round in
+// circles); enabledPath: the path with it merged in, named "full+taa.consistency=true".
+nlohmann::json enablerFor(const std::string& refusal, const AuditPath& path);
+bool enablesMore(const AuditPath& path, const nlohmann::json& enabler);
+AuditPath enabledPath(const AuditPath& path, const nlohmann::json& enabler);
+
 // Runs the audit for one key on one path; renders through the shared test GPU.
 std::vector<AuditRow> auditKey(const nlohmann::json& row, const AuditPath& path);
 

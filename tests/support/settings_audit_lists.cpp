@@ -62,7 +62,19 @@ const Exclusion* excluded(const std::string& key) {
 }
 
 const std::vector<Allowance>& allowances() {
-  static const std::vector<Allowance> list = {};
+  static const std::vector<Allowance> list = {
+      // By design: pass_through copies the rendered frame through the resolve pass (it measures
+      // the pass and its plumbing), so its pixels are off's.
+      {"taa.mode", "off", "pass_through shows the rendered frame unchanged, as off does",
+       "EffectPassThrough.OutputIsTheInputBitForBit"},
+      {"taa.mode", "pass_through", "off shows the rendered frame unchanged, as pass_through does",
+       "EffectPassThrough.OutputIsTheInputBitForBit"},
+      // The scene cannot show it: every pixel with another id beside it is already marked by the
+      // luminance, depth or normal term, so the material term adds none.
+      {"adaptive.weight_material", "adaptive",
+       "the other derivative terms already mark every pixel the material term marks here",
+       "AdaptiveSegmentation.EachWeightMarksPixelsByItself"},
+  };
   return list;
 }
 

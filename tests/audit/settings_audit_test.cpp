@@ -12,6 +12,8 @@
 #include <string>
 
 #include "case/case_loader.h"
+// The audit renders on the shared test device; ci/sanitize.sh leaves out suites including this.
+#include "support/gpu.h"
 
 namespace taa {
 namespace {

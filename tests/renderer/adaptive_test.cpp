@@ -56,8 +56,7 @@ Agreement tracedAgainstRaster(const std::string& scene, bool rayLod, int frames 
       "jitter": {"pattern": "none"}, "taa": {"mode": "adaptive"},
       "adaptive": {"trace_all": true, "samples": 1, "ray_lod": )" +
                                        (rayLod ? "true" : "false") + R"(},
-      "script": {"frames": )" + std::to_string(frames) +
-                                       "}}");
+      "script": {"frames": )" + std::to_string(frames) + "}}");
   RenderOptions o;
   o.captureCurrent = true;
   const auto records = test::renderCaseWith(spec, o, {frames - 1});
@@ -66,9 +65,7 @@ Agreement tracedAgainstRaster(const std::string& scene, bool rayLod, int frames 
   return agreement(last.color, test::auxImage(last, "current"));
 }
 
-std::string builtin(const std::string& name) {
-  return R"("scene": {"builtin": ")" + name + R"("})";
-}
+std::string builtin(const std::string& name) { return R"("scene": {"builtin": ")" + name + R"("})"; }
 
 TEST(AdaptiveTrace, TracedPixelsEqualTheRasterAtPixelCentres) {
   // Tolerance: rays and raster agree to float rounding inside surfaces; what differs
@@ -187,8 +184,8 @@ TEST(AdaptiveSegmentation, MarkedShareFollowsTheThreshold) {
 }
 
 // Each derivative term marks pixels by itself: with every weight 0 nothing is traced, and any
-// one weight alone traces some pixels (the settings audit's scene cannot show the luminance and
-// material weights, whose pixels the other terms already mark).
+// one weight alone traces some pixels (the settings audit's scene cannot show the material
+// weight: the other terms already mark its pixels there).
 TEST(AdaptiveSegmentation, EachWeightMarksPixelsByItself) {
   const std::string none =
       R"("history_count": 0, "weight_normal": 0, "weight_depth": 0, "weight_material": 0, "weight_luminance": 0)";

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "case/case_error.h"
+#include "case/validate_inert.h"
 #include "case/validate_invariants.h"
 #include "case/validate_report.h"
 #include "case/validate_taa.h"
@@ -281,6 +282,7 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   validateJitter(p, spec.jitter, present);
   for (const auto& [key, msg] : taaProblems(spec, present)) p.add(key, msg);
   for (const auto& [key, msg] : userShaderProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : inertProblems(spec, present)) p.add(key, msg);
   if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only &&
       !runsTaa(modeRule(spec.taa.mode)))
     p.add("material.lod_bias", "applies only with TAA (material.lod_bias_taa_only) and taa.mode is off; enable TAA "

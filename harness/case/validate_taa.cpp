@@ -100,6 +100,19 @@ void movingRules(Rules& r, const CaseSpec& s) {
 #undef TAA_MOVING_CHECK_E
 #undef TAA_MOVING_CHECK_B
 #undef TAA_MOVING_CHECK_F
+  // The ramp and the depth it measures at blend the still settings with the moving ones; with
+  // no moving float set both are the same and the blend changes nothing.
+  bool blendsSomething = false;
+#define TAA_MOVING_SET_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_SET_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_SET_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
+  blendsSomething = blendsSomething || r.set("taa.moving." #key);
+  TAA_SETTINGS(TAA_MOVING_SET_E, TAA_MOVING_SET_B, TAA_MOVING_SET_F)
+#undef TAA_MOVING_SET_E
+#undef TAA_MOVING_SET_B
+#undef TAA_MOVING_SET_F
+  for (const char* key : {"taa.moving.from_px", "taa.moving.to_px", "taa.moving.depth"})
+    r.needs(key, blendsSomething, "taa.moving.alpha or another float setting of taa.moving is set");
   const auto& m = s.taa.moving;
   if (m.to_px <= m.from_px)
     r.add("taa.moving.to_px", "must be above taa.moving.from_px (the blend ramps between them)");

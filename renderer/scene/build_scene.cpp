@@ -80,6 +80,18 @@ void applyAlphaOverride(Scene& scene, spec::AlphaMode mode, float cutoff) {
 }
 
 namespace {
+// material.alpha_mode overrides materials with alpha only; a scene without any has nothing
+// to test or blend.
+void checkAlphaOverride(const spec::CaseSpec& spec, const Scene& scene) {
+  if (spec.material.alpha_mode == spec::AlphaMode::Asset) return;
+  if (std::none_of(scene.materials.begin(), scene.materials.end(),
+                   [&](const Material& m) { return materialHasAlpha(scene, m); }))
+    throw SceneError(spec.file,
+                     "material.alpha_mode: no material of the scene has alpha (an alpha mode, a "
+                     "base colour alpha below 1 or translucent texels), so it would change "
+                     "nothing; remove the key or use such a scene (foliage, a glTF with alpha)");
+}
+
 // material.normal_strength acts only on normal-mapped materials, and only where the raster
 // shades: the tracer has no normal maps, so its pixels would disagree with the raster's.
 void checkNormalStrength(const spec::CaseSpec& spec, const Scene& scene) {
@@ -162,6 +174,7 @@ Scene buildScene(const spec::CaseSpec& spec) {
       scene.models.push_back(buildMoverShape(m.shape, m.color, scene));
     }
   }
+  checkAlphaOverride(spec, scene);
   applyAlphaOverride(scene, spec.material.alpha_mode, spec.material.alpha_cutoff);
   checkNormalStrength(spec, scene);
   checkLodMatching(spec, scene);

@@ -61,7 +61,6 @@ inline constexpr uint32_t kFullOnly = modeBit(TaaMode::Full) | modeBit(TaaMode::
 inline constexpr uint32_t kReprojecting = kFullOnly | modeBit(TaaMode::Accumulate);
 inline constexpr uint32_t kBlendingNotAccumulate = kFullOnly | modeBit(TaaMode::Basic);
 inline constexpr uint32_t kBlending = kReprojecting | modeBit(TaaMode::Basic);
-inline constexpr uint32_t kResolving = kBlending | modeBit(TaaMode::PassThrough);
 
 // The modes whose resolve takes `path`: a setting reaches that path's shader only if
 // its modes meet these.

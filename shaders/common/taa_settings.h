@@ -67,7 +67,7 @@
 // B(key, default, specialization id, GLSL constant, modes, rule, rule text, doc, impl): a switch
 // F(key, default, lo, hi, uniform slot, GLSL slot name, modes, rule, rule text, doc, impl): a float
 // modes: the taa.mode values in which the key may be set (kBlending, kReprojecting,
-// kFullOnly, kResolving in renderer/spec/taa_modes.h); a setting outside them takes its
+// kFullOnly in renderer/spec/taa_modes.h); a setting outside them takes its
 // default, and the specialization constant gets 0 where the resolve path has no use for
 // it. rule: a predicate of the effective settings that must hold for the key to mean
 // something, as a C++ lambda (kAlways: none); rule text: that condition in words.
@@ -224,7 +224,7 @@
     "largest noise added per channel (the seed's code: 1/510, half an 8-bit step)",                \
     "shaders/taa/output_noise.glsl")                                                               \
   E(history_format, HistoryFormat, TAA_HISTORY_FORMAT_VALUES, HISTORY_FORMAT_RGBA16F, 22,          \
-    kHistoryFormat, kResolving, kAlways, "", "precision of the history buffer",                    \
+    kHistoryFormat, kBlending, kAlways, "", "precision of the history buffer",                     \
     "renderer/passes/taa_resolve.cpp")
 // clang-format on
 

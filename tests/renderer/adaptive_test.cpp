@@ -183,6 +183,24 @@ TEST(AdaptiveSegmentation, MarkedShareFollowsTheThreshold) {
   EXPECT_GT(tracedShare(R"("history_count": 8)"), tracedShare(R"("history_count": 0)"));
 }
 
+// Each derivative term marks pixels by itself: with every weight 0 nothing is traced, and any
+// one weight alone traces some pixels (the settings audit's scene cannot show the material
+// weight: the other terms already mark its pixels there).
+TEST(AdaptiveSegmentation, EachWeightMarksPixelsByItself) {
+  const std::string none =
+      R"("history_count": 0, "weight_normal": 0, "weight_depth": 0, "weight_material": 0, "weight_luminance": 0)";
+  EXPECT_EQ(tracedShare(none), 0.0);
+  for (const char* weight :
+       {"weight_normal", "weight_depth", "weight_material", "weight_luminance"}) {
+    std::string alone = none;
+    alone.replace(alone.find(std::string(weight) + "\": 0") + std::string(weight).size() + 3, 1,
+                  "1");
+    const double share = tracedShare(alone);
+    std::printf("[ traced share ] %s alone: %.4f\n", weight, share);
+    EXPECT_GT(share, 0.0) << weight;
+  }
+}
+
 std::vector<std::string> renderedHashes(const std::string& caseName, const std::string& env) {
   const std::string out =
       std::string(TAA_TEST_OUT) + "/adaptive-determinism-" + env.substr(env.find('=') + 1);

@@ -72,6 +72,26 @@ TEST(SceneBuild, AlphaOverrideTouchesOnlyMaterialsWithAlpha) {
   EXPECT_EQ(s.materials[1].alphaMode, AlphaMode::Blend);
 }
 
+// The settings audit found the override accepted and ignored on a scene without alpha.
+TEST(SceneBuild, AlphaOverrideOnASceneWithoutAlphaIsRefused) {
+  spec::CaseSpec c = caseIn("cases");
+  c.scene.builtin = spec::BuiltinScene::Fence;
+  for (const auto mode : {spec::AlphaMode::Mask, spec::AlphaMode::Blend}) {
+    c.material.alpha_mode = mode;
+    try {
+      buildScene(c);
+      ADD_FAILURE() << "accepted " << spec::enumToString(mode);
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(
+                    "t.json: material.alpha_mode: no material of the scene has alpha"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  c.material.alpha_mode = spec::AlphaMode::Asset;
+  EXPECT_NO_THROW(buildScene(c));
+}
+
 TEST(SceneBuild, FoliageCanBeForcedToBlend) {
   spec::CaseSpec c = caseIn("cases");
   c.scene.builtin = spec::BuiltinScene::Foliage;

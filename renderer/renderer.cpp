@@ -14,7 +14,6 @@
 #include "passes/inject.h"
 #include "passes/post_filter.h"
 #include "passes/reference.h"
-#include "passes/post_filter.h"
 #include "passes/shadow.h"
 #include "passes/still_image.h"
 #include "post_chain.h"
@@ -46,13 +45,7 @@ glm::ivec2 maxRenderSize(const spec::CaseSpec& spec) {
 GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan,
                             const GBufferNeeds& needs, ShadowPass* shadow) {
   GBufferConfig c = planGBuffer(plan, needs, maxRenderSize(spec));
-  if (shadow) {
-    c.shadowAtlas = &shadow->atlas();
-    c.shadowSampler = shadow->sampler();
-  }
-  c.normalStrength = spec.material.normal_strength;
-  c.lod0 = spec.render.lod0;
-  c.lod0AlphaTest = spec.render.lod0_alpha_test;
+  applyShadingSettings(c, spec, shadow);
   return c;
 }
 
@@ -178,8 +171,7 @@ struct Renderer::State {
                     spec::enumToString(s.debug.image_sampling) + ")");
     if (shadow) {
       const script::FrameState first = script::frameState(s, 0);
-      shadowDistance =
-          taa::shadowDistance(first.camera, casterBounds(sc, firstFrame));
+      shadowDistance = taa::shadowDistance(first.camera, casterBounds(sc, firstFrame));
       log.push_back(shadow->describe());
     }
     for (const auto& p : plan.describe()) log.push_back(p);
@@ -194,20 +186,24 @@ struct Renderer::State {
     for (const auto& t : targets.describe()) log.push_back("buffer " + t);
     for (const auto& t : prev.describe()) log.push_back("buffer " + t);
     log.push_back("scene: " + std::to_string(sc.vertices.size()) + " vertices, " +
-                  std::to_string(sc.indices.size() / 3) + " triangles, " + std::to_string(sc.textures.size()) +
-                  " textures (" + std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
+                  std::to_string(sc.indices.size() / 3) + " triangles, " +
+                  std::to_string(sc.textures.size()) + " textures (" +
+                  std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
   }
 };
 
-Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene, RenderOptions options)
-try : s_(std::make_unique<State>(ctx, spec, scene, options)) {
+Renderer::Renderer(vk::Context& ctx, const spec::CaseSpec& spec, const scene::Scene& scene,
+                   RenderOptions options) try
+    : s_(std::make_unique<State>(ctx, spec, scene, options)) {
 } catch (const UnsupportedSettingError& e) {
   throw UnsupportedSettingError(spec.file.string() + ": " + e.what());  // the case to fix
 }
 
 Renderer::~Renderer() = default;
 
-const std::vector<std::string>& Renderer::log() const { return s_->log; }
+const std::vector<std::string>& Renderer::log() const {
+  return s_->log;
+}
 
 FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   auto& s = *s_;
@@ -217,7 +213,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   ++s.nextFrame;
   const script::FrameState state = script::frameState(s.spec, frame);
   const DrawList draws = buildDrawList(s.scene, state);
-  std::memcpy(s.instances.mapped(), draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+  std::memcpy(s.instances.mapped(), draws.instances.data(),
+              draws.instances.size() * sizeof(gpu::InstanceData));
   s.gpuScene.uploadDeformed(draws.deformed, draws.deformedPrev);
   const int eyes = eyeCount(s.spec);
 
@@ -316,12 +313,14 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   return record;
 }
 
-void renderSequence(Renderer& renderer, const spec::CaseSpec& spec, const std::function<void(FrameRecord&)>& sink,
+void renderSequence(Renderer& renderer, const spec::CaseSpec& spec,
+                    const std::function<void(FrameRecord&)>& sink,
                     const std::function<void(int)>& progress) {
   const auto& wanted = spec.output.frames;
   for (int f = 0; f < spec.script.frames; ++f) {
     if (progress) progress(f);
-    FrameRecord record = renderer.renderFrame(f, std::binary_search(wanted.begin(), wanted.end(), f));
+    FrameRecord record =
+        renderer.renderFrame(f, std::binary_search(wanted.begin(), wanted.end(), f));
     sink(record);
   }
 }

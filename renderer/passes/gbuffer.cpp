@@ -4,11 +4,23 @@
 
 #include "common/shared.h"
 #include "device_error.h"
+#include "passes/shadow.h"
+#include "spec/case_spec.h"
 #include "vk/barrier.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
 
 namespace taa {
+
+void applyShadingSettings(GBufferConfig& config, const spec::CaseSpec& spec, ShadowPass* shadow) {
+  if (shadow) {
+    config.shadowAtlas = &shadow->atlas();
+    config.shadowSampler = shadow->sampler();
+  }
+  config.normalStrength = spec.material.normal_strength;
+  config.lod0 = spec.render.lod0;
+  config.lod0AlphaTest = spec.render.lod0_alpha_test;
+}
 
 namespace {
 
@@ -19,7 +31,8 @@ constexpr VkFormat kNormal = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kIds = VK_FORMAT_R32_UINT;
 constexpr VkFormat kAlbedo = VK_FORMAT_R16G16B16A16_SFLOAT;
 
-vk::Image target(vk::Context& ctx, const char* name, const GBufferConfig& c, VkFormat format, VkImageUsageFlags usage) {
+vk::Image target(vk::Context& ctx, const char* name, const GBufferConfig& c, VkFormat format,
+                 VkImageUsageFlags usage) {
   vk::ImageDesc d;
   d.name = name;
   d.width = c.width;
@@ -109,9 +122,11 @@ void checkSampleCount(vk::Context& ctx, const GBufferConfig& c) {
 }
 
 GBufferTargets::GBufferTargets(vk::Context& ctx, const GBufferConfig& c) {
-  color = target(ctx, "color", c, kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT);
+  color = target(ctx, "color", c, kColor,
+                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT);
   depth = target(ctx, "depth", c, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
-  if (c.velocity) velocity = target(ctx, "velocity", c, kVelocity, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  if (c.velocity)
+    velocity = target(ctx, "velocity", c, kVelocity, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   if (c.normal) normal = target(ctx, "normal", c, kNormal, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   if (c.ids) ids = target(ctx, "ids", c, kIds, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   if (c.deferred) albedo = target(ctx, "albedo", c, kAlbedo, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
@@ -133,13 +148,16 @@ std::vector<std::string> GBufferTargets::describe() const {
   for (const vk::Image* i : {&color, &depth, &velocity, &normal, &ids, &albedo, &msColor, &msDepth,
                              &msVelocity, &msNormal, &msIds})
     if (*i)
-      out.push_back(i->desc().name + " " + std::to_string(i->desc().width) + "x" + std::to_string(i->desc().height) +
-                    " (" + std::to_string(i->bytes() / 1024) + " KiB)");
+      out.push_back(i->desc().name + " " + std::to_string(i->desc().width) + "x" +
+                    std::to_string(i->desc().height) + " (" + std::to_string(i->bytes() / 1024) +
+                    " KiB)");
   return out;
 }
 
 GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferConfig& config)
-    : ctx_(ctx), scene_(scene), config_(config),
+    : ctx_(ctx),
+      scene_(scene),
+      config_(config),
       pointClamp_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   vk::GraphicsDesc d;
   d.vertexShader = "gbuffer.vert";
@@ -180,8 +198,8 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
                                 : std::string("deferred_lighting.comp"));
 }
 
-void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
-                           const Frame& f, float lodBias) {
+void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
+                           const std::vector<Draw>& draws, const Frame& f, float lodBias) {
   if (draws.empty()) return;
   pipeline.bind(cmd);
   const VkDeviceSize offset = 0;
@@ -230,8 +248,9 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, co
   }
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList& draws, VkBuffer frameUniforms,
-                         VkDeviceSize uniformOffset, VkBuffer instances, glm::ivec2 size, float lodBias) {
+void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList& draws,
+                         VkBuffer frameUniforms, VkDeviceSize uniformOffset, VkBuffer instances,
+                         glm::ivec2 size, float lodBias) {
   const Frame f{frameUniforms, uniformOffset, instances};
   vk::Image* outputs[GBUF_OUT_COUNT] = {&t.color, &t.velocity, &t.normal, &t.ids, &t.albedo};
   // With MSAA the pass draws into the twins and resolves into the outputs; the twins' samples
@@ -326,7 +345,8 @@ void GBufferPass::record(VkCommandBuffer cmd, GBufferTargets& t, const DrawList&
   vkCmdEndRendering(cmd);
 }
 
-void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, const Frame& f, glm::ivec2 size) {
+void GBufferPass::lightDeferred(VkCommandBuffer cmd, GBufferTargets& t, const Frame& f,
+                                glm::ivec2 size) {
   vk::Dispatch d(lighting_);
   d.uniform(0, f.uniforms, f.offset, sizeof(gpu::FrameUniforms))
       .sample(1, t.albedo, pointClamp_.handle())

@@ -32,6 +32,16 @@ struct GBufferConfig {
   bool lod0AlphaTest = false;   // render.lod0_alpha_test
 };
 
+namespace spec {
+struct CaseSpec;
+}
+class ShadowPass;
+
+// The case's shading settings on a G-buffer configuration: the shadow atlas (when `shadow`),
+// normal-map strength and the LOD choices. The frame's raster and the reference's must shade
+// alike, so both take them from here.
+void applyShadingSettings(GBufferConfig& config, const spec::CaseSpec& spec, ShadowPass* shadow);
+
 // Throws UnsupportedSettingError naming render.msaa and the counts the device offers
 // when `config.samples` is not one of them for every target the pass would multisample.
 void checkSampleCount(vk::Context& ctx, const GBufferConfig& config);
@@ -58,8 +68,9 @@ class GBufferPass {
 
   // Records the pass into `cmd` for a frame rendered at `size` (top-left of the targets)
   // with the FrameUniforms found at `frameUniforms` + `uniformOffset`.
-  void record(VkCommandBuffer cmd, GBufferTargets& targets, const DrawList& draws, VkBuffer frameUniforms,
-              VkDeviceSize uniformOffset, VkBuffer instances, glm::ivec2 size, float lodBias);
+  void record(VkCommandBuffer cmd, GBufferTargets& targets, const DrawList& draws,
+              VkBuffer frameUniforms, VkDeviceSize uniformOffset, VkBuffer instances,
+              glm::ivec2 size, float lodBias);
 
  private:
   struct Frame {
@@ -67,8 +78,8 @@ class GBufferPass {
     VkDeviceSize offset;
     VkBuffer instances;
   };
-  void drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws, const Frame& f,
-                float lodBias);
+  void drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const std::vector<Draw>& draws,
+                const Frame& f, float lodBias);
   void lightDeferred(VkCommandBuffer cmd, GBufferTargets& targets, const Frame& f, glm::ivec2 size);
 
   vk::Context& ctx_;

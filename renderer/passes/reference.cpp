@@ -15,13 +15,7 @@ namespace {
 
 GBufferConfig referenceConfig(const spec::CaseSpec& spec, ShadowPass* shadow) {
   GBufferConfig c;
-  if (shadow) {
-    c.shadowAtlas = &shadow->atlas();
-    c.shadowSampler = shadow->sampler();
-  }
-  c.normalStrength = spec.material.normal_strength;
-  c.lod0 = spec.render.lod0;
-  c.lod0AlphaTest = spec.render.lod0_alpha_test;
+  applyShadingSettings(c, spec, shadow);
   c.width = uint32_t(spec.render.width);
   c.height = uint32_t(spec.render.height);
   c.deferred = spec.render.path == spec::RenderPath::Deferred;
@@ -50,10 +44,12 @@ std::vector<glm::vec2> referenceOffsets(int count) {
   const int m = int(std::lround(std::sqrt(double(count))));
   if (m * m == count) {
     for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) out.emplace_back((i + 0.5f) / float(m) - 0.5f, (j + 0.5f) / float(m) - 0.5f);
+      for (int i = 0; i < m; ++i)
+        out.emplace_back((i + 0.5f) / float(m) - 0.5f, (j + 0.5f) / float(m) - 0.5f);
   } else {
     for (int i = 0; i < count; ++i)
-      out.emplace_back(float((i + 0.5) / count - 0.5), float(radicalInverse2(uint32_t(i)) + 0.5 / count - 0.5));
+      out.emplace_back(float((i + 0.5) / count - 0.5),
+                       float(radicalInverse2(uint32_t(i)) + 0.5 / count - 0.5));
   }
   return out;
 }

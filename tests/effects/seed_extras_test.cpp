@@ -12,6 +12,7 @@
 #include "support/effects.h"
 #include "support/gpu.h"
 #include "support/gpu_resolve.h"
+#include "support/noise.h"
 
 namespace taa {
 namespace {
@@ -109,13 +110,7 @@ TEST(SeedExtrasUnjitter, RefusedWhereThereIsNoJitterToUndo) {
 
 // The shader's hash (shaders/taa/output_noise.glsl), for the expected values.
 uint32_t noiseHashCpu(uint32_t x, uint32_t y, uint32_t z) {
-  uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu;
-  h ^= h >> 16;
-  h *= 0x7feb352du;
-  h ^= h >> 15;
-  h *= 0x846ca68bu;
-  h ^= h >> 16;
-  return h;
+  return test::hash32(x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu);
 }
 
 // A current of 0.5 at alpha 1 (the history, which got frame 0's noise, has no weight): the

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/shared.h"
+#include "support/noise.h"
 
 namespace taa::test {
 
@@ -34,13 +35,7 @@ bool tscmaaEdgeKept(const int values[12], float removal) {
 }
 
 uint32_t tscmaaTaaHash(uint32_t x, uint32_t y) {
-  uint32_t h = (x * 0x8da6b343u) ^ (y * 0xd8163841u);
-  h ^= h >> 16;
-  h *= 0x7feb352du;
-  h ^= h >> 15;
-  h *= 0x846ca68bu;
-  h ^= h >> 16;
-  return h & 0xffffu;
+  return hash32((x * 0x8da6b343u) ^ (y * 0xd8163841u)) & 0xffffu;
 }
 
 std::vector<uint32_t> tscmaaEdgeMask(const Image& color, const spec::TscmaaSpec& t, int offsetX) {

@@ -30,8 +30,8 @@ int edgeValue(vec3 a, vec3 b, float threshold) {
 // CMAA's non-dominant edge removal. An edge is judged against the twelve edge values of
 // its owner pixel's neighbourhood (`values[0]` is the edge itself): it stays if it
 // reaches the mix of their mean and maximum set by `removal`. CMAA's sample sums the
-// mean over its last group of four only (an assignment where an accumulation was meant);
-// the mean here is of all twelve, as its comment and the article describe.
+// mean over its last group of four only (an assignment where an accumulation was meant:
+// it still divides by twelve); the mean here is of all twelve.
 bool edgeKept(int values[12], float removal) {
   if (values[0] == 0) return false;
   int maxValue = 0;

@@ -82,7 +82,8 @@ constexpr std::array<run::CaseStatus, 5> kStatuses = {
 std::string header(const run::RunResults& r, const ReportExtras& extras) {
   std::string s = "<header class=\"run\">\n<h1>" + escapeMarkup(extras.title) + "</h1>\n";
   s += "<dl class=\"kv\"><dt>device</dt><dd>" + escapeMarkup(r.device) + "</dd>";
-  if (!r.fingerprint.empty()) s += "<dt>fingerprint</dt><dd>" + escapeMarkup(r.fingerprint) + "</dd>";
+  if (!r.fingerprint.empty())
+    s += "<dt>fingerprint</dt><dd>" + escapeMarkup(r.fingerprint) + "</dd>";
   s += "</dl>\n";
   // A report of extra sections only (a sweep) has no cases to summarise.
   if (r.cases.empty()) return s + "</header>\n";
@@ -180,6 +181,16 @@ void writeHtmlReport(const fs::path& file, const run::RunResults& results,
                      const ReportExtras& extras) {
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   writeFileAtomically(file, renderHtmlReport(results, dir, extras));
+}
+
+void writeSectionPage(const fs::path& file, const std::string& title, const std::string& device,
+                      const ReportSection& section) {
+  ReportExtras extras;
+  extras.title = title;
+  extras.sections.push_back(section);
+  run::RunResults noCases;
+  noCases.device = device;
+  writeHtmlReport(file, noCases, extras);
 }
 
 }  // namespace taa::report

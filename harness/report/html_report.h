@@ -44,4 +44,9 @@ std::string renderHtmlReport(const run::RunResults& results, const std::filesyst
 void writeHtmlReport(const std::filesystem::path& file, const run::RunResults& results,
                      const ReportExtras& extras = {});
 
+// A page of one section and no cases (a sweep, a scorecard), headed `title`, its device line
+// `device`; written as writeHtmlReport writes.
+void writeSectionPage(const std::filesystem::path& file, const std::string& title,
+                      const std::string& device, const ReportSection& section);
+
 }  // namespace taa::report

@@ -122,12 +122,7 @@ void writeScorecard(const fs::path& dir, const Scorecard& s) {
   section.tableHtml = report::htmlTable({"#", "case", "resolve", "FLIP", "RMSE", "flicker",
                                          "converged at", "ghosting", "non-finite", "ms/frame"},
                                         rows);
-  report::ReportExtras extras;
-  extras.title = "TAA scorecard: " + s.shader;
-  extras.sections.push_back(section);
-  run::RunResults empty;
-  empty.device = s.device;
-  report::writeHtmlReport(dir / "score.html", empty, extras);
+  report::writeSectionPage(dir / "score.html", "TAA scorecard: " + s.shader, s.device, section);
 }
 
 }  // namespace taa::score

@@ -118,12 +118,7 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
   section.svg = plot(r, false);
   section.tableHtml = report::htmlTable(
       {"preset", "FLIP mean", "RMSE", "flicker", "TAA ms", "frame ms", "Pareto", "settings"}, rows);
-  report::ReportExtras extras;
-  extras.title = "TAA sweep: " + r.caseName;
-  extras.sections.push_back(section);
-  run::RunResults empty;
-  empty.device = r.device;
-  report::writeHtmlReport(dir / "report.html", empty, extras);
+  report::writeSectionPage(dir / "report.html", "TAA sweep: " + r.caseName, r.device, section);
 }
 
 }  // namespace taa::sweep

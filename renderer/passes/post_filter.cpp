@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "passes/storage_image.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
 
@@ -47,16 +48,8 @@ PostFilter::PostFilter(vk::Context& ctx, const std::string& shader, glm::vec4 pa
     vk::ImageDesc d;
     d.name = "no_mask";
     d.format = VK_FORMAT_R32_UINT;
-    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    noMask_ = vk::Image(ctx, d);
-    VkCommandBuffer cmd = ctx.beginCommands();
-    noMask_.use(cmd, vk::Use::TransferDst);
-    const VkClearColorValue zero{};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, noMask_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
-                         &range);
-    noMask_.use(cmd, vk::Use::SampledCompute);
-    ctx.submitAndWait(cmd);
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    noMask_ = zeroedImage(ctx, d, vk::Use::SampledCompute);
   }
 }
 

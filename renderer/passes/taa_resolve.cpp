@@ -17,22 +17,13 @@ namespace {
 
 using namespace spec;
 
+// Bound where a variant reads nothing (cleared, so a stray read sees zeros).
 vk::Image dummy(vk::Context& ctx, VkFormat format, vk::Use use = vk::Use::SampledCompute) {
   vk::ImageDesc d;
   d.name = "dummy";
   d.format = format;
-  d.usage =
-      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  vk::Image image(ctx, d);
-  // Cleared so that a stray read would see zeros, never undefined memory.
-  VkCommandBuffer cmd = ctx.beginCommands();
-  image.use(cmd, vk::Use::TransferDst);
-  VkClearColorValue zero{};
-  VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-  image.use(cmd, use);
-  ctx.submitAndWait(cmd);
-  return image;
+  d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+  return zeroedImage(ctx, d, use);
 }
 
 // One eye: the resolve never runs in stereo (TSCMAA replaces it there).

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <stdexcept>
 
+#include "passes/storage_image.h"
 #include "user/glsl_compiler.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
@@ -30,22 +31,7 @@ static_assert(sizeof(UserFrameUniforms) == 3 * 64 + 5 * 16, "TaaUserFrame layout
 // An output-size target the shader writes and later samples, zeroed once so that a shader
 // reading it on a reset frame sees zeros rather than another run's memory.
 vk::Image userTarget(vk::Context& ctx, const char* name, glm::ivec2 size, VkFormat format) {
-  vk::ImageDesc d;
-  d.name = name;
-  d.width = uint32_t(size.x);
-  d.height = uint32_t(size.y);
-  d.format = format;
-  d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  vk::Image image(ctx, d);
-  VkCommandBuffer cmd = ctx.beginCommands();
-  image.use(cmd, vk::Use::TransferDst);
-  VkClearColorValue zero{};
-  VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-  image.use(cmd, vk::Use::SampledCompute);
-  ctx.submitAndWait(cmd);
-  return image;
+  return zeroedImage(ctx, storageImageDesc(name, size, format), vk::Use::SampledCompute);
 }
 
 const char* userFormatName(VkFormat f) {

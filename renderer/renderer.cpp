@@ -57,19 +57,21 @@ PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
   return p;
 }
 
-// What the resolve may read this frame: the targets the plan allocated, null otherwise.
+// What the resolve may read this frame: the images the plan allocated, null otherwise.
 ResolveInputs resolveInputs(GBufferTargets& t, PrevGBuffer& prev, vk::Image& color) {
   auto orNull = [](vk::Image& image) { return image ? &image : nullptr; };
+  // Where each G-buffer image lives: this frame's targets and last frame's copies.
+  const std::pair<bool GBufferNeeds::*, vk::Image*> images[] = {
+      {&GBufferNeeds::depth, &t.depth},          {&GBufferNeeds::velocity, &t.velocity},
+      {&GBufferNeeds::ids, &t.ids},              {&GBufferNeeds::normal, &t.normal},
+      {&GBufferNeeds::prevDepth, &prev.depth},   {&GBufferNeeds::prevVelocity, &prev.velocity},
+      {&GBufferNeeds::prevIds, &prev.ids},       {&GBufferNeeds::prevNormal, &prev.normal}};
   ResolveInputs in;
-  in.color = &color;
-  in.depth = &t.depth;
-  in.velocity = orNull(t.velocity);
-  in.ids = orNull(t.ids);
-  in.normal = orNull(t.normal);
-  in.prevDepth = orNull(prev.depth);
-  in.prevNormal = orNull(prev.normal);
-  in.prevIds = orNull(prev.ids);
-  in.prevVelocity = orNull(prev.velocity);
+  for (const ResolveInputInfo& i : kResolveInputs) {
+    if (i.source == InputSource::Color) in[i.input] = &color;
+    for (const auto& [need, image] : images)
+      if (i.source == InputSource::GBuffer && i.need == need) in[i.input] = orNull(*image);
+  }
   return in;
 }
 

@@ -93,7 +93,8 @@ void main() {
   uint historyCount = uint(seg.params.y);
   uint left = kHasHistory ? imageLoad(counterImage, p).r : 0u;
   uint rejection = texelFetch(rejectionTex, p, 0).r;
-  if (kTraceDisoccluded && rejection == TAA_REJECT_DISOCCLUDED) marked = true;
+  // Disoccluded: a test rejected the history on screen (whichever test it was).
+  if (kTraceDisoccluded && rejection >= TAA_REJECT_FIRST_ON_SCREEN) marked = true;
 
   uint mark = ADAPTIVE_MASK_NONE;
   if (marked) mark = ADAPTIVE_MASK_TRACE;

@@ -8,37 +8,25 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "taa/settings.glsl"
 
-// The resolve's own constants; every setting's comes from common/taa_settings.h below.
-layout(constant_id = TAA_SPEC_RESOLVE) const int kResolve = RESOLVE_FULL;
-layout(constant_id = TAA_SPEC_HAS_HISTORY) const bool kHasHistory = true;
-layout(constant_id = TAA_SPEC_UPSAMPLE) const bool kUpsample = false;
-layout(constant_id = TAA_SPEC_DEBUG) const int kDebug = DEBUG_OUTPUT_NONE;
-layout(constant_id = TAA_SPEC_REJECT_MASK) const bool kRejectMask = false;
+// The resolve's own constants and every setting's, from common/taa_settings.h.
+#define TAA_CONSTANT_OWN(id, type, name, def) layout(constant_id = id) const type name = def;
+TAA_RESOLVE_CONSTANTS(TAA_CONSTANT_OWN)
 
-#define TAA_CONSTANT_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CONSTANT_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   layout(constant_id = id) const int name = def;
-#define TAA_CONSTANT_B(key, def, id, name, modes, rule, text, doc, impl) layout(constant_id = id) const bool name = def;
+#define TAA_CONSTANT_B(key, def, id, name, modes, reads, rule, text, doc, impl) layout(constant_id = id) const bool name = def;
 #define TAA_CONSTANT_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
 TAA_SETTINGS(TAA_CONSTANT_E, TAA_CONSTANT_B, TAA_CONSTANT_F)
 
 layout(std140, binding = TAA_BINDING_UNIFORMS) uniform TaaBlock { TaaUniforms taaUniforms; };
-layout(binding = TAA_BINDING_COLOR) uniform sampler2D colorTex;
-layout(binding = TAA_BINDING_DEPTH) uniform sampler2D depthTex;
-layout(binding = TAA_BINDING_VELOCITY) uniform sampler2D velocityTex;
-layout(binding = TAA_BINDING_IDS) uniform usampler2D idsTex;
-layout(binding = TAA_BINDING_NORMAL) uniform sampler2D normalTex;
-layout(binding = TAA_BINDING_HISTORY) uniform sampler2D historyTex;
-layout(binding = TAA_BINDING_PREV_DEPTH) uniform sampler2D prevDepthTex;
-layout(binding = TAA_BINDING_PREV_NORMAL) uniform sampler2D prevNormalTex;
-layout(binding = TAA_BINDING_PREV_IDS) uniform usampler2D prevIdsTex;
-layout(binding = TAA_BINDING_PREV_VELOCITY) uniform sampler2D prevVelocityTex;
+TAA_INPUT_SAMPLERS  // one per row of common/resolve_inputs.h: colorTex, depthTex, ...
 layout(binding = TAA_BINDING_HISTORY_OUT) uniform writeonly image2D historyOut;
 layout(binding = TAA_BINDING_DEBUG_OUT, rgba16f) uniform writeonly image2D debugOut;
 layout(binding = TAA_BINDING_REJECT_OUT, r32ui) uniform writeonly uimage2D rejectOut;
 
 // This frame's settings: the constants above and the float settings' uniform slots.
-#define TAA_FILL_E(key, type, values, def, id, name, modes, rule, text, doc, impl) s.key = name;
-#define TAA_FILL_B(key, def, id, name, modes, rule, text, doc, impl) s.key = name;
+#define TAA_FILL_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) s.key = name;
+#define TAA_FILL_B(key, def, id, name, modes, reads, rule, text, doc, impl) s.key = name;
 #define TAA_FILL_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) s.key = TAA_SETTING(taaUniforms, slot);
 TaaSettings resolveSettings() {
   TaaSettings s;
@@ -56,6 +44,7 @@ TaaSettings resolveSettings() {
 #include "taa/blend_weight.glsl"
 #include "taa/unjitter.glsl"
 #include "taa/output_noise.glsl"
+#include "taa/rejection.glsl"
 
 struct Current {
   ivec2 pixel;   // render pixel providing the sample
@@ -82,17 +71,28 @@ Current currentSample(ivec2 q, ivec2 hi) {
   return c;
 }
 
+#if TAA_VALUE_COUNT(TAA_HISTORY_FORMAT_VALUES) != 2
+#error "writeOutput: a taa.history_format value without its branch"
+#endif
+#if TAA_VALUE_COUNT(TAA_DEBUG_OUTPUT_VALUES) != 5
+#error "writeOutput: a debug.output value without its branch"
+#endif
 void writeOutput(TaaSettings s, ivec2 q, vec3 color, float rejected, float clampDistance, vec2 motionPx) {
   // The output is also the next frame's history, so the noise enters it (as the seed's
   // resolve, which adds it to the image it writes).
   if (s.noise) color += vec3(outputNoise(q, uint(taaUniforms.jitter.z), s.noise_amount));
   vec3 bounded = boundColor(color);
+  // HISTORY_FORMAT_RGBA16F is rounded here (the driver may round toward zero); RGBA32F as is.
   imageStore(historyOut, q, vec4(s.history_format == HISTORY_FORMAT_RGBA16F ? roundToHalf(bounded) : bounded, 1.0));
   if (kDebug == DEBUG_OUTPUT_VELOCITY) imageStore(debugOut, q, vec4(motionPx * taaUniforms.view.z * 0.5 + 0.5, 0.0, 1.0));
   if (kDebug == DEBUG_OUTPUT_REJECTION) imageStore(debugOut, q, vec4(rejected, 0.0, 0.0, 1.0));
   if (kDebug == DEBUG_OUTPUT_CLAMP_DISTANCE) imageStore(debugOut, q, vec4(vec3(clampDistance * taaUniforms.view.z), 1.0));
+  // DEBUG_OUTPUT_NONE, and DEBUG_OUTPUT_SEGMENTATION (the adaptive pass draws it): no view here.
 }
 
+#if TAA_VALUE_COUNT(TAA_RESOLVE_VALUES) != 3
+#error "main: a resolve path without its branch"
+#endif
 void main() {
   ivec2 q = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(q, ivec2(taaUniforms.outputSize.xy)))) return;
@@ -144,6 +144,7 @@ void main() {
     return;
   }
 
+  // RESOLVE_FULL from here on.
   // With the speed in alpha the resolve reads colour only (seed 001): last frame's colour
   // at the same pixel, its weight set by the speed motion blur packed into alpha (render
   // pixels, here scaled to output pixels). Validation refuses what would need depth.
@@ -158,31 +159,9 @@ void main() {
     r = reproject(s, taaUniforms, depthTex, velocityTex, idsTex, uv, cur.pixel, hi);
   }
   float speed = s.velocity_in_alpha ? alphaSpeed : length(r.motionPx);
-  // Adaptive mode sends pixels off the previous frame to FXAA whether or not the
-  // resolve rejects them, so that test is made here, before the clamp.
-  bool wasOffscreen = offscreen(r.prevUv);
-  bool rejected = false;
-  if (s.reject_offscreen && offscreen(r.prevUv)) rejected = true;
-  r.prevUv = clamp(r.prevUv, vec2(0.0), vec2(1.0));
-  if (s.depth_culling && !rejected && depthRejects(s, taaUniforms, prevDepthTex, r)) rejected = true;
-  if (s.anti_ghosting && !rejected &&
-      antiGhostRejects(taaUniforms, idsTex, velocityTex, prevIdsTex, prevVelocityTex, cur.pixel, hi, r.prevUv))
-    rejected = true;
-
-  vec3 history;
-  if (s.consistency) {
-    // Taps are tested against the depth this pixel's surface had last frame (its world
-    // position under last frame's camera), as depth culling is; this frame's depth would
-    // fail every surface whose distance changed under a dolly.
-    float expectedDepth = reprojectDepth(taaUniforms, uv, texelFetch(depthTex, cur.pixel, 0).r).expectedDepth;
-    Consistent cs = consistentHistory(s, taaUniforms, historyTex, prevIdsTex, prevDepthTex, prevNormalTex, r.prevUv,
-                                      texelFetch(idsTex, cur.pixel, 0).r, expectedDepth,
-                                      texelFetch(normalTex, cur.pixel, 0).xyz);
-    history = cs.color;
-    if (cs.level == CONSISTENCY_REJECTED) rejected = true;
-  } else {
-    history = sampleHistory(s, historyTex, r.prevUv, taaUniforms.outputSize);
-  }
+  HistoryVerdict v = historyVerdict(s, taaUniforms TAA_INPUT_ARGS, r, uv, cur.pixel, hi);
+  bool rejected = v.reason != TAA_REJECT_NONE;
+  vec3 history = v.color;
 
   vec3 wHistory = toWorking(s, history);
   // The box reads only the motion's length, which is all the speed in alpha gives.
@@ -201,6 +180,7 @@ void main() {
 
   vec3 result = toneWeightedBlend(s, fromWorking(s, wRectified), current, alpha);
   writeOutput(s, q, result, rejected ? 1.0 : 0.0, clampDistance, r.motionPx);
-  if (kRejectMask)
-    imageStore(rejectOut, q, uvec4(wasOffscreen ? TAA_REJECT_OFFSCREEN : rejected ? TAA_REJECT_DISOCCLUDED : TAA_REJECT_NONE));
+  // Adaptive mode sends pixels off the previous frame to FXAA whether or not the resolve
+  // rejected them there.
+  if (kRejectMask) imageStore(rejectOut, q, uvec4(v.offscreen ? TAA_REJECT_OFFSCREEN : v.reason));
 }

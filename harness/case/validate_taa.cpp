@@ -92,8 +92,8 @@ void movingRules(Rules& r, const CaseSpec& s) {
     r.needs(key, (modes & bit) != 0, modesText(modes));
     if (modes & bit) r.needs(key, holds, what);
   };
-#define TAA_MOVING_CHECK_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_MOVING_CHECK_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_CHECK_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_MOVING_CHECK_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_MOVING_CHECK_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   check("taa.moving." #key, modes, rule(e), text);
   TAA_SETTINGS(TAA_MOVING_CHECK_E, TAA_MOVING_CHECK_B, TAA_MOVING_CHECK_F)
@@ -103,8 +103,8 @@ void movingRules(Rules& r, const CaseSpec& s) {
   // The ramp and the depth it measures at blend the still settings with the moving ones; with
   // no moving float set both are the same and the blend changes nothing.
   bool blendsSomething = false;
-#define TAA_MOVING_SET_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_MOVING_SET_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_SET_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_MOVING_SET_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_MOVING_SET_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   blendsSomething = blendsSomething || r.set("taa.moving." #key);
   TAA_SETTINGS(TAA_MOVING_SET_E, TAA_MOVING_SET_B, TAA_MOVING_SET_F)
@@ -132,8 +132,8 @@ void movingRules(Rules& r, const CaseSpec& s) {
 
 void resolveTaaMoving(TaaSpec& taa, const std::set<std::string>& present) {
   taa.moving.active = present.count("taa.moving") > 0;
-#define TAA_MOVING_COPY_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_MOVING_COPY_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_COPY_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_MOVING_COPY_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_MOVING_COPY_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   if (!present.count("taa.moving." #key)) taa.moving.key = taa.key;
   TAA_SETTINGS(TAA_MOVING_COPY_E, TAA_MOVING_COPY_B, TAA_MOVING_COPY_F)
@@ -182,9 +182,9 @@ std::vector<std::pair<std::string, std::string>> taaProblems(const CaseSpec& s,
     else
       r.needs(key, holds, what);
   };
-#define TAA_CHECK_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CHECK_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   check("taa." #key, modes, rule(e), text);
-#define TAA_CHECK_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CHECK_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   check("taa." #key, modes, rule(e), text);
 #define TAA_CHECK_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   check("taa." #key, modes, rule(e), text);

@@ -3,33 +3,30 @@
 // (the raster test needs it); `depth` says whether a pass samples it (seed 001's resolve
 // with the speed in alpha reads colour only). The pass plan
 // allocates the union over the passes a case runs (pass_plan.cpp), so a pass states what
-// it reads as a value: a user's resolve reports it from its shader's bindings.
+// it reads as a value: a resolve from its input table rows (passes/resolve_inputs.h), a
+// user's resolve from its shader's bindings.
 #pragma once
 
 namespace taa {
 
+// The images, in the order of GBufferNeeds' members (designated initializers follow it).
+#define TAA_GBUFFER_IMAGES(X) \
+  X(velocity) X(normal) X(ids) X(prevDepth) X(prevNormal) X(prevIds) X(prevVelocity) X(depth)
+
 struct GBufferNeeds {
-  bool velocity = false;
-  bool normal = false;
-  bool ids = false;
-  bool prevDepth = false;
-  bool prevNormal = false;
-  bool prevIds = false;
-  bool prevVelocity = false;
-  bool depth = false;
+#define TAA_GBUFFER_NEED_MEMBER(n) bool n = false;
+  TAA_GBUFFER_IMAGES(TAA_GBUFFER_NEED_MEMBER)
+#undef TAA_GBUFFER_NEED_MEMBER
 
   constexpr GBufferNeeds& operator|=(const GBufferNeeds& o) {
-    velocity = velocity || o.velocity;
-    normal = normal || o.normal;
-    ids = ids || o.ids;
-    prevDepth = prevDepth || o.prevDepth;
-    prevNormal = prevNormal || o.prevNormal;
-    prevIds = prevIds || o.prevIds;
-    prevVelocity = prevVelocity || o.prevVelocity;
-    depth = depth || o.depth;
+#define TAA_GBUFFER_NEED_UNION(n) n = n || o.n;
+    TAA_GBUFFER_IMAGES(TAA_GBUFFER_NEED_UNION)
+#undef TAA_GBUFFER_NEED_UNION
     return *this;
   }
-  friend constexpr GBufferNeeds operator|(GBufferNeeds a, const GBufferNeeds& b) { return a |= b; }
+  friend constexpr GBufferNeeds operator|(GBufferNeeds a, const GBufferNeeds& b) {
+    return a |= b;
+  }
   friend constexpr bool operator==(const GBufferNeeds&, const GBufferNeeds&) = default;
 };
 

@@ -12,26 +12,12 @@
 #include <vector>
 
 #include "passes/gbuffer_needs.h"
+#include "passes/resolve_inputs.h"
 #include "script/frame_state.h"
 #include "vk/resources.h"
 #include "vk/timestamps.h"
 
 namespace taa {
-
-// What a resolve may read this frame, at render size with the top-left renderSize pixels
-// valid. An input the pass plan did not allocate is null; a stage that reads it must say
-// so in its plan needs, never bind a null.
-struct ResolveInputs {
-  vk::Image* color = nullptr;  // lit colour, or motion-blurred colour
-  vk::Image* depth = nullptr;
-  vk::Image* velocity = nullptr;
-  vk::Image* ids = nullptr;
-  vk::Image* normal = nullptr;
-  vk::Image* prevDepth = nullptr;
-  vk::Image* prevNormal = nullptr;
-  vk::Image* prevIds = nullptr;
-  vk::Image* prevVelocity = nullptr;
-};
 
 // An image the harness reads back beside the output, valid in its top-left `size` pixels;
 // `bits`: an integer mask, read as float bit values. The name "current" replaces the
@@ -57,8 +43,8 @@ class ResolveStage {
   virtual vk::Image& output() = 0;
   virtual glm::ivec2 outputSize() const = 0;
 
-  // The G-buffer targets record() reads beyond colour and depth: the pass plan allocates
-  // them (and last frame's copies) from this, so an input not named here is null.
+  // The G-buffer targets record() reads beyond colour: the pass plan allocates them (and
+  // last frame's copies) from this, so an input not named here is null.
   virtual GBufferNeeds needs() const = 0;
 
   // Optional images later passes or the harness read; null when the stage has none.

@@ -40,8 +40,8 @@ spec::TaaSpec blendMoving(const spec::TaaSpec& user, float w) {
   spec::TaaSpec still = spec::effectiveTaa(user);
   if (w <= 0.0f) return still;
   spec::TaaSpec movingUser = user;
-#define TAA_MOVING_NONE_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_MOVING_NONE_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_MOVING_NONE_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_MOVING_NONE_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_MOVING_TAKE_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   movingUser.key = user.moving.key;
 #define TAA_MOVING_BLEND_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \

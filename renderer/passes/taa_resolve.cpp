@@ -31,17 +31,18 @@ glm::ivec2 resolveOutputSize(const CaseSpec& s) {
   return {s.render.width, s.render.height};
 }
 
-// Every id of taa_settings.h differs from the others and from the resolve's own.
+// Every specialization id of taa_settings.h, the settings' and the resolve's own, is unique.
 constexpr bool taaSpecIdsUnique() {
-#define TAA_ID_E(key, type, values, def, id, name, modes, rule, text, doc, impl) id,
-#define TAA_ID_B(key, def, id, name, modes, rule, text, doc, impl) id,
+#define TAA_ID_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) id,
+#define TAA_ID_B(key, def, id, name, modes, reads, rule, text, doc, impl) id,
 #define TAA_ID_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
-  constexpr int ids[] = {TAA_SPEC_RESOLVE,     TAA_SPEC_HAS_HISTORY,
-                         TAA_SPEC_UPSAMPLE,    TAA_SPEC_DEBUG,
-                         TAA_SPEC_REJECT_MASK, TAA_SETTINGS(TAA_ID_E, TAA_ID_B, TAA_ID_F)};
+#define TAA_ID_OWN(id, type, name, def) id,
+  constexpr int ids[] = {TAA_RESOLVE_CONSTANTS(TAA_ID_OWN)
+                             TAA_SETTINGS(TAA_ID_E, TAA_ID_B, TAA_ID_F)};
 #undef TAA_ID_E
 #undef TAA_ID_B
 #undef TAA_ID_F
+#undef TAA_ID_OWN
   for (size_t a = 0; a < std::size(ids); ++a)
     for (size_t b = a + 1; b < std::size(ids); ++b)
       if (ids[a] == ids[b]) return false;
@@ -52,8 +53,8 @@ static_assert(taaSpecIdsUnique(),
 
 // Likewise every float setting's uniform slot, within TaaUniforms::settings.
 constexpr bool taaSlotsValid() {
-#define TAA_SLOT_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_SLOT_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_SLOT_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_SLOT_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_SLOT_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) slot,
   constexpr int slots[] = {TAA_SETTINGS(TAA_SLOT_E, TAA_SLOT_B, TAA_SLOT_F)};
 #undef TAA_SLOT_E
@@ -69,6 +70,12 @@ constexpr bool taaSlotsValid() {
 static_assert(taaSlotsValid(),
               "uniform slots in common/taa_settings.h overlap or exceed TAA_SETTING_VEC4S");
 
+static_assert(resolveInputBindingsValid({TAA_BINDING_UNIFORMS, TAA_BINDING_HISTORY_OUT,
+                                          TAA_BINDING_DEBUG_OUT, TAA_BINDING_REJECT_OUT},
+                                         {}),
+              "two resolve inputs share a binding in common/resolve_inputs.h, or one takes the "
+              "uniforms' or an output's (common/shared.h)");
+
 // The settings the resolve runs: with motion blur off nothing writes the speed into alpha,
 // so velocity_in_alpha falls back to the per-pixel velocities, as seed 001's TAA does.
 TaaSpec resolveTaa(const CaseSpec& spec) {
@@ -77,32 +84,44 @@ TaaSpec resolveTaa(const CaseSpec& spec) {
   return t;
 }
 
-// Bytes of one texel of each image the resolve samples (see taaResolveReads).
-void addResolveRead(std::vector<ResolveRead>& reads, bool read, const char* name, VkFormat f) {
-  if (read) reads.push_back({name, vk::formatBytes(f)});
+VkFormat historyFormat(const TaaSpec& t) {
+  return t.history_format == HistoryFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT
+                                                    : VK_FORMAT_R16G16B16A16_SFLOAT;
 }
 
 }  // namespace
 
+ResolveInputSet taaResolveInputs(const CaseSpec& spec) {
+  const ModeRule& rule = modeRule(spec.taa.mode);
+  if (!rule.resolve) return {};
+  const TaaSpec effective = resolveTaa(spec);
+  // Every path reads the colour and all but pass-through their history; a setting adds what
+  // its row reads where the path runs it (the specialization constants' rule, below).
+  const uint32_t inPath = pathModes(rule.path);
+  ResolveInputSet reads = {ResolveInput::Color};
+  if (rule.path != Resolve::PassThrough) reads |= {ResolveInput::History};
+#define TAA_READS_E(key, type, values, def, id, name, modes, settingReads, rule, text, doc, impl) \
+  if (modes & inPath) reads |= settingReads(effective);
+#define TAA_READS_B(key, def, id, name, modes, settingReads, rule, text, doc, impl) \
+  if (modes & inPath) reads |= settingReads(effective);
+#define TAA_READS_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
+  TAA_SETTINGS(TAA_READS_E, TAA_READS_B, TAA_READS_F)
+#undef TAA_READS_E
+#undef TAA_READS_B
+#undef TAA_READS_F
+  return reads;
+}
+
 std::vector<ResolveRead> taaResolveReads(const CaseSpec& spec) {
-  const GBufferNeeds n = taaResolveNeeds(spec);
-  const bool history = modeRule(spec.taa.mode).path != Resolve::PassThrough;
-  const VkFormat historyFormat = resolveTaa(spec).history_format == HistoryFormat::Rgba32f
-                                     ? VK_FORMAT_R32G32B32A32_SFLOAT
-                                     : VK_FORMAT_R16G16B16A16_SFLOAT;
+  const ResolveInputSet reads = taaResolveInputs(spec);
   // The formats gbuffer.cpp, prev_gbuffer.cpp and motion_blur.cpp allocate; record() checks
   // them against the images it binds.
   std::vector<ResolveRead> r;
-  addResolveRead(r, true, "colour", VK_FORMAT_R16G16B16A16_SFLOAT);
-  addResolveRead(r, history, "history", historyFormat);
-  addResolveRead(r, n.depth, "depth", VK_FORMAT_D32_SFLOAT);
-  addResolveRead(r, n.velocity, "velocity", VK_FORMAT_R16G16_SFLOAT);
-  addResolveRead(r, n.ids, "ids", VK_FORMAT_R32_UINT);
-  addResolveRead(r, n.normal, "normal", VK_FORMAT_R16G16B16A16_SFLOAT);
-  addResolveRead(r, n.prevDepth, "prev_depth", VK_FORMAT_D32_SFLOAT);
-  addResolveRead(r, n.prevNormal, "prev_normal", VK_FORMAT_R16G16B16A16_SFLOAT);
-  addResolveRead(r, n.prevIds, "prev_ids", VK_FORMAT_R32_UINT);
-  addResolveRead(r, n.prevVelocity, "prev_velocity", VK_FORMAT_R16G16_SFLOAT);
+  for (const ResolveInputInfo& i : kResolveInputs)
+    if (reads.has(i.input))
+      r.push_back({i.name, vk::formatBytes(i.format == VK_FORMAT_UNDEFINED
+                                               ? historyFormat(resolveTaa(spec))
+                                               : i.format)});
   return r;
 }
 
@@ -124,9 +143,9 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
       .set(TAA_SPEC_UPSAMPLE, upsample)
       .set(TAA_SPEC_DEBUG, int(spec.debug.output))
       .set(TAA_SPEC_REJECT_MASK, modeRule(t.mode).adaptive);
-#define TAA_SPEC_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_SPEC_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   c.set(id, (modes & inPath) ? int(t.key) : 0);
-#define TAA_SPEC_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_SPEC_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   c.set(id, (modes & inPath) != 0 && t.key);
 #define TAA_SPEC_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
   TAA_SETTINGS(TAA_SPEC_E, TAA_SPEC_B, TAA_SPEC_F)
@@ -149,8 +168,8 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
   u.outputSize = glm::vec4(out, 1.0f / out);
   u.jitter = glm::vec4(s.jitter, float(s.frame), 0.0f);  // z: the frame index (taa.noise)
   u.view = glm::vec4(s.camera.nearPlane, s.camera.farPlane, spec.debug.scale, 0.0f);
-#define TAA_PARAM_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_PARAM_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_PARAM_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_PARAM_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_PARAM_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   u.settings[slot / 4][slot % 4] = t.key;
   TAA_SETTINGS(TAA_PARAM_E, TAA_PARAM_B, TAA_PARAM_F)
@@ -161,25 +180,7 @@ gpu::TaaUniforms makeTaaUniforms(const CaseSpec& spec, const script::FrameState&
 }
 
 GBufferNeeds taaResolveNeeds(const CaseSpec& spec) {
-  const ModeRule& rule = modeRule(spec.taa.mode);
-  const TaaSpec t = resolveTaa(spec);
-  // Only the full path reprojects and validates its history; the others read colour alone,
-  // and so does the full path with the speed in alpha (seed 001: no depth, no velocity;
-  // validation refuses the settings that would need them).
-  const bool full = rule.resolve && rule.path == Resolve::Full;
-  const bool colourOnly = full && t.velocity_in_alpha;
-  const bool antiGhost = full && t.anti_ghosting;
-  const bool consistency = full && t.consistency;
-  GBufferNeeds n;
-  n.velocity = (full && t.use_velocity != UseVelocity::Off) || antiGhost;
-  n.ids = (full && t.use_velocity == UseVelocity::Movers) || antiGhost || consistency;
-  n.normal = consistency;
-  n.prevDepth = full && (t.depth_culling || consistency);
-  n.prevNormal = consistency;
-  n.prevIds = consistency || antiGhost;
-  n.prevVelocity = antiGhost;
-  n.depth = full && !colourOnly;
-  return n;
+  return gbufferNeeds(taaResolveInputs(spec));
 }
 
 TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const PassPlan& plan)
@@ -195,9 +196,7 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
   withHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, true));
   withoutHistory_ =
       vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, false));
-  const VkFormat format = effectiveTaa(spec.taa).history_format == HistoryFormat::Rgba32f
-                              ? VK_FORMAT_R32G32B32A32_SFLOAT
-                              : VK_FORMAT_R16G16B16A16_SFLOAT;
+  const VkFormat format = historyFormat(effectiveTaa(spec.taa));
   history_[0] = storageImage(ctx, "history_a", resolveOutputSize(spec), format);
   history_[1] = storageImage(ctx, "history_b", resolveOutputSize(spec), format);
   // The segmentation view is drawn by the adaptive pass, not here.
@@ -230,23 +229,10 @@ std::vector<std::string> TaaResolvePass::describe() const {
 }
 
 // The bytes-per-pixel figure describe() logs is the formats of the images bound here.
-void TaaResolvePass::checkResolveReads(const ResolveInputs& in, vk::Image& history,
-                                       const GBufferNeeds& n) const {
+void TaaResolvePass::checkResolveReads(const ResolveInputs& in, ResolveInputSet reads) const {
   uint32_t bytes = 0;
-  auto add = [&](bool read, const vk::Image* image) {
-    if (read && image) bytes += vk::formatBytes(image->desc().format);
-  };
-  const bool full = modeRule(spec_.taa.mode).path != Resolve::PassThrough;
-  add(true, in.color);
-  add(full, &history);
-  add(n.depth, in.depth);
-  add(n.velocity, in.velocity);
-  add(n.ids, in.ids);
-  add(n.normal, in.normal);
-  add(n.prevDepth, in.prevDepth);
-  add(n.prevNormal, in.prevNormal);
-  add(n.prevIds, in.prevIds);
-  add(n.prevVelocity, in.prevVelocity);
+  for (const ResolveInputInfo& i : kResolveInputs)
+    if (reads.has(i.input) && in[i.input]) bytes += vk::formatBytes(in[i.input]->desc().format);
   if (bytes != taaResolveReadBytes(spec_))
     throw std::logic_error("TaaResolvePass: the bound images read " + std::to_string(bytes) +
                            " bytes a pixel, taaResolveReads says " +
@@ -269,23 +255,20 @@ void TaaResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
 
   vk::Dispatch d(hasHistory ? withHistory_ : withoutHistory_);
   d.uniform(TAA_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(gpu::TaaUniforms));
-  auto sample = [&](uint32_t binding, vk::Image* image, vk::Image& fallback, VkSampler sampler) {
-    d.sample(binding, image ? *image : fallback, sampler);
-  };
-  const GBufferNeeds needs = taaResolveNeeds(spec_);
-  checkResolveReads(in, previous, needs);
-  sample(TAA_BINDING_COLOR, in.color, dummyFloat_, point_.handle());
-  // Depth is always rendered; a resolve that does not read it gets the dummy, so that the
-  // colour-only resolve (seed 001) provably takes no depth.
-  sample(TAA_BINDING_DEPTH, needs.depth ? in.depth : nullptr, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_VELOCITY, in.velocity, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_IDS, in.ids, dummyUint_, point_.handle());
-  sample(TAA_BINDING_NORMAL, in.normal, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_HISTORY, &previous, dummyFloat_, linear_.handle());
-  sample(TAA_BINDING_PREV_DEPTH, in.prevDepth, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_PREV_NORMAL, in.prevNormal, dummyFloat_, point_.handle());
-  sample(TAA_BINDING_PREV_IDS, in.prevIds, dummyUint_, point_.handle());
-  sample(TAA_BINDING_PREV_VELOCITY, in.prevVelocity, dummyFloat_, point_.handle());
+  const ResolveInputSet reads = taaResolveInputs(spec_);
+  ResolveInputs bound = in;
+  for (const ResolveInputInfo& i : kResolveInputs)
+    if (i.source == InputSource::Own) bound[i.input] = &previous;
+  checkResolveReads(bound, reads);
+  // An input the settings do not read gets a zeroed stand-in even where the plan allocated
+  // it for another pass (depth is always rendered), so the colour-only resolve (seed 001)
+  // provably takes no depth and a shader reading what its row does not name reads zeros.
+  for (const ResolveInputInfo& i : kResolveInputs) {
+    vk::Image* image = reads.has(i.input) ? bound[i.input] : nullptr;
+    vk::Image& standIn = i.uintTexels ? dummyUint_ : dummyFloat_;
+    d.sample(i.binding, image ? *image : standIn,
+             i.filter == VK_FILTER_LINEAR ? linear_.handle() : point_.handle());
+  }
   d.store(TAA_BINDING_HISTORY_OUT, next)
       .store(TAA_BINDING_DEBUG_OUT, debug_ ? debug_ : dummyStorage_)
       .store(TAA_BINDING_REJECT_OUT, rejection_ ? rejection_ : dummyReject_)

@@ -16,7 +16,9 @@
 
 namespace taa {
 
-// The G-buffer targets the built-in resolve reads for a case's settings.
+// The inputs the built-in resolve samples for a case's settings (its path's own and every
+// setting's row), and the G-buffer targets they are.
+ResolveInputSet taaResolveInputs(const spec::CaseSpec& spec);
 GBufferNeeds taaResolveNeeds(const spec::CaseSpec& spec);
 
 // One image the resolve samples and the bytes of one of its texels. Per pixel the resolve
@@ -52,7 +54,7 @@ class TaaResolvePass final : public ResolveStage {
   std::vector<std::string> describe() const override;
 
  private:
-  void checkResolveReads(const ResolveInputs& in, vk::Image& history, const GBufferNeeds& n) const;
+  void checkResolveReads(const ResolveInputs& in, ResolveInputSet reads) const;
   vk::Context& ctx_;
   const spec::CaseSpec& spec_;
   vk::Pipeline withHistory_;

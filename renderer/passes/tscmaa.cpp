@@ -140,9 +140,10 @@ std::vector<std::string> TscmaaPass::describe() const {
 
 void TscmaaPass::record(VkCommandBuffer cmd, vk::GpuTimer& timer, const script::FrameState& s,
                         int eye, const ResolveInputs& in) {
-  if (!in.color || !in.depth) throw std::logic_error("TscmaaPass: colour or depth missing");
-  vk::Image& color = *in.color;
-  vk::Image& depth = *in.depth;
+  if (!in[ResolveInput::Color] || !in[ResolveInput::Depth])
+    throw std::logic_error("TscmaaPass: colour or depth missing");
+  vk::Image& color = *in[ResolveInput::Color];
+  vk::Image& depth = *in[ResolveInput::Depth];
   Eye& e = eyes_.at(size_t(eye));
   if (eye == 0) current_ ^= 1;
   auto* base = static_cast<uint8_t*>(uniforms_.mapped());

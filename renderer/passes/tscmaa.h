@@ -48,7 +48,7 @@ class TscmaaPass final : public ResolveStage {
 
   vk::Image& output() override;  // this frame's result, eyes side by side
   glm::ivec2 outputSize() const override;
-  GBufferNeeds needs() const override { return {}; }  // colour and depth only
+  GBufferNeeds needs() const override { return {.depth = true}; }  // and colour
   vk::Image& cmaa() { return cmaa_; }  // the CMAA result, eyes side by side
   vk::Image& mask() { return mask_; }  // R32_UINT TSCMAA_EDGE_* / TSCMAA_TAA bits
   vk::Image* input() { return input_ ? &input_ : nullptr; }

@@ -96,9 +96,9 @@ inline std::string modesText(uint32_t modes) {
 // geometric consistency as its only history validation and no colour rectification,
 // turns consistency on and rectification off.
 inline TaaSpec effectiveTaa(const TaaSpec& user) {
-#define TAA_RESET_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_RESET_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   if (!(modes & bit)) t.key = defaults.key;
-#define TAA_RESET_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_RESET_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   if (!(modes & bit)) t.key = defaults.key;
 #define TAA_RESET_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   if (!(modes & bit)) t.key = defaults.key;

@@ -41,15 +41,15 @@ TAA_DECLARED_ENUM(ColorSpace, TAA_COLOR_SPACE_VALUES)
 TAA_DECLARED_ENUM(HistoryFormat, TAA_HISTORY_FORMAT_VALUES)
 TAA_DECLARED_ENUM(DebugOutput, TAA_DEBUG_OUTPUT_VALUES)
 
-#define TAA_CXX_MEMBER_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CXX_MEMBER_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   type key = type(def);
-#define TAA_CXX_MEMBER_B(key, def, id, name, modes, rule, text, doc, impl) bool key = def;
+#define TAA_CXX_MEMBER_B(key, def, id, name, modes, reads, rule, text, doc, impl) bool key = def;
 #define TAA_CXX_MEMBER_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   float key = def;
 
 // The uniform slot of each float setting, by the name the shaders use (TAA_PARAM_ALPHA).
-#define TAA_CXX_SLOT_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_CXX_SLOT_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_CXX_SLOT_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_CXX_SLOT_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define TAA_CXX_SLOT_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   inline constexpr int name = slot;
 TAA_SETTINGS(TAA_CXX_SLOT_E, TAA_CXX_SLOT_B, TAA_CXX_SLOT_F)
@@ -74,8 +74,8 @@ void fields(V& v, ShaderParam& p) {
 // a second value for any float setting of the resolve, blended in by the camera's speed on
 // screen. Only floats: they are uniforms, so they can change every frame; enums and switches
 // are specialization constants and would need another pipeline.
-#define TAA_CXX_NONE_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define TAA_CXX_NONE_B(key, def, id, name, modes, rule, text, doc, impl)
+#define TAA_CXX_NONE_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define TAA_CXX_NONE_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 struct TaaMovingSpec {
   float from_px = 0.5f;
   float to_px = 4.0f;
@@ -119,9 +119,9 @@ struct TaaSpec {
   bool shader_clamps = false;
 };
 
-#define TAA_CXX_FIELD_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CXX_FIELD_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   v.field(#key, s.key, Meta{doc, impl, "specialization constant " #id " (" #name ")", text});
-#define TAA_CXX_FIELD_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define TAA_CXX_FIELD_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   v.field(#key, s.key, Meta{doc, impl, "specialization constant " #id " (" #name ")", text});
 #define TAA_CXX_FIELD_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   v.field(#key, s.key, Range<float>{lo, hi},                                        \

@@ -10,6 +10,11 @@ namespace taa::user {
 
 namespace {
 
+static_assert(resolveInputBindingsValid({}, {kUserFrame, kUserOutput, kUserHistory0,
+                                             kUserHistory0Out, kUserHistory1, kUserHistory1Out}),
+              "two inputs of a user's resolve share a binding in common/resolve_inputs.h, or one "
+              "takes a binding of its own targets");
+
 // The SPIR-V opcodes and decorations read here (SPIR-V specification, section 3).
 constexpr uint32_t kUserOpName = 5, kUserOpTypeBool = 20, kUserOpTypeInt = 21,
                    kUserOpTypeFloat = 22, kUserOpTypeImage = 25, kUserOpTypePointer = 32,
@@ -70,12 +75,6 @@ const UserParam* UserInterface::param(const std::string& name) const {
   return nullptr;
 }
 
-std::vector<std::string> UserInterface::paramNames() const {
-  std::vector<std::string> out;
-  for (const auto& p : params) out.push_back(p.name);
-  return out;
-}
-
 UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::string& name) {
   // Descriptor types and presence come from the layer every pipeline uses.
   const vk::ShaderInterface si = vk::reflectSpirv(w, name);
@@ -84,13 +83,8 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
   if (!has(kUserOutput))
     throw std::runtime_error(
         name + " never writes taa_output (binding 10); a resolve must imageStore its result there");
-  u.depth = has(kUserDepth);
-  u.velocity = has(kUserVelocity);
-  u.ids = has(kUserIds);
-  u.normal = has(kUserNormal);
-  u.prevDepth = has(kUserPrevDepth);
-  u.prevIds = has(kUserPrevIds);
-  u.prevNormal = has(kUserPrevNormal);
+  for (const ResolveInputInfo& i : kResolveInputs)
+    if (i.userBinding >= 0 && has(uint32_t(i.userBinding))) u.reads |= {i.input};
 
   std::map<uint32_t, std::string> names;
   std::map<uint32_t, uint32_t> specIds, bindings, types;  // types: id -> opcode

@@ -1,7 +1,8 @@
 // What a user's resolve declares, read from its SPIR-V: which inputs of taa_user.h it reads
 // (so the pass plan allocates only those G-buffer targets), the history targets it keeps
 // with their formats, and its named specialization constants (set by taa.shader_params).
-// The binding numbers are taa_user.h's; the two must change together.
+// taa_user.h is generated from the same table (common/resolve_inputs.h), so its bindings
+// and these cannot drift apart.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -11,25 +12,18 @@
 #include <string>
 #include <vector>
 
+#include "passes/resolve_inputs.h"
+
 namespace taa::user {
 
-// taa_user.h's bindings.
+// taa_user.h's bindings that are not inputs (the inputs' are their table rows').
 enum UserBinding : uint32_t {
-  kUserFrame = 0,
-  kUserColor = 1,
-  kUserDepth = 2,
-  kUserVelocity = 3,
-  kUserIds = 4,
-  kUserNormal = 5,
-  kUserPrevDepth = 6,
-  kUserPrevIds = 7,
-  kUserPrevNormal = 8,
-  kUserPrevOutput = 9,
-  kUserOutput = 10,
-  kUserHistory0 = 11,     // previous frame's history 0 (sampled)
-  kUserHistory0Out = 12,  // this frame's history 0 (storage)
-  kUserHistory1 = 13,
-  kUserHistory1Out = 14,
+  kUserFrame = TAA_USER_BINDING_FRAME,
+  kUserOutput = TAA_USER_BINDING_OUTPUT,
+  kUserHistory0 = TAA_USER_BINDING_HISTORY0,         // previous frame's history 0 (sampled)
+  kUserHistory0Out = TAA_USER_BINDING_HISTORY0_OUT,  // this frame's history 0 (storage)
+  kUserHistory1 = TAA_USER_BINDING_HISTORY1,
+  kUserHistory1Out = TAA_USER_BINDING_HISTORY1_OUT,
 };
 
 enum class ParamType { Bool, Int, Uint, Float };
@@ -43,14 +37,12 @@ struct UserParam {
 };
 
 struct UserInterface {
-  bool depth = false, velocity = false, ids = false, normal = false;
-  bool prevDepth = false, prevIds = false, prevNormal = false;
+  ResolveInputSet reads;  // the inputs it declares (taa_color and taa_prev_output always)
   // History targets 0 and 1: the format the shader's output image declares, or none.
   std::optional<VkFormat> history[2];
   std::vector<UserParam> params;  // by constant_id
 
   const UserParam* param(const std::string& name) const;
-  std::vector<std::string> paramNames() const;
 };
 
 // Throws std::runtime_error naming `name` when the shader breaks taa_user.h's contract

@@ -143,16 +143,7 @@ vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserIn
 }
 
 GBufferNeeds userNeeds(const user::UserInterface& u) {
-  GBufferNeeds n;
-  n.depth = u.depth;
-  n.velocity = u.velocity;
-  // Last frame's ids and normals are copies of this frame's targets.
-  n.ids = u.ids || u.prevIds;
-  n.normal = u.normal || u.prevNormal;
-  n.prevDepth = u.prevDepth;
-  n.prevIds = u.prevIds;
-  n.prevNormal = u.prevNormal;
-  return n;
+  return gbufferNeeds(u.reads);
 }
 
 struct UserResolvePass::Impl {
@@ -242,21 +233,14 @@ void UserResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
   const auto& ui = s.shader.interface;
   vk::Dispatch d(s.pipeline);
   d.uniform(user::kUserFrame, s.uniforms.handle(), 0, sizeof(UserFrameUniforms));
-  auto bind = [&](bool declared, uint32_t binding, vk::Image* image, const char* what) {
-    if (!declared) return;
+  for (const ResolveInputInfo& i : kResolveInputs) {
+    if (!ui.reads.has(i.input)) continue;
+    vk::Image* image = i.source == InputSource::Own ? &s.output[previous] : in[i.input];
     if (!image)
-      throw std::logic_error(std::string("user resolve: the plan did not allocate ") + what);
-    d.sample(binding, *image, s.point.handle());
-  };
-  bind(true, user::kUserColor, in.color, "colour");
-  bind(ui.depth, user::kUserDepth, in.depth, "depth");
-  bind(ui.velocity, user::kUserVelocity, in.velocity, "velocity");
-  bind(ui.ids, user::kUserIds, in.ids, "ids");
-  bind(ui.normal, user::kUserNormal, in.normal, "normals");
-  bind(ui.prevDepth, user::kUserPrevDepth, in.prevDepth, "previous depth");
-  bind(ui.prevIds, user::kUserPrevIds, in.prevIds, "previous ids");
-  bind(ui.prevNormal, user::kUserPrevNormal, in.prevNormal, "previous normals");
-  d.sample(user::kUserPrevOutput, s.output[previous], s.linear.handle());
+      throw std::logic_error(std::string("user resolve: the plan did not allocate ") + i.name);
+    d.sample(uint32_t(i.userBinding), *image,
+             i.filter == VK_FILTER_LINEAR ? s.linear.handle() : s.point.handle());
+  }
   d.store(user::kUserOutput, s.output[s.current]);
   for (int k = 0; k < 2; ++k)
     if (ui.history[k]) {

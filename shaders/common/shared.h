@@ -18,6 +18,7 @@ using uint = uint32_t;
 #define TAA_BLOCK(name) struct name
 #endif
 
+#include "resolve_inputs.h"
 #include "taa_settings.h"
 
 // ---- G-buffer raster pass (gbuffer.vert/.frag, sky.vert/.frag) ----
@@ -110,33 +111,22 @@ TAA_BLOCK(DrawPush) {
 };
 
 // ---- Temporal resolve (taa_resolve.comp and shaders/taa/*.glsl) ----
+// Its inputs' bindings are the rows of common/resolve_inputs.h; these are the others.
 #define TAA_BINDING_UNIFORMS 0
-#define TAA_BINDING_COLOR 1         // current frame (render size), colour or motion-blurred colour
-#define TAA_BINDING_DEPTH 2
-#define TAA_BINDING_VELOCITY 3
-#define TAA_BINDING_IDS 4
-#define TAA_BINDING_NORMAL 5
-#define TAA_BINDING_HISTORY 6       // previous output (output size), linear sampler
-#define TAA_BINDING_PREV_DEPTH 7
-#define TAA_BINDING_PREV_NORMAL 8
-#define TAA_BINDING_PREV_IDS 9
-#define TAA_BINDING_PREV_VELOCITY 10
 #define TAA_BINDING_HISTORY_OUT 11  // new history = resolve output (storage)
 #define TAA_BINDING_DEBUG_OUT 12    // debug view (storage), when debug.output is set
 #define TAA_BINDING_REJECT_OUT 13   // R32UI why history was not used (TAA_REJECT_*), adaptive mode
-#define TAA_BINDING_COUNT 14
 
-// The settings' ids are in common/taa_settings.h; these are the resolve's own.
-#define TAA_SPEC_RESOLVE 0          // RESOLVE_*: which path (renderer/spec/taa_modes.h)
-#define TAA_SPEC_HAS_HISTORY 1      // false on frame 0, cuts and scripted resets
-#define TAA_SPEC_UPSAMPLE 19
-#define TAA_SPEC_DEBUG 20           // DEBUG_OUTPUT_*
-#define TAA_SPEC_REJECT_MASK 21     // write TAA_BINDING_REJECT_OUT (adaptive mode only)
-
+// Why a pixel's history was not used: shaders/taa/rejection.glsl's verdict, written to
+// TAA_BINDING_REJECT_OUT for the adaptive segmentation. Every reason from
+// TAA_REJECT_FIRST_ON_SCREEN on is a test that rejected a history position on screen.
 #define TAA_REJECT_NONE 0u
 #define TAA_REJECT_OFFSCREEN 1u    // the reprojected position left the previous frame
-#define TAA_REJECT_DISOCCLUDED 2u  // depth, consistency or anti-ghosting rejected it on screen
-#define TAA_REJECT_NO_HISTORY 3u   // frame 0, camera cut or scripted reset
+#define TAA_REJECT_NO_HISTORY 2u   // frame 0, camera cut or scripted reset
+#define TAA_REJECT_DEPTH 3u        // depth culling: last frame's surface there is another one
+#define TAA_REJECT_GHOST 4u        // anti-ghosting: a mover's trail
+#define TAA_REJECT_INCONSISTENT 5u  // geometric consistency: no tap is the same surface
+#define TAA_REJECT_FIRST_ON_SCREEN TAA_REJECT_DEPTH
 
 TAA_BLOCK(TaaUniforms) {
   mat4 invViewProj;       // current, un-jittered: world position from depth

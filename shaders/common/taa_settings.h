@@ -62,54 +62,92 @@
   X(Segmentation, DEBUG_OUTPUT_SEGMENTATION, 4, "segmentation")
 
 // ---- Settings (taa.*), in case-file order after taa.mode ----
-// E(key, C++ type, values list, default, specialization id, GLSL constant, modes, rule, rule text,
-//   doc, impl): an enum setting
-// B(key, default, specialization id, GLSL constant, modes, rule, rule text, doc, impl): a switch
+// E(key, C++ type, values list, default, specialization id, GLSL constant, modes, reads, rule,
+//   rule text, doc, impl): an enum setting
+// B(key, default, specialization id, GLSL constant, modes, reads, rule, rule text, doc, impl): a
+//   switch
 // F(key, default, lo, hi, uniform slot, GLSL slot name, modes, rule, rule text, doc, impl): a float
 // modes: the taa.mode values in which the key may be set (kBlending, kReprojecting,
 // kFullOnly in renderer/spec/taa_modes.h); a setting outside them takes its
 // default, and the specialization constant gets 0 where the resolve path has no use for
 // it. rule: a predicate of the effective settings that must hold for the key to mean
 // something, as a C++ lambda (kAlways: none); rule text: that condition in words.
+// reads: the resolve inputs (common/resolve_inputs.h) the setting makes the resolve sample,
+// a C++ lambda of the effective settings returning a ResolveInputSet (kReadsNothing: none;
+// readsIf(condition, {inputs}) in renderer/passes/resolve_inputs.h); the resolve binds, and the
+// plan allocates, the union over the settings its path runs. A float is a uniform and
+// cannot change what a pipeline reads.
 // Uniform slots index TaaUniforms::settings (4 floats a vec4); a new float takes the
 // next free slot, and TAA_SETTING_VEC4S grows when they are full.
 #define TAA_SETTING_VEC4S 4
+
+// The resolve's own specialization constants, which no case key sets, beside the settings'
+// ids so that a new one is picked against all of them (renderer/passes/taa_resolve.cpp
+// refuses to compile when two ids collide). The next free id is 28.
+// X(id, GLSL type, GLSL constant, GLSL default)
+#define TAA_SPEC_RESOLVE 0       // RESOLVE_*: which path (renderer/spec/taa_modes.h)
+#define TAA_SPEC_HAS_HISTORY 1   // false on frame 0, cuts and scripted resets
+#define TAA_SPEC_UPSAMPLE 19     // the output is larger than the render size
+#define TAA_SPEC_DEBUG 20        // DEBUG_OUTPUT_*
+#define TAA_SPEC_REJECT_MASK 21  // write TAA_BINDING_REJECT_OUT (adaptive mode only)
+#define TAA_RESOLVE_CONSTANTS(X)                         \
+  X(TAA_SPEC_RESOLVE, int, kResolve, RESOLVE_FULL)       \
+  X(TAA_SPEC_HAS_HISTORY, bool, kHasHistory, true)       \
+  X(TAA_SPEC_UPSAMPLE, bool, kUpsample, false)           \
+  X(TAA_SPEC_DEBUG, int, kDebug, DEBUG_OUTPUT_NONE)      \
+  X(TAA_SPEC_REJECT_MASK, bool, kRejectMask, false)
 
 // clang-format off
 #define TAA_SETTINGS(E, B, F)                                                                      \
   F(alpha, 0.1f, 0.0f, 1.0f, 0, TAA_PARAM_ALPHA, kBlending, kAlways, "",                           \
     "weight of the current sample (higher = less history)", "shaders/taa/blend_weight.glsl")       \
   E(tonemap_weighting, ToneWeight, TAA_TONE_WEIGHT_VALUES, TONE_WEIGHT_NONE, 2, kToneWeight,       \
-    kBlendingNotAccumulate, kAlways, "",                                                           \
+    kBlendingNotAccumulate, kReadsNothing, kAlways, "",                                            \
     "blend in a luminance-weighted space against flicker: Karis (1/(1+luma)), inverse luminance "  \
     "tonemap, or log",                                                                             \
     "shaders/taa/color_space.glsl")                                                                \
   E(use_velocity, UseVelocity, TAA_USE_VELOCITY_VALUES, USE_VELOCITY_ALL, 3, kUseVelocity,         \
-    kReprojecting, kAlways, "",                                                                    \
+    kReprojecting,                                                                                 \
+    [](const TaaSpec& t) {                                                                         \
+      if (t.velocity_in_alpha) return ResolveInputSet{};                                           \
+      return ResolveInputSet{ResolveInput::Depth} |                                                \
+             readsIf(t.use_velocity != UseVelocity::Off, {ResolveInput::Velocity}) |               \
+             readsIf(t.use_velocity == UseVelocity::Movers, {ResolveInput::Ids});                  \
+    },                                                                                             \
+    kAlways, "",                                                                                   \
     "where the motion-vector buffer drives reprojection: off (depth + inverse view-projection "    \
     "everywhere), "                                                                                \
     "movers (velocity on movers, depth elsewhere) or all",                                         \
     "shaders/taa/reprojection.glsl")                                                               \
   E(velocity_sampling, VelocitySampling, TAA_VELOCITY_SAMPLING_VALUES,                             \
-    VELOCITY_SAMPLING_CLOSEST_3X3, 4, kVelocitySampling, kReprojecting, kAlways, "",               \
+    VELOCITY_SAMPLING_CLOSEST_3X3, 4, kVelocitySampling, kReprojecting, kReadsNothing, kAlways,    \
+    "",                                                                                            \
     "which velocity a pixel uses: its own, the longest in 3x3, or the depth-closest in 3x3",       \
     "shaders/taa/reprojection.glsl")                                                               \
   E(history_filter, HistoryFilter, TAA_HISTORY_FILTER_VALUES, HISTORY_FILTER_CATMULL_ROM_5, 5,     \
-    kHistoryFilter, kFullOnly, kAlways, "",                                                        \
+    kHistoryFilter, kFullOnly, kReadsNothing, kAlways, "",                                         \
     "history resampling: bilinear, B-spline (4 taps), Catmull-Rom 9-tap, 5-tap approximation or "  \
     "16-tap",                                                                                      \
     "shaders/taa/history_filter.glsl")                                                             \
-  B(reject_offscreen, true, 6, kRejectOffscreen, kReprojecting, kAlways, "",                       \
+  B(reject_offscreen, true, 6, kRejectOffscreen, kReprojecting, kReadsNothing, kAlways, "",        \
     "reject history whose position falls outside the previous frame",                              \
     "shaders/taa/validation.glsl")                                                                 \
-  B(depth_culling, false, 7, kDepthCulling, kFullOnly, kAlways, "",                                \
+  B(depth_culling, false, 7, kDepthCulling, kFullOnly,                                             \
+    [](const TaaSpec& t) { return readsIf(t.depth_culling, {ResolveInput::PrevDepth}); },          \
+    kAlways, "",                                                                                   \
     "reject history whose previous depth differs from the expected one",                           \
     "shaders/taa/validation.glsl")                                                                 \
   F(depth_threshold, 0.05f, 0.0f, 10.0f, 5, TAA_PARAM_DEPTH_THRESHOLD, kFullOnly,                  \
     [](const TaaSpec& t) { return t.depth_culling; }, "taa.depth_culling is true",                 \
     "relative linear-depth difference beyond which depth culling rejects",                         \
     "shaders/taa/validation.glsl")                                                                 \
-  B(consistency, false, 8, kConsistency, kFullOnly, kAlways, "",                                   \
+  B(consistency, false, 8, kConsistency, kFullOnly,                                                \
+    [](const TaaSpec& t) {                                                                         \
+      return readsIf(t.consistency,                                                                \
+                     {ResolveInput::Depth, ResolveInput::Ids, ResolveInput::Normal,                \
+                      ResolveInput::PrevDepth, ResolveInput::PrevNormal, ResolveInput::PrevIds});  \
+    },                                                                                             \
+    kAlways, "",                                                                                   \
     "geometric consistency per bilinear tap (depth, normal, mesh id); 2x2, then 3x3, else the "    \
     "current sample",                                                                              \
     "shaders/taa/consistency.glsl")                                                                \
@@ -120,17 +158,23 @@
     [](const TaaSpec& t) { return t.consistency; }, "taa.consistency is true",                     \
     "minimum dot product of current and previous normals of a consistent tap",                     \
     "shaders/taa/consistency.glsl")                                                                \
-  B(anti_ghosting, false, 9, kAntiGhosting, kFullOnly, kAlways, "",                                \
+  B(anti_ghosting, false, 9, kAntiGhosting, kFullOnly,                                             \
+    [](const TaaSpec& t) {                                                                         \
+      return readsIf(t.anti_ghosting, {ResolveInput::Velocity, ResolveInput::Ids,                  \
+                                       ResolveInput::PrevIds, ResolveInput::PrevVelocity});        \
+    },                                                                                             \
+    kAlways, "",                                                                                   \
     "dynamic anti-ghosting: reject history where a mover moved at this pixel last frame and "      \
     "nothing moves in the 5-tap neighbourhood now",                                                \
     "shaders/taa/validation.glsl")                                                                 \
   F(rejection_alpha, 1.0f, 0.0f, 1.0f, 1, TAA_PARAM_REJECTION_ALPHA, kReprojecting, kAlways, "",   \
     "alpha where history is rejected (1 = the current sample)", "shaders/taa/blend_weight.glsl")   \
-  E(rectify, Rectify, TAA_RECTIFY_VALUES, RECTIFY_CLIP, 10, kRectify, kFullOnly, kAlways, "",      \
+  E(rectify, Rectify, TAA_RECTIFY_VALUES, RECTIFY_CLIP, 10, kRectify, kFullOnly, kReadsNothing,    \
+    kAlways, "",                                                                                   \
     "history rectification against the 3x3 neighbourhood: none, clamp to the box, or clip toward " \
     "its centre",                                                                                  \
     "shaders/taa/rectify.glsl")                                                                    \
-  B(variance_clip, false, 11, kVarianceClip, kFullOnly,                                            \
+  B(variance_clip, false, 11, kVarianceClip, kFullOnly, kReadsNothing,                             \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "use mean +- gamma * sigma of the neighbourhood as the box",                                   \
     "shaders/taa/neighborhood.glsl")                                                               \
@@ -138,7 +182,7 @@
     [](const TaaSpec& t) { return t.variance_clip && !t.motion_adaptive_gamma; },                  \
     "taa.variance_clip is true and taa.motion_adaptive_gamma is false",                            \
     "gamma of variance clipping", "shaders/taa/neighborhood.glsl")                                 \
-  B(motion_adaptive_gamma, false, 23, kMotionAdaptiveGamma, kFullOnly,                             \
+  B(motion_adaptive_gamma, false, 23, kMotionAdaptiveGamma, kFullOnly, kReadsNothing,              \
     [](const TaaSpec& t) { return t.variance_clip; }, "taa.variance_clip is true",                 \
     "Intel TAA sample: the variance-clipping gamma goes from variance_gamma_static (still pixels " \
     "keep highlights a tight box would cut) to variance_gamma_moving (moving pixels lose their "   \
@@ -158,14 +202,14 @@
     "speed (output pixels per frame) at which the gamma reaches variance_gamma_moving (Intel: "    \
     "128 at 1080p)",                                                                               \
     "shaders/taa/neighborhood.glsl")                                                               \
-  B(shaped_neighborhood, false, 12, kShaped, kFullOnly,                                            \
+  B(shaped_neighborhood, false, 12, kShaped, kFullOnly, kReadsNothing,                             \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "average the 3x3 box with the 5-tap cross box", "shaders/taa/neighborhood.glsl")               \
   E(color_space, ColorSpace, TAA_COLOR_SPACE_VALUES, COLOR_SPACE_YCOCG, 13, kColorSpace,           \
-    kFullOnly, [](const TaaSpec& t) { return t.rectify != Rectify::None; },                        \
+    kFullOnly, kReadsNothing, [](const TaaSpec& t) { return t.rectify != Rectify::None; },         \
     "taa.rectify is clamp or clip", "space of the box and clipping: rgb or ycocg",                 \
     "shaders/taa/color_space.glsl")                                                                \
-  B(shrink_chroma, false, 14, kShrinkChroma, kFullOnly,                                            \
+  B(shrink_chroma, false, 14, kShrinkChroma, kFullOnly, kReadsNothing,                             \
     [](const TaaSpec& t) {                                                                         \
       return t.rectify != Rectify::None && t.color_space == ColorSpace::YCoCg;                     \
     },                                                                                             \
@@ -174,7 +218,7 @@
     "current pixel's "                                                                             \
     "chroma",                                                                                      \
     "shaders/taa/neighborhood.glsl")                                                               \
-  B(luma_weight, false, 15, kLumaWeight, kFullOnly, kAlways, "",                                   \
+  B(luma_weight, false, 15, kLumaWeight, kFullOnly, kReadsNothing, kAlways, "",                    \
     "Lottes luma weighting: alpha from the luma difference of current and history, within "        \
     "[alpha_min, "                                                                                 \
     "alpha_max]",                                                                                  \
@@ -185,37 +229,37 @@
   F(alpha_max, 0.2f, 0.0f, 1.0f, 3, TAA_PARAM_ALPHA_MAX, kFullOnly,                                \
     [](const TaaSpec& t) { return t.luma_weight; }, "taa.luma_weight is true",                     \
     "largest alpha of luma weighting", "shaders/taa/blend_weight.glsl")                            \
-  B(velocity_alpha, false, 16, kVelocityAlpha, kFullOnly, kAlways, "",                             \
+  B(velocity_alpha, false, 16, kVelocityAlpha, kFullOnly, kReadsNothing, kAlways, "",              \
     "fast pixels trust the current frame: alpha rises to 1 at velocity_alpha_px of motion",        \
     "shaders/taa/blend_weight.glsl")                                                               \
   F(velocity_alpha_px, 32.0f, 1e-3f, 1e6f, 6, TAA_PARAM_VELOCITY_ALPHA_PX, kFullOnly,              \
     [](const TaaSpec& t) { return t.velocity_alpha; }, "taa.velocity_alpha is true",               \
     "speed (output pixels per frame) at which velocity_alpha reaches alpha 1",                     \
     "shaders/taa/blend_weight.glsl")                                                               \
-  B(velocity_attenuation, false, 24, kVelocityAttenuation, kFullOnly, kAlways, "",                \
+  B(velocity_attenuation, false, 24, kVelocityAttenuation, kFullOnly, kReadsNothing, kAlways, "",  \
     "seed 001: the history's weight is divided by 1 + the distance (output pixels) to the "        \
     "pixel's position last frame, so 1 pixel away halves it",                                      \
     "shaders/taa/blend_weight.glsl")                                                               \
-  B(reduce_blend_near_clamp, false, 17, kReduceBlend, kFullOnly,                                   \
+  B(reduce_blend_near_clamp, false, 17, kReduceBlend, kFullOnly, kReadsNothing,                    \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "Karis anti-flicker: lower alpha (to half on the edge) as the history's luma nears the "       \
     "edge of the box",                                                                             \
     "shaders/taa/blend_weight.glsl")                                                               \
-  B(velocity_in_alpha, false, 18, kVelocityInAlpha, kFullOnly, kAlways, "",                        \
+  B(velocity_in_alpha, false, 18, kVelocityInAlpha, kFullOnly, kReadsNothing, kAlways, "",         \
     "motion blur packs the per-pixel speed into colour alpha and the resolve reads colour only, "  \
     "no depth and no reprojection (seed 001; mode full, velocity_alpha or velocity_attenuation, "  \
     "use_velocity off); without post.motion_blur it falls back to the velocity buffer",            \
     "shaders/motion_blur.comp")                                                                    \
-  B(unjitter_current, false, 25, kUnjitterCurrent, kFullOnly, kAlways, "",                        \
+  B(unjitter_current, false, 25, kUnjitterCurrent, kFullOnly, kReadsNothing, kAlways, "",          \
     "seed 000 (a debugging aid): the blend's current sample is the colour at the pixel centre, "   \
     "bilinear between the jittered samples, instead of the pixel's jittered sample",               \
     "shaders/taa/unjitter.glsl")                                                                   \
-  B(unjitter_neighborhood, false, 26, kUnjitterNeighborhood, kFullOnly,                            \
+  B(unjitter_neighborhood, false, 26, kUnjitterNeighborhood, kFullOnly, kReadsNothing,             \
     [](const TaaSpec& t) { return t.rectify != Rectify::None; }, "taa.rectify is clamp or clip",   \
     "seed 000 (a debugging aid): the 8 neighbours of the 3x3 box are the colours at their pixel "  \
     "centres, bilinear between the jittered samples",                                              \
     "shaders/taa/unjitter.glsl")                                                                   \
-  B(noise, false, 27, kNoise, kBlending, kAlways, "",                                              \
+  B(noise, false, 27, kNoise, kBlending, kReadsNothing, kAlways, "",                               \
     "seed 000 (experimental): add noise to the output, uniform in +-noise_amount, the same in "    \
     "every channel, a hash of the pixel and the frame index",                                      \
     "shaders/taa/output_noise.glsl")                                                               \
@@ -224,7 +268,7 @@
     "largest noise added per channel (the seed's code: 1/510, half an 8-bit step)",                \
     "shaders/taa/output_noise.glsl")                                                               \
   E(history_format, HistoryFormat, TAA_HISTORY_FORMAT_VALUES, HISTORY_FORMAT_RGBA16F, 22,          \
-    kHistoryFormat, kBlending, kAlways, "", "precision of the history buffer",                     \
+    kHistoryFormat, kBlending, kReadsNothing, kAlways, "", "precision of the history buffer",      \
     "renderer/passes/taa_resolve.cpp")
 // clang-format on
 

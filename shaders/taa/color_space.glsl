@@ -12,6 +12,13 @@ vec3 rgbToYCoCg(vec3 c) {
 
 vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
+#if TAA_VALUE_COUNT(TAA_TONE_WEIGHT_VALUES) != 4
+#error "toDomain, fromDomain, toneWeightedBlend: a taa.tonemap_weighting value without its branch"
+#endif
+#if TAA_VALUE_COUNT(TAA_COLOR_SPACE_VALUES) != 2
+#error "isYCoCg: a taa.color_space value without its branch"
+#endif
+
 // inverse_luma and log run the whole resolve (neighbourhood box, rectification and
 // blend) in a compressed domain, so that one bright sample cannot stretch the box and
 // let a dark history through; Karis keeps the box linear and weights only the blend.
@@ -23,13 +30,13 @@ vec3 toDomain(TaaSettings s, vec3 c) {
     return c / (1.0 + luma(c));
   }
   if (s.tonemap_weighting == TONE_WEIGHT_LOG) return log(1.0 + max(c, vec3(0.0)));
-  return c;
+  return c;  // TONE_WEIGHT_NONE, TONE_WEIGHT_KARIS: the box stays linear
 }
 vec3 fromDomain(TaaSettings s, vec3 d) {
   // c / (1 - luma) has a pole at luma 1: a box corner may lie beyond it; bound the result.
   if (s.tonemap_weighting == TONE_WEIGHT_INVERSE_LUMA) return d / max(1.0 - luma(d), 1.0 / kHalfMax);
   if (s.tonemap_weighting == TONE_WEIGHT_LOG) return exp(d) - 1.0;
-  return d;
+  return d;  // TONE_WEIGHT_NONE, TONE_WEIGHT_KARIS
 }
 
 // Without rectification there is no box to shape, and a YCoCg round trip would only add

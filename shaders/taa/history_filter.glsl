@@ -88,13 +88,16 @@ vec3 historyCatmullRom16(sampler2D tex, vec2 uv, vec4 size) {
   return r;
 }
 
+#if TAA_VALUE_COUNT(TAA_HISTORY_FILTER_VALUES) != 5
+#error "sampleHistory: a taa.history_filter value without its branch"
+#endif
 vec3 sampleHistory(TaaSettings s, sampler2D tex, vec2 uv, vec4 size) {
   vec3 h;
   if (s.history_filter == HISTORY_FILTER_BSPLINE) h = historyBSpline(tex, uv, size);
   else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_9) h = historyCatmullRom9(tex, uv, size);
   else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_5) h = historyCatmullRom5(tex, uv, size);
   else if (s.history_filter == HISTORY_FILTER_CATMULL_ROM_16) h = historyCatmullRom16(tex, uv, size);
-  else h = historyBilinear(tex, uv);
+  else h = historyBilinear(tex, uv);  // HISTORY_FILTER_BILINEAR
   // Catmull-Rom's negative lobes can undershoot below zero next to bright edges.
   return max(h, vec3(0.0));
 }

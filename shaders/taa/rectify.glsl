@@ -20,10 +20,13 @@ vec3 clipToBox(vec3 h, Box b) {
   return m > 1.0 ? center + offset / m : h;
 }
 
+#if TAA_VALUE_COUNT(TAA_RECTIFY_VALUES) != 3
+#error "rectifyHistory: a taa.rectify value without its branch"
+#endif
 vec3 rectifyHistory(TaaSettings s, vec3 h, Box b) {
   if (s.rectify == RECTIFY_CLAMP) return clampToBox(h, b);
   if (s.rectify == RECTIFY_CLIP) return clipToBox(h, b);
-  return h;
+  return h;  // RECTIFY_NONE
 }
 
 #endif

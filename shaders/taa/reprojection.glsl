@@ -9,13 +9,20 @@ float linearDepth(TaaUniforms u, float d) {
   return n * f / (n + d * (f - n));
 }
 
+#if TAA_VALUE_COUNT(TAA_VELOCITY_SAMPLING_VALUES) != 3
+#error "velocityKey, velocityPixel: a taa.velocity_sampling value without its branch"
+#endif
+#if TAA_VALUE_COUNT(TAA_USE_VELOCITY_VALUES) != 3
+#error "reproject: a taa.use_velocity value without its branch"
+#endif
+
 // What velocity sampling maximises: squared motion (longest) or reversed-Z depth (closest).
 float velocityKey(TaaSettings s, sampler2D velocityTex, sampler2D depthTex, ivec2 q) {
   if (s.velocity_sampling == VELOCITY_SAMPLING_LONGEST_3X3) {
     vec2 v = texelFetch(velocityTex, q, 0).xy;
     return dot(v, v);
   }
-  return texelFetch(depthTex, q, 0).r;
+  return texelFetch(depthTex, q, 0).r;  // VELOCITY_SAMPLING_CLOSEST_3X3
 }
 
 // The render pixel whose velocity this pixel uses: itself, the longest motion in
@@ -76,7 +83,7 @@ Reprojection reproject(TaaSettings s, TaaUniforms u, sampler2D depthTex, sampler
   bool useVelocity = s.use_velocity == USE_VELOCITY_ALL ||
                      (s.use_velocity == USE_VELOCITY_MOVERS && (texelFetch(idsTex, vp, 0).r & IDS_MOVER_BIT) != 0u);
   if (useVelocity) return reprojectVelocity(u, uv, texelFetch(velocityTex, vp, 0).xy, depth);
-  return reprojectDepth(u, uv, depth);
+  return reprojectDepth(u, uv, depth);  // USE_VELOCITY_OFF, or a static pixel under MOVERS
 }
 
 #endif

@@ -57,6 +57,15 @@ TEST(GBufferNeeds, ResolveReadsWhatItsSettingsUse) {
   // The basic blend reads colour alone, whatever the full path's defaults would read.
   EXPECT_EQ(taaResolveNeeds(planTestCase(R"("mode": "basic")")), GBufferNeeds{});
   EXPECT_EQ(taaResolveNeeds(planTestCase(R"("mode": "tscmaa")")), GBufferNeeds{});
+  // Beyond the G-buffer: every path reads the colour, all but pass-through their history,
+  // and a setting's row adds what it reads only where the path runs it.
+  EXPECT_EQ(taaResolveInputs(planTestCase(R"("mode": "pass_through")")),
+            ResolveInputSet{ResolveInput::Color});
+  EXPECT_EQ(taaResolveInputs(planTestCase(R"("mode": "basic")")),
+            (ResolveInputSet{ResolveInput::Color, ResolveInput::History}));
+  EXPECT_TRUE(taaResolveInputs(planTestCase(R"("mode": "full", "depth_culling": true)"))
+                  .has(ResolveInput::PrevDepth));
+  EXPECT_FALSE(taaResolveInputs(planTestCase(R"("mode": "full")")).has(ResolveInput::PrevDepth));
 }
 
 TEST(GBufferNeeds, PlanAddsTheCaseOutputsAndTheTargetsCopiesComeFrom) {

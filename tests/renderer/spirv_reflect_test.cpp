@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
 
 #include "common/shared.h"
+#include "passes/resolve_inputs.h"
 #include "vk/pipeline.h"
 
 namespace taa::vk {
@@ -25,15 +27,20 @@ VkDescriptorType typeAt(const ShaderInterface& s, uint32_t binding) {
 TEST(SpirvReflect, ResolveBindingsAreTheSharedHeaderOnes) {
   const ShaderInterface s = reflectShader("taa_resolve.comp");
   EXPECT_EQ(s.stages, VkShaderStageFlags(VK_SHADER_STAGE_COMPUTE_BIT));
-  ASSERT_EQ(s.bindings.size(), size_t(TAA_BINDING_COUNT));
-  for (uint32_t b = 0; b < TAA_BINDING_COUNT; ++b) {
-    VkDescriptorType want = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    if (b == TAA_BINDING_UNIFORMS) want = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    if (b == TAA_BINDING_HISTORY_OUT || b == TAA_BINDING_DEBUG_OUT || b == TAA_BINDING_REJECT_OUT)
-      want = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    EXPECT_EQ(typeAt(s, b), want) << "binding " << b;
-    EXPECT_EQ(s.bindings[b].count, 1u);
-    EXPECT_EQ(s.bindings[b].set, 0u);
+  // The uniforms, three outputs and one sampler per row of the input table.
+  std::map<uint32_t, VkDescriptorType> want = {
+      {TAA_BINDING_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+      {TAA_BINDING_HISTORY_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+      {TAA_BINDING_DEBUG_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+      {TAA_BINDING_REJECT_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+  for (const ResolveInputInfo& i : kResolveInputs)
+    want[i.binding] = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  ASSERT_EQ(s.bindings.size(), want.size());
+  for (const ReflectedBinding& b : s.bindings) {
+    ASSERT_TRUE(want.count(b.binding)) << "binding " << b.binding;
+    EXPECT_EQ(b.type, want[b.binding]) << "binding " << b.binding;
+    EXPECT_EQ(b.count, 1u);
+    EXPECT_EQ(b.set, 0u);
   }
   EXPECT_EQ(s.pushConstantBytes, 0u);
   EXPECT_EQ(s.localSize, (std::array<uint32_t, 3>{8, 8, 1}));

@@ -48,8 +48,8 @@ inline SyntheticRun runSynthetic(const spec::CaseSpec& spec, const Image& color)
       test::uploadFloatImage(Image(color.width, color.height, 1, 0.5f), VK_FORMAT_R32_SFLOAT);
   const auto state = script::frameState(spec, 0);
   ResolveInputs inputs;
-  inputs.color = &in;
-  inputs.depth = &depth;
+  inputs[ResolveInput::Color] = &in;
+  inputs[ResolveInput::Depth] = &depth;
   vk::GpuTimer timer(test::gpu());
   VkCommandBuffer cmd = test::gpu().beginCommands();
   pass.record(cmd, timer, state, 0, inputs);

@@ -314,9 +314,9 @@ void requireMirrored(const CpuResolveInputs& in, const spec::TaaSpec& taa) {
     const auto* end = std::end(kMirrored);
     if (!isDefault && std::find(std::begin(kMirrored), end, key) == end) refuse(key);
   };
-#define CPU_MIRROR_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define CPU_MIRROR_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   check(#key, taa.key == defaults.key);
-#define CPU_MIRROR_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define CPU_MIRROR_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   check(#key, taa.key == defaults.key);
 #define CPU_MIRROR_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   check(#key, taa.key == defaults.key);

@@ -53,13 +53,13 @@ GpuResolveResult gpuResolve(const spec::CaseSpec& spec, const SyntheticResolve& 
   const PassPlan plan = planPasses(spec);
   TaaResolvePass pass(gpu(), spec, plan);
   ResolveInputs inputs;
-  inputs.depth = &depthImage;
-  inputs.velocity = &velocityImage;
-  inputs.color = &historyInput;
+  inputs[ResolveInput::Depth] = &depthImage;
+  inputs[ResolveInput::Velocity] = &velocityImage;
+  inputs[ResolveInput::Color] = &historyInput;
   runFrame(pass, seed, inputs);
   GpuResolveResult out;
   out.history = downloadImage(pass.output());
-  inputs.color = &color;
+  inputs[ResolveInput::Color] = &color;
   runFrame(pass, frame, inputs);
   out.output = downloadImage(pass.output());
   out.current = roundToHalf(in.current);

@@ -10,6 +10,7 @@
 
 #include "user/user_interface.h"
 #include "user/user_resolve.h"
+#include "vk/spirv_reflect.h"
 
 namespace taa::user {
 namespace {
@@ -24,7 +25,7 @@ class GlslCompilerTest : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "src");
     options_.root = dir_ / "src";
-    options_.headerDir = fs::path(TAA_SOURCE_DIR) / "shaders" / "user";
+    options_.headerDir = user::userHeaderDir();  // the generated header, as a user has it
     options_.cacheDir = dir_ / "cache";
   }
   fs::path write(const std::string& name, const std::string& text) {
@@ -63,8 +64,8 @@ TEST_F(GlslCompilerTest, CompilesAShaderAgainstTheInstalledHeader) {
   ASSERT_EQ(c.includes.size(), 1u);
   EXPECT_EQ(c.includes[0].filename(), "taa_user.h");
   const UserInterface u = reflectUserInterface(c.spirv, "pass.comp");
-  EXPECT_FALSE(u.depth || u.velocity || u.ids || u.normal || u.prevDepth || u.prevIds ||
-               u.prevNormal);
+  // The header's two always-declared inputs, and nothing the shader did not ask for.
+  EXPECT_EQ(u.reads, (ResolveInputSet{ResolveInput::Color, ResolveInput::History}));
   EXPECT_FALSE(u.history[0] || u.history[1]);
   EXPECT_TRUE(u.params.empty());
 }
@@ -155,6 +156,35 @@ void main() {
   EXPECT_EQ(fourth.spirv, third.spirv);
 }
 
+// taa_user.h is generated from the resolve input table: every row offered to a user's shader
+// is declared by its macro, at its binding, and reflects back as exactly that input.
+TEST_F(GlslCompilerTest, EveryTableInputIsDeclaredByItsMacroAndReflectsAsItself) {
+  int offered = 0;
+  for (const ResolveInputInfo& i : kResolveInputs) {
+    if (i.userBinding < 0 || std::string(i.userMacro) == "TAA_USER_ALWAYS") continue;
+    ++offered;
+    const std::string file = std::string(i.userName) + ".comp";
+    const std::string texel = i.uintTexels
+                                  ? "vec4(texelFetch(" + std::string(i.userName) + ", p, 0))"
+                                  : "texelFetch(" + std::string(i.userName) + ", p, 0)";
+    const auto c = compileComputeShader(
+        write(file, "#version 450\n#define " + std::string(i.userMacro) +
+                        "\n#include \"taa_user.h\"\nvoid main() {\n  ivec2 p;\n"
+                        "  if (!taa_pixel(p)) return;\n  imageStore(taa_output, p, " +
+                        texel + ");\n}\n"),
+        options_);
+    const UserInterface u = reflectUserInterface(c.spirv, file);
+    EXPECT_EQ(u.reads, (ResolveInputSet{ResolveInput::Color, ResolveInput::History, i.input}))
+        << i.userMacro;
+    const vk::ShaderInterface si = vk::reflectSpirv(c.spirv, file);
+    EXPECT_NE(si.find(0, uint32_t(i.userBinding)), nullptr) << i.userName;
+    if (i.need) {
+      EXPECT_TRUE(userNeeds(u).*i.need) << i.userMacro;
+    }
+  }
+  EXPECT_GE(offered, 7);
+}
+
 TEST_F(GlslCompilerTest, ReflectionFindsInputsHistoriesAndParameters) {
   const auto c = compileComputeShader(write("decl.comp", R"(#version 450
 #define TAA_USE_VELOCITY
@@ -176,9 +206,8 @@ void main() {
 )"),
                                       options_);
   const UserInterface u = reflectUserInterface(c.spirv, "decl.comp");
-  EXPECT_TRUE(u.velocity);
-  EXPECT_TRUE(u.prevDepth);
-  EXPECT_FALSE(u.depth || u.ids || u.normal || u.prevIds || u.prevNormal);
+  EXPECT_EQ(u.reads, (ResolveInputSet{ResolveInput::Color, ResolveInput::History,
+                                      ResolveInput::Velocity, ResolveInput::PrevDepth}));
   ASSERT_TRUE(u.history[0].has_value());
   EXPECT_EQ(*u.history[0], VK_FORMAT_R16_SFLOAT);
   EXPECT_FALSE(u.history[1].has_value());

@@ -20,9 +20,9 @@ packages=(
   glslang-dev
   libglm-dev
   nlohmann-json3-dev
-  # PNG reading and writing (renderer/core/png_codec.cpp).
+  # PNG reading and writing (core/png_codec.cpp).
   libpng-dev
-  # OpenEXR reading and writing (renderer/core/exr_codec.cpp).
+  # OpenEXR reading and writing (core/exr_codec.cpp).
   libopenexr-dev
   # Only the tests link OpenImageIO, to cross-check our PNG and EXR code (tests/crosscheck).
   libopenimageio-dev

@@ -14,9 +14,9 @@
 #include <map>
 #include <memory>
 
+#include "api/renderer.h"
 #include "bench_context.h"
 #include "case/case_loader.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "vk/context.h"
 

@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
+#include "api/renderer.h"
 #include "bench_context.h"
 #include "case/case_loader.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "vk/context.h"
 

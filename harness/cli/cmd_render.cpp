@@ -3,6 +3,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "api/renderer.h"
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -11,7 +12,6 @@
 #include "cli/run_support.h"
 #include "core/image_io.h"
 #include "core/output_file.h"
-#include "renderer.h"
 
 namespace taa::cli {
 

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <iostream>
 
+#include "api/device.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "device.h"
 #include "score/score.h"
 
 namespace taa::cli {

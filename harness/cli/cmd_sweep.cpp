@@ -4,11 +4,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "api/device.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
-#include "device.h"
 #include "sweep/sweep.h"
 
 namespace taa::cli {

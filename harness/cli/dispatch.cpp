@@ -3,14 +3,14 @@
 #include <iostream>
 #include <map>
 
+#include "api/device.h"
+#include "api/device_error.h"
 #include "case/case_error.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "core/output_file.h"
-#include "device.h"
-#include "device_error.h"
 #include "golden/manifest.h"
 #include "scene/scene_error.h"
 #include "script/track.h"

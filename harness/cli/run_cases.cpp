@@ -8,13 +8,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include "api/device.h"
+#include "api/device_error.h"
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
 #include "core/output_file.h"
-#include "device.h"
-#include "device_error.h"
 #include "golden/environment.h"
 #include "run/console.h"
 #include "scene/scene_error.h"

@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "device.h"
-#include "renderer.h"
+#include "api/device.h"
+#include "api/renderer.h"
 #include "scene/scene.h"
 #include "spec/case_spec.h"
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "device.h"
+#include "api/device.h"
 
 namespace taa::golden {
 

@@ -8,10 +8,10 @@
 #include <memory>
 #include <optional>
 
+#include "api/renderer.h"
 #include "case/case_loader.h"
 #include "compare/metrics.h"
 #include "golden/environment.h"
-#include "renderer.h"
 #include "run/golden_check.h"
 #include "run/invariant_run.h"
 #include "run/timing.h"

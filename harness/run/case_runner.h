@@ -9,9 +9,9 @@
 #include <map>
 #include <string>
 
+#include "api/device.h"
 #include "case/case_loader.h"
 #include "core/image.h"
-#include "device.h"
 #include "run/results.h"
 
 namespace taa::run {

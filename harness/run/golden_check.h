@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "api/frame_record.h"
 #include "core/image.h"
-#include "frame_record.h"
 #include "golden/environment.h"
 #include "golden/golden_store.h"
 #include "run/case_runner.h"

@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "api/renderer.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "compare/flip.h"
@@ -14,7 +15,6 @@
 #include "invariants/flicker_meter.h"
 #include "invariants/invariant_support.h"
 #include "invariants/registry.h"
-#include "renderer.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
 #include "user/glsl_compiler.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "device.h"
+#include "api/device.h"
 
 namespace taa::score {
 

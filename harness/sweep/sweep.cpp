@@ -4,13 +4,13 @@
 #include <cmath>
 #include <memory>
 
+#include "api/renderer.h"
 #include "case/case_error.h"
 #include "compare/flip.h"
 #include "compare/metrics.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
 #include "invariants/flicker_meter.h"
-#include "renderer.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "api/device.h"
 #include "case/case_loader.h"
-#include "device.h"
 
 namespace taa::sweep {
 

@@ -2,7 +2,7 @@
 // ImagePass (image_pass.h) after it: a pass before the resolve filters the colour it
 // reads and may read the G-buffer (motion blur); a pass that follows the resolve works on
 // the resolved image with the resolve's own outputs and the scene (adaptive tracing).
-// renderer/post_chain.cpp holds one table of each, and the renderer runs what they built.
+// renderer/frame/post_chain.cpp holds one table of each, and the renderer runs what they built.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "draw_list.h"
+#include "frame/draw_list.h"
 #include "passes/gbuffer.h"
 #include "passes/gbuffer_needs.h"
 #include "passes/resolve_stage.h"

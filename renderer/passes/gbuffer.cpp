@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
+#include "api/device_error.h"
 #include "common/shared.h"
-#include "device_error.h"
 #include "passes/shadow.h"
 #include "spec/case_spec.h"
 #include "vk/barrier.h"

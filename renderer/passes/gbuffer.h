@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "draw_list.h"
-#include "gpu_scene.h"
+#include "frame/draw_list.h"
+#include "frame/gpu_scene.h"
 #include "vk/pipeline.h"
 #include "vk/resources.h"
 

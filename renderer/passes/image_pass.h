@@ -1,7 +1,7 @@
 // The interface of a pass that filters one image into another (sharpen, CAS, FXAA and any
 // pass added after the resolve): it reads `input`'s top-left `size` pixels and writes its
 // output there. The post chain allocates the output and runs the passes a case enables in
-// the order of its table (renderer/post_chain.cpp), so a new one is its shader, its unit
+// the order of its table (renderer/frame/post_chain.cpp), so a new one is its shader, its unit
 // implementing this, and one line in that table.
 #pragma once
 

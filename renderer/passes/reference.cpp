@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "frame_uniforms.h"
+#include "frame/frame_uniforms.h"
 #include "script/jitter.h"
-#include "stereo.h"
+#include "script/stereo.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
 

@@ -5,8 +5,8 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "draw_list.h"
-#include "gpu_scene.h"
+#include "frame/draw_list.h"
+#include "frame/gpu_scene.h"
 #include "passes/gbuffer.h"
 #include "passes/shadow.h"
 #include "passes/still_image.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "draw_list.h"
-#include "gpu_scene.h"
-#include "shadow_cascades.h"
+#include "frame/draw_list.h"
+#include "frame/gpu_scene.h"
+#include "frame/shadow_cascades.h"
 #include "vk/pipeline.h"
 #include "vk/resources.h"
 

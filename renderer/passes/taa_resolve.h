@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/shared.h"
-#include "pass_plan.h"
+#include "frame/pass_plan.h"
 #include "passes/resolve_stage.h"
 #include "script/frame_state.h"
 #include "spec/case_spec.h"

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "passes/tscmaa_support.h"
-#include "stereo.h"
+#include "script/stereo.h"
 #include "vk/barrier.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"

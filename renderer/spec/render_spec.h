@@ -35,8 +35,8 @@ struct RenderSpec {
 
 template <class V>
 void fields(V& v, RenderSpec& s) {
-  v.field("width", s.width, Range<int>{1, 8192}, Meta{"output width in pixels", "renderer/renderer.cpp"});
-  v.field("height", s.height, Range<int>{1, 8192}, Meta{"output height in pixels", "renderer/renderer.cpp"});
+  v.field("width", s.width, Range<int>{1, 8192}, Meta{"output width in pixels", "renderer/frame/renderer.cpp"});
+  v.field("height", s.height, Range<int>{1, 8192}, Meta{"output height in pixels", "renderer/frame/renderer.cpp"});
   v.field("upsample", s.upsample, Range<float>{1.0f, 8.0f},
           Meta{"temporal upsampling: the scene renders at output size / upsample",
                "shaders/taa/current_sample.glsl"});
@@ -76,8 +76,8 @@ struct OutputSpec {
 template <class V>
 void fields(V& v, OutputSpec& s) {
   v.field("frames", s.frames, Range<int>{0, 99999},
-          Meta{"frames written and checked against goldens; empty = the last frame", "renderer/readback.cpp"});
-  v.field("aux", s.aux, Meta{"auxiliary G-buffer images written beside each frame", "renderer/readback.cpp"});
+          Meta{"frames written and checked against goldens; empty = the last frame", "renderer/frame/readback.cpp"});
+  v.field("aux", s.aux, Meta{"auxiliary G-buffer images written beside each frame", "renderer/frame/readback.cpp"});
 }
 
 struct ReferenceSpec {

@@ -73,7 +73,7 @@ void fields(V& v, LightingSpec& s) {
       "cascades", s.cascades, Range<int>{1, 4},
       Meta{"shadow cascades: view-depth slices from the near plane to the scene's far side, split "
            "half logarithmic, half uniform; each a 1024x1024 depth map (needs shadows)",
-           "renderer/shadow_cascades.cpp"});
+           "renderer/frame/shadow_cascades.cpp"});
 }
 
 enum class AlphaMode { Asset, Mask, Blend };

@@ -1,6 +1,6 @@
 // The one place that says what each taa.mode runs: which passes replace or follow the
 // resolve, which path of taa_resolve.comp it takes, and which settings it fixes. Pass
-// planning (renderer/pass_plan.cpp), the renderer, the resolve pass and validation
+// planning (renderer/frame/pass_plan.cpp), the renderer, the resolve pass and validation
 // (harness/case/validate_taa.cpp) ask here instead of testing modes themselves.
 #pragma once
 

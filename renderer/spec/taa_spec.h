@@ -278,7 +278,7 @@ void fields(V& v, TscmaaSpec& s) {
   v.field("eye_separation", s.eye_separation, Range<float>{0.0f, 100.0f},
           Meta{"distance between the eyes in world units; each eye sits half of it along the "
                "camera's right axis",
-               "renderer/stereo.cpp"});
+               "renderer/script/stereo.cpp"});
 }
 
 enum class Sharpen { None, Gradient, Cas };

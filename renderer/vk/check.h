@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "device_error.h"
+#include "api/device_error.h"
 
 namespace taa::vk {
 

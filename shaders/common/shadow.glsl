@@ -1,4 +1,4 @@
-// Directional-light visibility from the cascaded shadow atlas (renderer/shadow_cascades.h):
+// Directional-light visibility from the cascaded shadow atlas (renderer/frame/shadow_cascades.h):
 // the cascade whose view-depth slice holds the point, the point pushed along its normal by
 // about a texel and a half, then 3x3 taps one texel apart through a bilinear comparison
 // sampler (each tap the lit share of a 2x2 footprint: a 4x4-texel PCF kernel). Past the last

@@ -77,7 +77,7 @@ TAA_BLOCK(FrameUniforms) {
   vec4 ambient;               // rgb; w: shininess
   vec4 renderSize;            // width, height, 1/width, 1/height
   vec4 jitter;                // xy: this frame's jitter in pixels (image moves by it); zw: 0
-  // Cascaded shadows (renderer/shadow_cascades.h); all zero when lighting.shadows is off.
+  // Cascaded shadows (renderer/frame/shadow_cascades.h); all zero when lighting.shadows is off.
   mat4 shadowMatrix[SHADOW_MAX_CASCADES];  // world -> atlas uv (xy) and biased light depth (z)
   vec4 shadowSplits;        // view depth (along shadowForward) where each cascade ends
   vec4 shadowNormalOffset;  // per cascade: world distance a receiver moves along its normal

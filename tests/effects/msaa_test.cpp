@@ -12,9 +12,9 @@
 #include <fstream>
 #include <string>
 
+#include "api/device_error.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
-#include "device_error.h"
 #include "support/effects.h"
 #include "support/process.h"
 #include "vk/context.h"

@@ -1,4 +1,4 @@
-// The harness sees the renderer through renderer/device.h, renderer.h and frame_record.h:
+// The harness sees the renderer through renderer/api/device.h, renderer.h and frame_record.h:
 // no file under harness/ may include a Vulkan header or the renderer's Vulkan layer.
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ TEST(Layering, HarnessIncludesNoVulkanHeader) {
     for (int n = 1; std::getline(in, line); ++n)
       EXPECT_FALSE(std::regex_search(line, vulkanInclude))
           << entry.path().string() << ":" << n << ": " << line
-          << "\n  the harness reaches the GPU through renderer/device.h; move Vulkan code into "
+          << "\n  the harness reaches the GPU through renderer/api/device.h; move Vulkan code into "
              "renderer/";
   }
   EXPECT_GT(files, 50);  // the walk found the harness

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "api/renderer.h"
 #include "case/case_loader.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "support/gpu.h"
 

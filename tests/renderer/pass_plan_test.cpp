@@ -1,7 +1,7 @@
 // The G-buffer a case gets is the union of what its passes say they read: the resolve's
 // needs follow its settings, the plan adds the case's own outputs, and a previous-frame
 // copy brings the target it copies. A rendered case allocates exactly those targets.
-#include "pass_plan.h"
+#include "frame/pass_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "api/renderer.h"
 #include "passes/taa_resolve.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "support/gpu.h"
 

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <regex>
 
+#include "api/renderer.h"
 #include "case/case_error.h"
 #include "passes/taa_resolve.h"
-#include "renderer.h"
 #include "scene/build_scene.h"
 #include "support/gpu.h"
 #include "support/process.h"

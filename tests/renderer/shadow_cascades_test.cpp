@@ -1,7 +1,7 @@
 // The cascade fit of lighting.shadows without a GPU: the split scheme, the cascades'
 // reach, and the properties that keep shadow edges still in the map while the camera
 // moves (a radius that does not change as the camera turns, centres on whole texels).
-#include "shadow_cascades.h"
+#include "frame/shadow_cascades.h"
 
 #include <gtest/gtest.h>
 

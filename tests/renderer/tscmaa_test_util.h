@@ -85,7 +85,7 @@ inline uint32_t groupsFor(uint32_t count) {
 
 #include <algorithm>
 
-#include "renderer.h"
+#include "api/renderer.h"
 #include "scene/build_scene.h"
 
 namespace taa::tscmaatest {

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 
-#include "draw_list.h"
+#include "frame/draw_list.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/build_scene.h"
 #include "script/frame_state.h"

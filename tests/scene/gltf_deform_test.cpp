@@ -5,7 +5,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "draw_list.h"
+#include "frame/draw_list.h"
 #include "invariants/invariant_support.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/build_scene.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "api/frame_record.h"
+#include "api/renderer.h"
 #include "core/image.h"
-#include "frame_record.h"
-#include "renderer.h"
 #include "spec/case_spec.h"
 #include "support/gpu.h"
 

@@ -9,7 +9,7 @@
 
 #include "case/case_loader.h"
 #include "core/image_io.h"
-#include "readback.h"
+#include "frame/readback.h"
 #include "scene/build_scene.h"
 #include "vk/transfer.h"
 

@@ -4,10 +4,10 @@
 
 #include <string>
 
+#include "api/device.h"
+#include "api/frame_record.h"
+#include "api/renderer.h"
 #include "core/image.h"
-#include "device.h"
-#include "frame_record.h"
-#include "renderer.h"
 #include "spec/case_spec.h"
 #include "vk/context.h"
 #include "vk/resources.h"

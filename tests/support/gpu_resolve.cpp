@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "core/image_io.h"
-#include "pass_plan.h"
+#include "frame/pass_plan.h"
 #include "passes/taa_resolve.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"

@@ -16,7 +16,7 @@ const std::vector<Exclusion>& exclusions() {
        "judges the rendered frames (harness/golden, harness/compare, harness/invariants)"},
       {"report.*", "what the HTML report shows (harness/run); renders nothing of the case"},
       {"output.*",
-       "which frames and buffers are written (renderer/readback.cpp); the audit reads every "
+       "which frames and buffers are written (renderer/frame/readback.cpp); the audit reads every "
        "frame's colour anyway"},
       {"reference.samples",
        "the supersampled ground truth's sample count: the reference image, not "

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "frame_record.h"
-#include "gpu_scene.h"
+#include "api/frame_record.h"
+#include "frame/gpu_scene.h"
 #include "passes/adaptive/segmentation.h"
 #include "passes/adaptive/trace.h"
 #include "passes/frame_pass.h"

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/shared.h"
-#include "draw_list.h"
-#include "gpu_scene.h"
+#include "frame/draw_list.h"
+#include "frame/gpu_scene.h"
 #include "script/frame_state.h"
 #include "spec/case_spec.h"
 #include "vk/pipeline.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/shared.h"
-#include "draw_list.h"
+#include "frame/draw_list.h"
 #include "scene/bvh.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-#include "post_chain.h"
+#include "frame/post_chain.h"
 
 #include <stdexcept>
 
@@ -9,7 +9,7 @@
 #include "passes/motion_blur.h"
 #include "passes/post_filter.h"
 #include "passes/sharpen.h"
-#include "stereo.h"
+#include "script/stereo.h"
 
 namespace taa {
 

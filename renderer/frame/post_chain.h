@@ -11,12 +11,12 @@
 #include <utility>
 #include <vector>
 
-#include "draw_list.h"
-#include "gpu_scene.h"
-#include "pass_plan.h"
+#include "api/renderer.h"
+#include "frame/draw_list.h"
+#include "frame/gpu_scene.h"
+#include "frame/pass_plan.h"
 #include "passes/frame_pass.h"
 #include "passes/resolve_stage.h"
-#include "renderer.h"
 #include "spec/case_spec.h"
 #include "vk/resources.h"
 

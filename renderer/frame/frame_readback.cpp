@@ -1,10 +1,10 @@
-#include "frame_readback.h"
+#include "frame/frame_readback.h"
 
 #include <algorithm>
 #include <cstring>
 
 #include "core/image_io.h"
-#include "readback.h"
+#include "frame/readback.h"
 #include "vk/barrier.h"
 
 namespace taa {

@@ -1,4 +1,4 @@
-#include "prev_gbuffer.h"
+#include "frame/prev_gbuffer.h"
 
 #include "vk/barrier.h"
 

@@ -1,4 +1,4 @@
-#include "pass_plan.h"
+#include "frame/pass_plan.h"
 
 #include <algorithm>
 

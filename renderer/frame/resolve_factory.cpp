@@ -1,4 +1,4 @@
-#include "resolve_factory.h"
+#include "frame/resolve_factory.h"
 
 #include "passes/taa_resolve.h"
 #include "passes/tscmaa.h"

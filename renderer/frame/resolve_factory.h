@@ -4,9 +4,9 @@
 
 #include <memory>
 
-#include "pass_plan.h"
+#include "api/renderer.h"
+#include "frame/pass_plan.h"
 #include "passes/resolve_stage.h"
-#include "renderer.h"
 #include "spec/case_spec.h"
 
 namespace taa {

@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "frame_record.h"
+#include "api/frame_record.h"
+#include "api/renderer.h"
 #include "passes/gbuffer.h"
 #include "passes/reference.h"
 #include "passes/resolve_stage.h"
-#include "renderer.h"
 #include "vk/staging_ring.h"
 
 namespace taa {

@@ -1,4 +1,4 @@
-#include "readback.h"
+#include "frame/readback.h"
 
 #include <cstring>
 #include <stdexcept>

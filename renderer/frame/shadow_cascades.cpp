@@ -1,4 +1,4 @@
-#include "shadow_cascades.h"
+#include "frame/shadow_cascades.h"
 
 #include <algorithm>
 #include <cmath>

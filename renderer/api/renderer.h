@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "frame_record.h"
+#include "api/frame_record.h"
 #include "scene/scene.h"
 #include "spec/case_spec.h"
 

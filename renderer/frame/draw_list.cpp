@@ -1,4 +1,4 @@
-#include "draw_list.h"
+#include "frame/draw_list.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>

@@ -1,6 +1,6 @@
-#include "device.h"
+#include "api/device.h"
 
-#include "renderer.h"
+#include "api/renderer.h"
 #include "vk/context.h"
 #include "vk/pipeline.h"
 #include "vk/shader_cache.h"

@@ -1,4 +1,4 @@
-#include "stereo.h"
+#include "script/stereo.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

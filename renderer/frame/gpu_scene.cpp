@@ -1,10 +1,10 @@
-#include "gpu_scene.h"
+#include "frame/gpu_scene.h"
 
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
-#include "draw_list.h"
+#include "frame/draw_list.h"
 #include "vk/context.h"
 #include "vk/transfer.h"
 

@@ -1,4 +1,4 @@
-#include "frame_uniforms.h"
+#include "frame/frame_uniforms.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>

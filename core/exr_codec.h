@@ -6,15 +6,16 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
 #include "core/image.h"
 
 namespace taa::exr {
 
 // A file OpenEXR cannot decode, or an image it cannot encode; what() is the reason without the
 // file name (the caller adds it).
-class ExrError : public std::runtime_error {
+class ExrError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 bool hasExrMagic(std::string_view bytes);

@@ -20,7 +20,10 @@ namespace taa {
 namespace fs = std::filesystem;
 
 ImageIoError::ImageIoError(const fs::path& path, const std::string& message)
-    : std::runtime_error(path.string() + ": " + message), path_(path) {}
+    : InputError(path.string() + ": " + message), path_(path) {}
+
+ImageWriteError::ImageWriteError(const fs::path& path, const std::string& message)
+    : EnvironmentError(path.string() + ": " + message) {}
 
 uint16_t floatToHalfBits(float value) {
   const uint32_t f = std::bit_cast<uint32_t>(value);

@@ -17,13 +17,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/errors.h"
 #include "core/image.h"
 
 namespace taa {
 
-// Every failure to read or write an image file; what() names the file and carries libpng's or
+// An image file that cannot be read (missing, unreadable, not PNG or OpenEXR, damaged) or an
+// image that no file can hold: bad input. what() names the file and carries libpng's or
 // OpenEXR's own message.
-class ImageIoError : public std::runtime_error {
+class ImageIoError : public InputError {
  public:
   ImageIoError(const std::filesystem::path& path, const std::string& message);
   const std::filesystem::path& path() const { return path_; }
@@ -32,11 +34,11 @@ class ImageIoError : public std::runtime_error {
   std::filesystem::path path_;
 };
 
-// A write that failed in the file system (full disk, read-only or missing folder): an
-// environment problem, where the other ImageIoErrors may be bad input.
-class ImageWriteError : public ImageIoError {
+// A write that failed in the file system (full disk, read-only or missing folder), or an
+// encoder that failed: the environment, not the input. what() names the file.
+class ImageWriteError : public EnvironmentError {
  public:
-  using ImageIoError::ImageIoError;
+  ImageWriteError(const std::filesystem::path& path, const std::string& message);
 };
 
 // Writes every channel (1 to 4; named R, G, B, A in that order) as half-float OpenEXR with

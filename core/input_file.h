@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa {
 
 // Size limits, documented in docs/trust.md.
@@ -21,9 +23,9 @@ inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(1)
                                                << 30;  // 1 GiB (.gltf, .glb, .bin, images)
 
 // Refusal of an input file. what() starts with the file's path and ends with the fix.
-class InputFileError : public std::runtime_error {
+class InputFileError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // The real path of `file` (symbolic links resolved) after checking that it lies inside the

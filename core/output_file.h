@@ -9,13 +9,15 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
+
 namespace taa {
 
 // An output could not be written. what() names the file and the system's reason.
-class OutputError : public std::runtime_error {
+class OutputError : public EnvironmentError {
  public:
   OutputError(const std::filesystem::path& file, const std::string& why)
-      : std::runtime_error("cannot write " + file.string() + ": " + why) {}
+      : EnvironmentError("cannot write " + file.string() + ": " + why) {}
 };
 
 // Flushes a file's data (or a folder's entries) to disk; throws OutputError when the

@@ -7,15 +7,16 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
 #include "core/image.h"
 
 namespace taa::png {
 
 // A file that is not a PNG libpng can decode, or an image it cannot encode; what() is libpng's
 // reason without the file name (the caller adds it).
-class PngError : public std::runtime_error {
+class PngError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // zlib level of every PNG the harness writes. Measured on rendered frames and FLIP heatmaps

@@ -14,7 +14,13 @@ std::string joinLines(const std::vector<std::string>& lines) {
 }  // namespace
 
 CaseError::CaseError(std::vector<std::string> problems)
-    : std::runtime_error(joinLines(problems)), problems_(std::move(problems)) {}
+    : InputError(joinLines(problems)), problems_(std::move(problems)) {}
+
+std::string CaseError::report(const std::string&) const {
+  std::vector<std::string> lines;
+  for (const auto& p : problems_) lines.push_back("error: " + p);
+  return joinLines(lines);
+}
 
 int editDistance(const std::string& a, const std::string& b) {
   std::vector<int> row(b.size() + 1);

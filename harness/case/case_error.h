@@ -1,17 +1,19 @@
-// Bad input: every problem names the file, the key path and the fix. The CLI turns
-// a CaseError into exit code 2.
+// Bad input: every problem names the file, the key path and the fix. An InputError
+// (exit code 2) that prints one "error:" line per problem.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa::cases {
 
-class CaseError : public std::runtime_error {
+class CaseError : public InputError {
  public:
   explicit CaseError(std::vector<std::string> problems);
   const std::vector<std::string>& problems() const { return problems_; }
+  std::string report(const std::string& command) const override;
 
  private:
   std::vector<std::string> problems_;

@@ -142,6 +142,8 @@ int cmdCompare(const Args& args) {
       writePngLinear8(a.value("--heatmap"), compare::heatmap(out.flipMap));
     } catch (const ImageIoError& e) {
       throw UsageError(std::string("--heatmap: ") + e.what());
+    } catch (const ImageWriteError& e) {  // a path given on the command line: the argument's
+      throw UsageError(std::string("--heatmap: ") + e.what());
     }
   }
 

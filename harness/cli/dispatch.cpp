@@ -4,16 +4,10 @@
 #include <map>
 
 #include "api/device.h"
-#include "api/device_error.h"
-#include "case/case_error.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "core/image_io.h"
-#include "core/output_file.h"
-#include "golden/manifest.h"
-#include "scene/scene_error.h"
-#include "script/track.h"
+#include "core/errors.h"
 
 namespace taa::cli {
 
@@ -69,45 +63,20 @@ int dispatch(int argc, char** argv) {
     usage(std::cerr);
     return kBadInput;
   }
+  // Every error is of one of two kinds (core/errors.h), and the kind is the exit code.
   try {
     return it->second.run(Args(argv + 2, argv + argc));
-  } catch (const cases::CaseError& e) {
-    for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
-    return kBadInput;
   } catch (const HelpRequested& e) {
     std::cout << "usage: " << e.what() << "\n";
     return kPass;
-  } catch (const UsageError& e) {
-    std::cerr << "taa-harness " << name << ": " << e.what() << "\n";
-    return kBadInput;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const script::TrackError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const golden::GoldenError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const UnsupportedSettingError& e) {
-    std::cerr << "error: " << e.what() << "\n";
+  } catch (const InputError& e) {
+    std::cerr << e.report(name) << "\n";
     return kBadInput;
   } catch (const EnvironmentError& e) {
-    std::cerr << "environment: " << e.what() << "\n";
-    return kEnvironment;
-  } catch (const ImageWriteError& e) {
-    std::cerr << "environment: " << e.what() << "\n";
-    return kEnvironment;
-  } catch (const OutputError& e) {
-    std::cerr << "environment: " << e.what() << "\n";
-    return kEnvironment;
-  } catch (const ImageIoError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kEnvironment;
-  } catch (const DeviceError& e) {
-    std::cerr << "vulkan: " << e.what() << "\n";
+    std::cerr << e.report(name) << "\n";
     return kEnvironment;
   } catch (const std::exception& e) {
+    // Of neither kind: a file-system call that threw, memory, or a bug. Not the input's fault.
     std::cerr << "error: " << e.what() << "\n";
     return kEnvironment;
   }

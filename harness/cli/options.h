@@ -8,11 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa::cli {
 
-class UsageError : public std::runtime_error {
+// A command line that is wrong: bad input, printed after the command's name.
+class UsageError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
+  std::string report(const std::string& command) const override {
+    return "taa-harness " + command + ": " + what();
+  }
 };
 
 // --help or -h anywhere: the command's usage goes to stdout and the exit code is 0.

@@ -9,15 +9,12 @@
 #include <iostream>
 
 #include "api/device.h"
-#include "api/device_error.h"
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "core/image_io.h"
-#include "core/output_file.h"
+#include "core/errors.h"
 #include "golden/environment.h"
 #include "run/console.h"
-#include "scene/scene_error.h"
 
 namespace taa::cli {
 
@@ -60,6 +57,14 @@ std::function<void(int, int)> terminalProgress(const std::string& name, size_t i
               << "\033[K" << std::flush;
     if (f + 1 == frames) std::cerr << "\r\033[K" << std::flush;
   };
+}
+
+// A case that threw: recorded with its error, so the batch goes on to the next.
+void errorResult(run::CaseResult& result, const cases::LoadedCase& loaded, const std::exception& e) {
+  result.name = loaded.spec.name;
+  result.file = loaded.spec.file.string();
+  result.status = run::CaseStatus::Error;
+  result.message = e.what();
 }
 
 }  // namespace
@@ -136,37 +141,16 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
                           std::to_string(device.validationMessages() - before) +
                           " validation message(s) (see stderr)";
       }
-    } catch (const scene::SceneError& e) {
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
+    } catch (const InputError& e) {
+      // The case must change (a bad scene or image, a setting this device lacks): exit 2.
+      errorResult(result, loaded, e);
       badInput = true;
-    } catch (const UnsupportedSettingError& e) {
-      // A setting this device lacks (render.msaa): the case must change, as for a bad scene.
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      badInput = true;
-    } catch (const ImageWriteError&) {
-      throw;  // the disk, not the case: exit 3, not a regression
-    } catch (const OutputError&) {
-      throw;
+    } catch (const EnvironmentError&) {
+      throw;  // the machine or the disk, not the case: exit 3, not a regression
     } catch (const fs::filesystem_error&) {
       throw;
-    } catch (const ImageIoError& e) {
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      regression = true;
     } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const EnvironmentError*>(&e) || dynamic_cast<const DeviceError*>(&e)) throw;
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
+      errorResult(result, loaded, e);
       regression = true;
     }
     regression |= run::caseFailed(result);

@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "compare/flip.h"
+#include "core/errors.h"
 #include "core/image.h"
 
 namespace taa::compare {
 
 // A file that cannot be read or a pair that cannot be compared; what() names the file and the fix.
-class CompareInputError : public std::runtime_error {
+class CompareInputError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct Bound {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "golden/environment.h"
 
 namespace taa::golden {
@@ -15,9 +16,9 @@ namespace taa::golden {
 // A golden set that cannot be trusted: a manifest that is missing or does not parse, an EXR
 // that is missing or whose pixels do not match the manifest. The message names the file and
 // how to restore it.
-class GoldenError : public std::runtime_error {
+class GoldenError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // "git checkout -- goldens/NAME": how to restore a case's golden folder `dir` from git (the

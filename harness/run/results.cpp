@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "compare/metric_table.h"
+#include "core/errors.h"
 
 namespace taa::run {
 
@@ -38,7 +39,8 @@ template <class E>
 E fromString(const std::string& text, std::initializer_list<E> values) {
   for (E v : values)
     if (text == toString(v)) return v;
-  throw std::runtime_error("results.json: unknown status '" + text + "'");
+  throw InputError("results.json: unknown status '" + text +
+                   "'; run the cases again to write a new one");
 }
 
 // JSON has no infinities: PSNR of identical images (+inf) and errors involving

@@ -181,8 +181,7 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
     co.root = fs::absolute(o.shader).parent_path();
     const auto compiled = user::compileComputeShader(fs::absolute(o.shader), co);
     user::reflectUserInterface(compiled.spirv, o.shader.string());
-  } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const OutputError*>(&e)) throw;
+  } catch (const InputError& e) {
     throw cases::CaseError({o.shader.string() + ": does not compile:\n" + e.what()});
   }
   std::vector<fs::path> files;

@@ -1,11 +1,16 @@
 #include "api/device.h"
 
+#include "api/device_error.h"
 #include "api/renderer.h"
 #include "vk/context.h"
 #include "vk/pipeline.h"
 #include "vk/shader_cache.h"
 
 namespace taa {
+
+std::string DeviceError::report(const std::string&) const {
+  return std::string("vulkan: ") + what();
+}
 
 Device::Device(const DeviceOptions& options) {
   vk::ContextOptions co;

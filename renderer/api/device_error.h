@@ -1,31 +1,27 @@
-// The renderer's errors as the harness sees them, without Vulkan headers: the CLI maps
-// EnvironmentError to exit code 3 (nothing to fix in the case) and DeviceError (a GPU call
-// failed) likewise. vk/check.h derives its Vulkan-specific error from DeviceError.
+// The renderer's errors as the harness sees them, without Vulkan headers, each of one of
+// core/errors.h's two kinds: a setting the device lacks is bad input (exit 2), a failed GPU
+// call the environment (exit 3). vk/check.h derives its Vulkan-specific error from DeviceError;
+// EnvironmentError (no device, missing shaders, a missing feature) is core/errors.h's own.
 #pragma once
 
-#include <stdexcept>
+#include <string>
+
+#include "core/errors.h"
 
 namespace taa {
 
-// The environment cannot run the renderer (no device, missing shaders, missing feature);
-// the message says what to install.
-class EnvironmentError : public std::runtime_error {
+// The case asks for something this device or renderer cannot do (say, a sample count the
+// device lacks): the case has to change. The message names the key, what is offered and the fix.
+class UnsupportedSettingError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
-};
-
-// The case asks for something this device cannot do (say, a sample count it lacks): the
-// case has to change, so the CLI maps it to exit code 2 like other bad input. The message
-// names the key, what the device offers and the fix.
-class UnsupportedSettingError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // A call into the GPU API failed; the message carries the call, its result, file and line.
-class DeviceError : public std::runtime_error {
+class DeviceError : public EnvironmentError {
  public:
-  using std::runtime_error::runtime_error;
+  using EnvironmentError::EnvironmentError;
+  std::string report(const std::string& command) const override;
 };
 
 }  // namespace taa

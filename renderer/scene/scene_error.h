@@ -1,19 +1,21 @@
 // Bad scene input (a glTF file that cannot be read, refers outside its folder or
 // uses something unsupported). The message names the file, the problem and the
-// fix; the CLI maps a SceneError to exit code 2 (bad input).
+// fix; an InputError (exit code 2).
 #pragma once
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 
+#include "core/errors.h"
+
 namespace taa::scene {
 
-class SceneError : public std::runtime_error {
+class SceneError : public InputError {
  public:
-  explicit SceneError(const std::string& message) : std::runtime_error(message) {}
+  explicit SceneError(const std::string& message) : InputError(message) {}
   SceneError(const std::filesystem::path& file, const std::string& problem)
-      : std::runtime_error(file.string() + ": " + problem) {}
+      : InputError(file.string() + ": " + problem) {}
 };
 
 }  // namespace taa::scene

@@ -11,13 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa::script {
 
 // A track that cannot be replayed. The message names the file and the line, frame
-// or key, and the fix; the case loader reports it as a case error (exit code 2).
-class TrackError : public std::runtime_error {
+// or key, and the fix; an InputError (exit code 2).
+class TrackError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // What a track drives: the allowed columns and keys differ (a lens for the camera,

@@ -12,14 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa::user {
 
-// The shader does not compile, or names a file it may not read. what() is glslang's
-// message with the user's file and line first ("my.comp:12: 'x' : undeclared identifier"),
-// or the file and the reason, and the fix.
-class ShaderCompileError : public std::runtime_error {
+// The shader does not compile, names a file it may not read, or breaks taa_user.h's contract
+// (user_interface.h): bad input. what() is glslang's message with the user's file and line
+// first ("my.comp:12: 'x' : undeclared identifier"), or the file and the reason, and the fix.
+class ShaderCompileError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct CompileOptions {

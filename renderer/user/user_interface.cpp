@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "user/glsl_compiler.h"
 #include "vk/spirv_reflect.h"
 
 namespace taa::user {
@@ -81,7 +82,7 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
   auto has = [&](uint32_t b) { return si.find(0, b) != nullptr; };
   UserInterface u;
   if (!has(kUserOutput))
-    throw std::runtime_error(
+    throw ShaderCompileError(
         name + " never writes taa_output (binding 10); a resolve must imageStore its result there");
   for (const ResolveInputInfo& i : kResolveInputs)
     if (i.userBinding >= 0 && has(uint32_t(i.userBinding))) u.reads |= {i.input};
@@ -94,7 +95,7 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
   for (size_t i = 5; i < w.size();) {
     const uint32_t count = w[i] >> 16, opcode = w[i] & 0xffffu;
     if (count == 0 || i + count > w.size())
-      throw std::runtime_error("SPIR-V of " + name + " is truncated");
+      throw ShaderCompileError("SPIR-V of " + name + " is truncated");
     const std::vector<uint32_t> ops(w.begin() + long(i) + 1, w.begin() + long(i + count));
     if (opcode == kUserOpName && ops.size() >= 2)
       names[ops[0]] = userOperandString(w, i + 2, i + count);
@@ -121,7 +122,7 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
     if (sid == specIds.end()) continue;  // a constant derived from others, not settable
     const auto n = names.find(id);
     if (n == names.end() || n->second.empty())
-      throw std::runtime_error(
+      throw ShaderCompileError(
           name + ": specialization constant " + std::to_string(sid->second) +
           " has no name; declare it as `layout(constant_id = N) const T name = ...;`");
     const auto& ops = defs[id];
@@ -153,7 +154,7 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
                    out = k ? kUserHistory1Out : kUserHistory0Out;
     if (!has(out)) {
       if (has(in))
-        throw std::runtime_error(name + " reads history " + std::to_string(k) +
+        throw ShaderCompileError(name + " reads history " + std::to_string(k) +
                                  " but never writes it; define TAA_HISTORY" + std::to_string(k) +
                                  "_FORMAT and imageStore taa_history" + std::to_string(k) + "_out");
       continue;
@@ -165,7 +166,7 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
       const auto& image = ptr.size() >= 3 ? defs[ptr[2]] : std::vector<uint32_t>{};
       const VkFormat f = image.size() >= 8 ? userHistoryFormat(image[7]) : VK_FORMAT_UNDEFINED;
       if (f == VK_FORMAT_UNDEFINED)
-        throw std::runtime_error(
+        throw ShaderCompileError(
             name + ": history " + std::to_string(k) +
             " has an unsupported format; use rgba16f, rgba32f, rg16f, rg32f, r16f or r32f");
       u.history[k] = f;

@@ -45,7 +45,7 @@ struct UserInterface {
   const UserParam* param(const std::string& name) const;
 };
 
-// Throws std::runtime_error naming `name` when the shader breaks taa_user.h's contract
+// Throws ShaderCompileError naming `name` when the shader breaks taa_user.h's contract
 // (no output image, a history read without its write, an unsupported history format,
 // an unnamed specialization constant).
 UserInterface reflectUserInterface(const std::vector<uint32_t>& spirv, const std::string& name);

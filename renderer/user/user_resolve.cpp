@@ -99,7 +99,7 @@ UserShader loadUserShader(const spec::CaseSpec& spec) {
   out.fromCache = c.fromCache;
   try {
     out.interface = user::reflectUserInterface(c.spirv, file.string());
-  } catch (const std::runtime_error& e) {
+  } catch (const InputError& e) {  // the shader breaks taa_user.h's contract
     throw user::ShaderCompileError(std::string(e.what()) + " (see docs/user-taa.md)");
   }
   out.spirv = std::move(c.spirv);

@@ -137,7 +137,7 @@ void createLayouts(VkDevice device, const ShaderInterface& shader, const std::st
   std::vector<VkDescriptorSetLayoutBinding> b;
   for (const auto& r : shader.bindings) {
     if (r.set != 0)
-      throw std::runtime_error(name + " declares descriptor set " + std::to_string(r.set) +
+      throw ShaderInterfaceError(name + " declares descriptor set " + std::to_string(r.set) +
                                "; pipelines push one set, set 0");
     b.push_back({r.binding, r.type, r.count, r.stages, nullptr});
   }
@@ -174,7 +174,7 @@ Pipeline createComputePipelineFromSpirv(Context& ctx, const std::string& shader,
   VkDevice device = ctx.device();
   ShaderInterface interface = reflectSpirv(words, shader);
   if (interface.stages != VK_SHADER_STAGE_COMPUTE_BIT)
-    throw std::runtime_error(shader + " is not a compute shader");
+    throw ShaderInterfaceError(shader + " is not a compute shader");
   specializeLocalSize(interface, spec);
   VkDescriptorSetLayout setLayout;
   VkPipelineLayout layout;

@@ -48,7 +48,7 @@ struct Module {
   std::vector<std::array<uint32_t, 3>> variables;  // pointer type, id, storage class
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("SPIR-V of " + name + ": " + what);
+    throw ShaderInterfaceError("SPIR-V of " + name + ": " + what);
   }
   const Instruction& def(uint32_t id) const {
     const auto it = defs.find(id);
@@ -308,7 +308,7 @@ ShaderInterface mergeInterfaces(const ShaderInterface& a, const ShaderInterface&
       continue;
     }
     if (same->type != binding.type || same->count != binding.count)
-      throw std::runtime_error(name + ": set " + std::to_string(binding.set) + " binding " +
+      throw ShaderInterfaceError(name + ": set " + std::to_string(binding.set) + " binding " +
                                std::to_string(binding.binding) + " is " +
                                descriptorTypeName(same->type) + " in one stage and " +
                                descriptorTypeName(binding.type) + " in another");

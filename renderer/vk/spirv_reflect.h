@@ -11,7 +11,18 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace taa::vk {
+
+// A module the layer cannot build a pipeline from: malformed SPIR-V, a resource it cannot
+// bind, a set other than 0, a stage that is not compute where one is, stages that disagree.
+// The shaders the harness ships are checked by its tests, so only a user's shader
+// (taa.shader) meets it: bad input, naming the shader.
+class ShaderInterfaceError : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 struct ReflectedBinding {
   uint32_t set = 0;
@@ -34,7 +45,7 @@ struct ShaderInterface {
   const ReflectedBinding* find(uint32_t set, uint32_t binding) const;
 };
 
-// Parses one module. Throws std::runtime_error naming `name` on a malformed module or on
+// Parses one module. Throws ShaderInterfaceError naming `name` on a malformed module or on
 // a resource the layer cannot bind (runtime arrays, more than one entry point).
 ShaderInterface reflectSpirv(const std::vector<uint32_t>& words, const std::string& name);
 

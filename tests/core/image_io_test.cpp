@@ -209,15 +209,16 @@ TEST(ImageIoAtomic, FailedWriteLeavesPreviousFileAndNoTemporary) {
   // fully written: the temporary must be cleaned up and the directory left alone.
   const fs::path squatted = dir / "squatted.exr";
   fs::create_directories(squatted / "keep");
-  EXPECT_THROW(taa::writeExr(squatted, Image(2, 2, 4, 1.0f)), taa::ImageIoError);
+  // A file-system failure is the environment's (exit 3), not the image's.
+  EXPECT_THROW(taa::writeExr(squatted, Image(2, 2, 4, 1.0f)), taa::ImageWriteError);
   EXPECT_TRUE(fs::is_directory(squatted / "keep"));
 
   // An unwritable path (a parent that is a regular file) fails for root too.
   std::ofstream(dir / "plain.txt") << "x";
   try {
     taa::writePng(dir / "plain.txt" / "sub.png", Image(2, 2, 3));
-    FAIL() << "expected ImageIoError";
-  } catch (const taa::ImageIoError& e) {
+    FAIL() << "expected ImageWriteError";
+  } catch (const taa::ImageWriteError& e) {
     EXPECT_NE(std::string(e.what()).find("sub.png"), std::string::npos) << e.what();
   }
   EXPECT_EQ(fileBytes(target), before);
@@ -231,7 +232,7 @@ TEST(ImageIoAtomic, ReadOnlyFolderLeavesPreviousFile) {
   taa::writePng(target, Image(2, 2, 3, 0.25f));
   const std::string before = fileBytes(target);
   fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
-  EXPECT_THROW(taa::writePng(target, Image(2, 2, 3, 4.0f)), taa::ImageIoError);
+  EXPECT_THROW(taa::writePng(target, Image(2, 2, 3, 4.0f)), taa::ImageWriteError);
   fs::permissions(dir, fs::perms::owner_all);
   EXPECT_EQ(fileBytes(target), before);
   EXPECT_EQ(entriesIn(dir), 1u);

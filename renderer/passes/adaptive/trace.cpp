@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "api/device_error.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "vk/check.h"
 #include "vk/context.h"
@@ -77,9 +78,10 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
     auto it = slots.find(key);
     if (it == slots.end()) {
       if (views_.size() == TRACE_MAX_TEXTURES)
-        throw std::runtime_error("adaptive tracing binds at most " +
-                                 std::to_string(TRACE_MAX_TEXTURES) +
-                                 " textures; this scene's materials use more");
+        throw UnsupportedSettingError(
+            "taa.mode: adaptive tracing binds at most " + std::to_string(TRACE_MAX_TEXTURES) +
+            " textures and this scene's materials use more; use another taa.mode or a scene "
+            "with fewer textured materials");
       it = slots.emplace(key, uint32_t(views_.size())).first;
       views_.push_back(key.first);
       samplers_.push_back(key.second);

@@ -41,7 +41,7 @@ int cmdRender(const Args& args) {
   createOutputDirectory(dir);
 
   RenderOptions options;
-  options.reference = a.has("--reference");
+  if (a.has("--reference")) options.captures = {Capture::Reference};
   RunContext run(spec, a.value("--device"), a.has("--validate"), options);
   std::string log;
   for (const auto& line : run.renderer().log()) {

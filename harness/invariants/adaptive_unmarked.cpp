@@ -1,10 +1,9 @@
 // adaptive_unmarked: adaptive ray tracing changes only the pixels its segmentation
-// marks. Every frame, each pixel the mask leaves unmarked (ADAPTIVE_MASK_NONE) must
+// marks. Every frame, each pixel the mask leaves unmarked (mask::kAdaptiveNone) must
 // equal the full resolve's output for that frame bit for bit: neither the trace nor
 // the masked FXAA may touch it. Traced and FXAA'd pixels are counted for the report.
 #include <cstring>
 
-#include "common/shared.h"
 #include "invariants/invariant_support.h"
 #include "spec/taa_modes.h"
 
@@ -18,29 +17,22 @@ class AdaptiveUnmarked : public Invariant {
  public:
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    for (auto [img, what] :
-         {std::pair{f.resolved, "taa_resolve"}, std::pair{f.segmentation, "segmentation"}}) {
-      if (auto why = requireImage(f, img, what, 1); !why.empty()) {
-        error_ = why;
-        return;
-      }
-    }
-    if (auto why = requireImage(f, f.output, "output", 3); !why.empty()) {
-      error_ = why;
-      return;
-    }
+    error_ = requireCaptures(f, 3, {{Capture::Resolved, 3}, {Capture::Segmentation, 1}});
+    if (!error_.empty()) return;
+    const Image &resolved = *f.capture(Capture::Resolved),
+                &segmentation = *f.capture(Capture::Segmentation);
     ++frames_;
     for (int y = 0; y < f.output->height; ++y)
       for (int x = 0; x < f.output->width; ++x) {
-        const auto mark = uint32_t(f.segmentation->at(x, y, 0));
+        const auto mark = uint32_t(segmentation.at(x, y, 0));
         ++pixels_;
-        if (mark != ADAPTIVE_MASK_NONE) {
-          ++(mark == ADAPTIVE_MASK_FXAA ? fxaa_ : traced_);
+        if (mark != mask::kAdaptiveNone) {
+          ++(mark == mask::kAdaptiveFxaa ? fxaa_ : traced_);
           continue;
         }
         bool same = true;
         for (int c = 0; c < 3; ++c) {
-          const float a = f.output->at(x, y, c), b = f.resolved->at(x, y, c);
+          const float a = f.output->at(x, y, c), b = resolved.at(x, y, c);
           same = same && std::memcmp(&a, &b, sizeof(float)) == 0;
         }
         if (!same && differing_++ == 0)
@@ -101,7 +93,11 @@ std::unique_ptr<Invariant> makeAdaptiveUnmarked(const CheckedCase&) {
 }  // namespace
 
 const InvariantInfo adaptive_unmarked_invariant = {
-    "adaptive_unmarked",          {.adaptive = true},  Frames::FromFrame, nullptr,
-    adaptiveUnmarkedInapplicable, makeAdaptiveUnmarked};
+    "adaptive_unmarked",
+    {.captures = {Capture::Resolved, Capture::Segmentation}},
+    Frames::FromFrame,
+    nullptr,
+    adaptiveUnmarkedInapplicable,
+    makeAdaptiveUnmarked};
 
 }  // namespace taa::invariants

@@ -21,13 +21,13 @@ class Converges : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
+    error_ = requireCaptures(f, 3, {{Capture::Reference, 3}});
     if (!error_.empty()) return;
     if (f.historyReset || rmse_.empty()) {
       rmse_.clear();
       start_ = f.frame;
     }
-    rmse_.push_back(compare::computeMetrics(*f.output, *f.reference).rmse);
+    rmse_.push_back(compare::computeMetrics(*f.output, *f.capture(Capture::Reference)).rmse);
   }
 
   Outcome finish() override {
@@ -89,7 +89,9 @@ std::unique_ptr<Invariant> makeConverges(const CheckedCase& spec) {
 
 }  // namespace
 
-const InvariantInfo converges_invariant = {"converges", {.reference = true},   Frames::FromFrame,
-                                           "converges", convergesInapplicable, makeConverges};
+const InvariantInfo converges_invariant = {
+    "converges",           {.captures = {Capture::Reference}},
+    Frames::FromFrame,     "converges",
+    convergesInapplicable, makeConverges};
 
 }  // namespace taa::invariants

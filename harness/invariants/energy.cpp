@@ -27,9 +27,10 @@ class Energy : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.historyReset) return;
-    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}});
+    error_ = requireCaptures(f, 3, {{Capture::Reference, 3}});
     if (!error_.empty()) return;
-    const double out = meanLuminance(*f.output), ref = meanLuminance(*f.reference);
+    const double out = meanLuminance(*f.output),
+                 ref = meanLuminance(*f.capture(Capture::Reference));
     const double rel = std::fabs(out - ref) / std::max(ref, 1e-6);
     ++frames_;
     // NaN counts as the worst, so a non-finite mean is reported and fails.
@@ -83,7 +84,8 @@ std::unique_ptr<Invariant> makeEnergy(const CheckedCase& spec) {
 
 }  // namespace
 
-const InvariantInfo energy_invariant = {"energy", {.reference = true}, Frames::FromFrame,
-                                        "energy", energyInapplicable,  makeEnergy};
+const InvariantInfo energy_invariant = {"energy",           {.captures = {Capture::Reference}},
+                                        Frames::FromFrame,  "energy",
+                                        energyInapplicable, makeEnergy};
 
 }  // namespace taa::invariants

@@ -42,7 +42,7 @@ class HistoryBounded : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty() || f.historyReset) return;
-    error_ = requireImages(f, {{f.output, "output", 3}, {f.current, "current", 3}});
+    error_ = requireCaptures(f, 3, {{Capture::Current, 3}});
     if (!error_.empty()) return;
     ++framesChecked_;
     for (int y = 0; y < f.output->height; ++y)
@@ -79,7 +79,8 @@ class HistoryBounded : public Invariant {
 
  private:
   void checkPixel(const FrameView& f, int x, int y) {
-    const box::Box b = box::neighbourhoodBox(*f.current, x, y, ycocg_, shrinkChroma_);
+    const box::Box b =
+        box::neighbourhoodBox(*f.capture(Capture::Current), x, y, ycocg_, shrinkChroma_);
     double o[3];
     double big = 0.0, boxBig = 0.0;
     bool finite = true;
@@ -157,8 +158,8 @@ std::unique_ptr<Invariant> makeHistoryBounded(const CheckedCase& spec) {
 
 }  // namespace
 
-const InvariantInfo history_bounded_invariant = {"history_bounded",          {.current = true},
-                                                 Frames::FromFrame,          nullptr,
-                                                 historyBoundedInapplicable, makeHistoryBounded};
+const InvariantInfo history_bounded_invariant = {
+    "history_bounded", {.captures = {Capture::Current}}, Frames::FromFrame,
+    nullptr,           historyBoundedInapplicable,       makeHistoryBounded};
 
 }  // namespace taa::invariants

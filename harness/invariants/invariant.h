@@ -3,41 +3,45 @@
 // Vulkan: they see read-back images only.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "api/captures.h"
+#include "api/frame_record.h"
 #include "core/image.h"
 #include "spec/checked_case.h"
 
 namespace taa::invariants {
 
-// One frame as an invariant sees it; pointers are null for what was not read back.
+// One frame as an invariant sees it; images are null for what was not read back.
 struct FrameView {
   int frame = 0;
-  bool historyReset = false;        // frame 0, camera cut or scripted reset
-  const Image* output = nullptr;    // the final output (linear HDR RGBA, output size)
-  const Image* reference = nullptr; // supersampled ground truth (output size)
-  const Image* current = nullptr;   // the resolve's input colour this frame (render size)
-  const Image* ids = nullptr;       // object id, material id, mover flag (render size)
-  const Image* velocity = nullptr;  // pixels (render size)
-  const Image* resolved = nullptr;      // adaptive mode: the resolve's output before tracing
-  const Image* segmentation = nullptr;  // adaptive mode: ADAPTIVE_MASK_* per pixel
-  const Image* cmaa = nullptr;      // TSCMAA: the CMAA image (output size)
-  const Image* edgeMask = nullptr;  // TSCMAA: TSCMAA_EDGE_* / TSCMAA_TAA bits (output size)
-  std::string sha256;               // of the output
+  bool historyReset = false;      // frame 0, camera cut or scripted reset
+  const Image* output = nullptr;  // the final output (linear HDR RGBA, output size)
+  std::string sha256;             // of the output
+  // The captures (api/captures.h: the reference, the resolve's input, ids, ...).
+  std::array<const Image*, kCaptureCount> captures{};
+
+  const Image* capture(Capture c) const { return captures[size_t(c)]; }
+  void set(Capture c, const Image* image) { captures[size_t(c)] = image; }
+  // A rendered frame as the invariants see it: its output (when read, or hashed every frame)
+  // and every capture it carries.
+  static FrameView of(const FrameRecord& r);
 };
 
-// What the runner must read back for an invariant.
+// What the runner must read back for an invariant, and whether it renders the case twice.
 struct Needs {
-  bool reference = false;
-  bool current = false;
-  bool ids = false;
-  bool velocity = false;
-  bool tscmaa = false;     // the CMAA image and the edge mask
+  CaptureSet captures;
   bool secondRun = false;  // determinism: the runner renders the case again
-  bool adaptive = false;   // the resolve's output before tracing and the segmentation mask
+
+  Needs& operator|=(const Needs& o) {
+    captures |= o.captures;
+    secondRun = secondRun || o.secondRun;
+    return *this;
+  }
 };
 
 struct Outcome {

@@ -9,6 +9,17 @@ namespace taa::invariants {
 
 using namespace taa::spec;
 
+FrameView FrameView::of(const FrameRecord& r) {
+  FrameView v;
+  v.frame = r.frame;
+  v.historyReset = r.historyReset;
+  // A frame whose images were not read still carries its output when every frame is hashed.
+  v.output = r.hasImages || !r.color.data.empty() ? &r.color : nullptr;
+  v.sha256 = r.colorSha256;
+  for (const CaptureInfo& c : kCaptures) v.set(c.capture, r.capture(c.capture));
+  return v;
+}
+
 std::string num(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", value);
@@ -108,9 +119,13 @@ std::string requireImage(const FrameView& f, const Image* img, const char* what,
   return "";
 }
 
-std::string requireImages(const FrameView& f, std::initializer_list<RequiredImage> images) {
-  for (const auto& r : images)
-    if (auto why = requireImage(f, r.image, r.what, r.minChannels); !why.empty()) return why;
+std::string requireCaptures(const FrameView& f, int outputChannels,
+                            std::initializer_list<RequiredCapture> captures) {
+  if (auto why = requireImage(f, f.output, "output", outputChannels); !why.empty()) return why;
+  for (const auto& r : captures)
+    if (auto why = requireImage(f, f.capture(r.capture), captureName(r.capture), r.minChannels);
+        !why.empty())
+      return why;
   return "";
 }
 

@@ -56,12 +56,13 @@ std::string jitterConstant(const spec::CaseSpec& spec);
 // not ("" when fine). `what` names it for the message.
 std::string requireImage(const FrameView& f, const Image* img, const char* what, int minChannels);
 
-struct RequiredImage {
-  const Image* image;
-  const char* what;
+struct RequiredCapture {
+  Capture capture;
   int minChannels;
 };
-// The first of requireImage's errors over `images`, in order; empty when all are usable.
-std::string requireImages(const FrameView& f, std::initializer_list<RequiredImage> images);
+// The output with at least `outputChannels` channels, then each capture (named as in
+// api/captures.h): the first of requireImage's errors, in order; empty when all are usable.
+std::string requireCaptures(const FrameView& f, int outputChannels,
+                            std::initializer_list<RequiredCapture> captures);
 
 }  // namespace taa::invariants

@@ -12,12 +12,12 @@ class MatchesInput : public Invariant {
  public:
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    if (!f.output || !f.current) {
+    if (!f.output || !f.capture(Capture::Current)) {
       error_ = "frame " + std::to_string(f.frame) + ": no " + (f.output ? "input colour" : "output") + " image";
       return;
     }
     const Image& out = *f.output;
-    const Image& in = *f.current;
+    const Image& in = *f.capture(Capture::Current);
     if (out.width != in.width || out.height != in.height) {
       error_ = "frame " + std::to_string(f.frame) + ": output and input sizes differ";
       return;
@@ -73,8 +73,8 @@ std::string matchesInputInapplicable(const spec::CheckedCase& spec) {
 
 }  // namespace
 
-const InvariantInfo matches_input_invariant = {"matches_input",          {.current = true},
-                                               Frames::FromFrame,        nullptr,
-                                               matchesInputInapplicable, makeMatchesInput};
+const InvariantInfo matches_input_invariant = {
+    "matches_input", {.captures = {Capture::Current}}, Frames::FromFrame,
+    nullptr,         matchesInputInapplicable,         makeMatchesInput};
 
 }  // namespace taa::invariants

@@ -24,9 +24,9 @@ class NoGhosting : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    error_ = requireImages(f, {{f.output, "output", 3}, {f.reference, "reference", 3}, {f.ids, "ids", 3}});
+    error_ = requireCaptures(f, 3, {{Capture::Reference, 3}, {Capture::Ids, 3}});
     if (!error_.empty()) return;
-    const Image& ids = *f.ids;
+    const Image& ids = *f.capture(Capture::Ids);
     if (lastCovered_.empty()) lastCovered_.assign(ids.pixelCount(), kNever);
     if (lastCovered_.size() != ids.pixelCount()) {
       error_ = "frame " + std::to_string(f.frame) + ": the image size changed";
@@ -44,7 +44,7 @@ class NoGhosting : public Invariant {
       for (int x = 0; x < ids.width; ++x) {
         if (lastCovered_[size_t(y) * size_t(ids.width) + size_t(x)] != f.frame - k_) continue;
         sum += std::fabs(double(tonemappedLuma(*f.output, x, y)) -
-                         double(tonemappedLuma(*f.reference, x, y)));
+                         double(tonemappedLuma(*f.capture(Capture::Reference), x, y)));
         ++count;
       }
     if (count == 0) return;
@@ -120,7 +120,8 @@ std::unique_ptr<Invariant> makeNoGhosting(const CheckedCase& spec) {
 }  // namespace
 
 const InvariantInfo no_ghosting_invariant = {
-    "no_ghosting", {.reference = true, .ids = true}, Frames::FromFrame,
-    "no_ghosting", noGhostingInapplicable,           makeNoGhosting};
+    "no_ghosting",          {.captures = {Capture::Reference, Capture::Ids}},
+    Frames::FromFrame,      "no_ghosting",
+    noGhostingInapplicable, makeNoGhosting};
 
 }  // namespace taa::invariants

@@ -28,11 +28,11 @@ class TemporalStability : public Invariant {
 
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    error_ = requireImages(f, {{f.output, "output", 3},
-                               {f.reference, "reference", 3},
-                               {f.ids, "ids", 3},
-                               {f.velocity, "velocity", 2}});
+    error_ =
+        requireCaptures(f, 3, {{Capture::Reference, 3}, {Capture::Ids, 3}, {Capture::Velocity, 2}});
     if (!error_.empty()) return;
+    const Image &reference = *f.capture(Capture::Reference), &ids = *f.capture(Capture::Ids),
+                &velocity = *f.capture(Capture::Velocity);
     const int w = f.output->width, h = f.output->height;
     const size_t n = f.output->pixelCount();
     std::vector<float> out(n), ref(n);
@@ -41,9 +41,9 @@ class TemporalStability : public Invariant {
       for (int x = 0; x < w; ++x) {
         const size_t i = size_t(y) * size_t(w) + size_t(x);
         out[i] = tonemappedLuma(*f.output, x, y);
-        ref[i] = tonemappedLuma(*f.reference, x, y);
-        const float vx = f.velocity->at(x, y, 0), vy = f.velocity->at(x, y, 1);
-        still[i] = std::sqrt(vx * vx + vy * vy) < kStaticPx && f.ids->at(x, y, 2) == 0.0f;
+        ref[i] = tonemappedLuma(reference, x, y);
+        const float vx = velocity.at(x, y, 0), vy = velocity.at(x, y, 1);
+        still[i] = std::sqrt(vx * vx + vy * vy) < kStaticPx && ids.at(x, y, 2) == 0.0f;
       }
     const bool comparable = havePrev_ && prevOut_.size() == n && prevFrame_ == f.frame - 1;
     if (comparable && !f.historyReset) {
@@ -123,7 +123,7 @@ std::unique_ptr<Invariant> makeTemporalStability(const CheckedCase& spec) {
 
 const InvariantInfo temporal_stability_invariant = {
     "temporal_stability",
-    {.reference = true, .ids = true, .velocity = true},
+    {.captures = {Capture::Reference, Capture::Ids, Capture::Velocity}},
     Frames::FromFrame,
     "temporal_stability",
     temporalStabilityInapplicable,

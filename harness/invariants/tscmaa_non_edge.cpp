@@ -3,9 +3,7 @@
 //   - pixels off the edge list equal the input colour (CMAA touched nothing else).
 // Reads the CMAA image, the edge mask and the input ("current") beside the output.
 #include <cstring>
-#include <tuple>
 
-#include "common/shared.h"
 #include "invariants/invariant_support.h"
 #include "spec/taa_modes.h"
 
@@ -27,18 +25,18 @@ class TscmaaNonEdge : public Invariant {
  public:
   void observe(const FrameView& f) override {
     if (!error_.empty()) return;
-    for (const auto& [img, what, channels] :
-         {std::tuple{f.cmaa, "cmaa", 3}, std::tuple{f.edgeMask, "tscmaa_mask", 1},
-          std::tuple{f.current, "current", 3}})
-      if (error_ = requireImage(f, img, what, channels); !error_.empty()) return;
+    error_ =
+        requireCaptures(f, 3, {{Capture::Cmaa, 3}, {Capture::EdgeMask, 1}, {Capture::Current, 3}});
+    if (!error_.empty()) return;
     ++frames_;
-    const Image &out = *f.output, &cmaa = *f.cmaa, &mask = *f.edgeMask, &in = *f.current;
+    const Image &out = *f.output, &cmaa = *f.capture(Capture::Cmaa),
+                &edges = *f.capture(Capture::EdgeMask), &in = *f.capture(Capture::Current);
     for (int y = 0; y < out.height; ++y)
       for (int x = 0; x < out.width; ++x) {
-        const auto bits = uint32_t(mask.at(x, y));
-        if ((bits & TSCMAA_TAA) == 0u)
+        const auto bits = uint32_t(edges.at(x, y));
+        if ((bits & mask::kTscmaaTaa) == 0u)
           note(sameRgb(out, cmaa, x, y), f.frame, x, y, nonTaa_, nonTaaBad_);
-        if ((bits & TSCMAA_EDGES) == 0u)
+        if ((bits & mask::kTscmaaEdges) == 0u)
           note(sameRgb(cmaa, in, x, y), f.frame, x, y, nonEdge_, nonEdgeBad_);
       }
   }
@@ -103,7 +101,8 @@ std::string tscmaaNonEdgeInapplicable(const CheckedCase& spec) {
 }  // namespace
 
 const InvariantInfo tscmaa_non_edge_invariant = {
-    "tscmaa_non_edge", {.current = true, .tscmaa = true}, Frames::FromFrame,
-    nullptr,           tscmaaNonEdgeInapplicable,         makeTscmaaNonEdge};
+    "tscmaa_non_edge",         {.captures = {Capture::Current, Capture::Cmaa, Capture::EdgeMask}},
+    Frames::FromFrame,         nullptr,
+    tscmaaNonEdgeInapplicable, makeTscmaaNonEdge};
 
 }  // namespace taa::invariants

@@ -27,30 +27,6 @@ fs::path defaultGoldensRoot(const fs::path& caseFile) {
 
 namespace {
 
-const Image* findAux(const FrameRecord& r, const char* name) {
-  for (const auto& a : r.aux)
-    if (a.name == name) return &a.image;
-  return nullptr;
-}
-
-invariants::FrameView viewOf(const FrameRecord& r) {
-  invariants::FrameView v;
-  v.frame = r.frame;
-  v.historyReset = r.historyReset;
-  // A frame whose images were not read still carries its output when every frame is hashed.
-  v.output = r.hasImages || !r.color.data.empty() ? &r.color : nullptr;
-  v.reference = r.hasReference ? &r.reference : nullptr;
-  v.current = findAux(r, "current");
-  v.ids = findAux(r, "material_id");
-  v.velocity = findAux(r, "velocity");
-  v.resolved = findAux(r, "taa_resolve");
-  v.segmentation = findAux(r, "segmentation");
-  v.cmaa = findAux(r, "cmaa");
-  v.edgeMask = findAux(r, "tscmaa_mask");
-  v.sha256 = r.colorSha256;
-  return v;
-}
-
 // Renders the case once, handing every frame to `each`; images are read for checked frames
 // and for the frames the invariants judge with them.
 void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
@@ -58,12 +34,7 @@ void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scen
             const std::function<void(FrameRecord&)>& each, std::vector<std::string>* log) {
   RenderOptions ro;
   ro.hashEveryFrame = hashEveryFrame;
-  ro.reference = checks.needs().reference;
-  ro.captureCurrent = checks.needs().current;
-  ro.captureIds = checks.needs().ids;
-  ro.captureVelocity = checks.needs().velocity;
-  ro.captureAdaptive = checks.needs().adaptive;
-  ro.captureTscmaa = checks.needs().tscmaa;
+  ro.captures = checks.needs().captures;
   Renderer renderer(device, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
@@ -132,7 +103,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
         if (r.hasImages && r.hasReference)
           result.referenceRmse.push_back(rmseAgainst(r.reference, r.color));
         if (golden) golden->observe(r);
-        checks.observe(viewOf(r));
+        checks.observe(invariants::FrameView::of(r));
         if (std::binary_search(checked.begin(), checked.end(), r.frame))
           outputs[r.frame] = std::move(r.color);
       },
@@ -140,7 +111,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   if (checks.needs().secondRun) {
     replay(
         device, spec, scene, checks, options, checks.judgesWarmUp(),
-        [&](FrameRecord& r) { checks.observeRepeat(viewOf(r)); }, nullptr);
+        [&](FrameRecord& r) { checks.observeRepeat(invariants::FrameView::of(r)); }, nullptr);
   }
   result.timings = timing.summary();
   std::map<int, Image> abOutputs;

@@ -5,14 +5,7 @@ namespace taa::run {
 InvariantRun::InvariantRun(const spec::CheckedCase& spec) : fromFrame_(spec.checks.from_frame) {
   for (const auto& name : spec.checks.invariants) {
     const auto& info = invariants::invariantInfo(name);
-    const auto& n = info.needs;
-    needs_.reference |= n.reference;
-    needs_.current |= n.current;
-    needs_.ids |= n.ids;
-    needs_.velocity |= n.velocity;
-    needs_.tscmaa |= n.tscmaa;
-    needs_.secondRun |= n.secondRun;
-    needs_.adaptive |= n.adaptive;
+    needs_ |= info.needs;
     warmUp_ |= info.frames == invariants::Frames::All && fromFrame_ > 0;
     active_.push_back({&info, info.make(spec)});
   }

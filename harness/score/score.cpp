@@ -92,12 +92,6 @@ bool hasLabel(const spec::CheckedCase& s, const char* label) {
   return std::find(s.checks.labels.begin(), s.checks.labels.end(), label) != s.checks.labels.end();
 }
 
-const Image* scoreAux(const FrameRecord& r, const char* name) {
-  for (const auto& a : r.aux)
-    if (a.name == name) return &a.image;
-  return nullptr;
-}
-
 CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& base,
                     const ScoreOptions& o) {
   std::vector<std::unique_ptr<ScoreLane>> lanes;
@@ -116,8 +110,8 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
     auto& l = *lanes[i];
     l.scene = scene::buildScene(l.loaded.spec);
     RenderOptions ro;
-    ro.reference = i == 0;  // one reference, shared
-    ro.captureIds = c.movers;
+    if (i == 0) ro.captures |= {Capture::Reference};  // one reference, shared
+    if (c.movers) ro.captures |= {Capture::Ids};
     l.renderer = std::make_unique<Renderer>(device, l.loaded.spec, l.scene, ro);
     if (c.movers) l.ghosting = invariants::makeInvariant("no_ghosting", l.loaded.spec);
   }
@@ -138,12 +132,8 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
       l.score.rmse += compare::computeMetrics(reference, r.color).rmse / c.frames;
       l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, r.color).mean);
       if (l.ghosting && f >= l.loaded.spec.checks.from_frame) {
-        invariants::FrameView v;
-        v.frame = f;
-        v.historyReset = r.historyReset;
-        v.output = &r.color;
-        v.reference = &reference;
-        v.ids = scoreAux(r, "material_id");
+        invariants::FrameView v = invariants::FrameView::of(r);
+        v.set(Capture::Reference, &reference);
         l.ghosting->observe(v);
       }
     }

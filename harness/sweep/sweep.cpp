@@ -112,7 +112,8 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
     auto& l = *lanes[i];
     l.scene = scene::buildScene(l.loaded.spec);
     RenderOptions ro;
-    ro.reference = i == 0;  // rendered once; every preset is measured against it
+    if (i == 0)
+      ro.captures = {Capture::Reference};  // rendered once; every preset is measured against it
     l.renderer = std::make_unique<Renderer>(device, l.loaded.spec, l.scene, ro);
   }
 

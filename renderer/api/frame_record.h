@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/captures.h"
 #include "core/image.h"
 
 namespace taa {
@@ -34,6 +35,14 @@ struct FrameRecord {
   glm::ivec2 renderSize{0};
   bool cameraCut = false;
   bool historyReset = false;
+
+  // A captured image of this frame (api/captures.h), or null when it was not read back.
+  const Image* capture(Capture c) const {
+    if (c == Capture::Reference) return hasReference ? &reference : nullptr;
+    for (const auto& a : aux)
+      if (a.name == captureName(c)) return &a.image;
+    return nullptr;
+  }
 };
 
 }  // namespace taa

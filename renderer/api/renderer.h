@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "api/frame_record.h"
+#include "api/render_options.h"
 #include "scene/scene.h"
 #include "spec/case_spec.h"
 
@@ -17,28 +18,6 @@ class Device;
 namespace vk {
 class Context;
 }
-
-struct RenderOptions {
-  // Render the supersampled reference beside every frame whose images are read back
-  // (costs reference.samples extra scene renders per such frame).
-  bool reference = false;
-  // Read back, beside the output, buffers the harness's invariants examine: the
-  // resolve's input colour ("current"), the ids and the velocity targets.
-  bool captureCurrent = false;
-  bool captureIds = false;
-  bool captureVelocity = false;
-  // Adaptive mode: read back the resolve's output before tracing ("taa_resolve") and
-  // the segmentation mask ("segmentation").
-  bool captureAdaptive = false;
-  // TSCMAA only: read back the CMAA image ("cmaa") and the edge mask ("tscmaa_mask",
-  // TSCMAA_EDGE_* and TSCMAA_TAA bits as floats), both at output size.
-  bool captureTscmaa = false;
-  // Read back and hash the output of every frame, not only of those whose images are read:
-  // goldens record each frame's pixel hash, so a frame no golden image covers is still
-  // checked. Sets FrameRecord::color and colorSha256 for every frame; aux buffers, captures
-  // and the reference still come only with readImages.
-  bool hashEveryFrame = false;
-};
 
 class Renderer {
  public:

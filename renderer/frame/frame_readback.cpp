@@ -45,27 +45,28 @@ void FrameReadback::record(VkCommandBuffer cmd, const spec::CaseSpec& spec, cons
       vk::Image& ref = src.reference->output();
       add(Kind::Reference, "reference", ref, {int(ref.desc().width), int(ref.desc().height)});
     }
+    // The case's output.aux and the captures share names where both can name a target
+    // (velocity, material_id): read once, under that name.
     GBufferTargets& t = *src.targets;
     const glm::ivec2 render = src.renderSize;
     if (wantsAuxBuffer(spec, spec::AuxBuffer::Depth)) add(Kind::Aux, "depth", t.depth, render);
-    if (wantsAuxBuffer(spec, spec::AuxBuffer::Velocity) || o.captureVelocity)
-      add(Kind::Aux, "velocity", t.velocity, render);
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::Velocity) || o.captures.has(Capture::Velocity))
+      add(Kind::Aux, captureName(Capture::Velocity), t.velocity, render);
     if (wantsAuxBuffer(spec, spec::AuxBuffer::Normal)) add(Kind::Aux, "normal", t.normal, render);
-    if (wantsAuxBuffer(spec, spec::AuxBuffer::MaterialId) || o.captureIds)
-      add(Kind::Aux, "material_id", t.ids, render);
+    if (wantsAuxBuffer(spec, spec::AuxBuffer::MaterialId) || o.captures.has(Capture::Ids))
+      add(Kind::Aux, captureName(Capture::Ids), t.ids, render);
+    // A stage that keeps every eye's input side by side reads it back; elsewhere the
+    // resolve's input is it.
     const std::vector<StageCapture>& stage = src.captures;
-    if (o.captureCurrent) {
-      // A stage that keeps every eye's input side by side reads it back; elsewhere the
-      // resolve's input is it.
-      const auto own = std::find_if(stage.begin(), stage.end(),
-                                    [](const StageCapture& c) { return c.name == "current"; });
-      if (own != stage.end())
-        add(Kind::Aux, "current", *own->image, own->size);
-      else
-        add(Kind::Aux, "current", *src.resolveInput, render);
-    }
+    const bool stageCurrent = std::any_of(stage.begin(), stage.end(), [](const StageCapture& c) {
+      return c.capture == Capture::Current;
+    });
+    if (o.captures.has(Capture::Current) && !stageCurrent)
+      add(Kind::Aux, captureName(Capture::Current), *src.resolveInput, render);
     for (const StageCapture& c : stage)
-      if (c.name != "current") add(c.bits ? Kind::Bits : Kind::Aux, c.name, *c.image, c.size);
+      if (o.captures.has(c.capture))
+        add(captureInfo(c.capture).bits ? Kind::Bits : Kind::Aux, captureName(c.capture), *c.image,
+            c.size);
   }
   // One transition point for every image read, then the copies, then the host's turn.
   vk::BarrierBatch barriers;

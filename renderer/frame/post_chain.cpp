@@ -49,7 +49,7 @@ const PassEntry<ResolveFollower> kFollowResolve[] = {
     {"adaptive", [](const PassPlan& p) { return p.adaptive; },
      [](const PassContext& c) -> std::unique_ptr<ResolveFollower> {
        return std::make_unique<AdaptivePass>(c.ctx, c.spec, c.scene, c.firstFrame,
-                                             c.options.captureAdaptive);
+                                             c.options.captures);
      }},
 };
 

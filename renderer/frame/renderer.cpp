@@ -52,8 +52,8 @@ GBufferConfig gbufferConfig(const spec::CaseSpec& spec, const PassPlan& plan,
 // The targets no pass reads but the harness's captures do.
 PassPlan planWithCaptures(const spec::CaseSpec& spec, const RenderOptions& o) {
   PassPlan p = planPasses(spec);
-  p.own.ids = p.own.ids || o.captureIds;
-  p.own.velocity = p.own.velocity || o.captureVelocity;
+  p.own.ids = p.own.ids || o.captures.has(Capture::Ids);
+  p.own.velocity = p.own.velocity || o.captures.has(Capture::Velocity);
   return p;
 }
 
@@ -153,7 +153,7 @@ struct Renderer::State {
         targets(c, config),
         gbuffer(c, gpuScene, config),
         prev(c, needs, targets),
-        reference(o.reference
+        reference(o.captures.has(Capture::Reference)
                       ? std::make_unique<ReferencePass>(c, s, gpuScene, shadow.get(), still.get())
                       : nullptr),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),

@@ -10,8 +10,7 @@ namespace taa {
 std::unique_ptr<ResolveStage> makeResolveStage(vk::Context& ctx, const spec::CaseSpec& spec,
                                                const PassPlan& plan, const RenderOptions& options) {
   const spec::ModeRule& rule = spec::modeRule(spec.taa.mode);
-  if (rule.tscmaa)
-    return std::make_unique<TscmaaPass>(ctx, spec, options.captureCurrent, options.captureTscmaa);
+  if (rule.tscmaa) return std::make_unique<TscmaaPass>(ctx, spec, options.captures);
   // A user's shader (taa.shader, validated to run in taa.mode full) replaces the built-in one.
   if (rule.resolve && !spec.taa.shader.empty())
     return std::make_unique<UserResolvePass>(ctx, spec, loadUserShader(spec));

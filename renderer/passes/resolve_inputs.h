@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "common/resolve_inputs.h"
+#include "core/enum_set.h"
 #include "passes/gbuffer_needs.h"
 #include "spec/taa_spec.h"
 
@@ -35,28 +36,8 @@ inline constexpr size_t kResolveInputCount = 0 TAA_RESOLVE_INPUTS(TAA_INPUT_COUN
 #undef TAA_INPUT_COUNT_ONE
 
 // A set of inputs: what a setting, a resolve or a user's shader reads.
-class ResolveInputSet {
- public:
-  constexpr ResolveInputSet() = default;
-  constexpr ResolveInputSet(std::initializer_list<ResolveInput> inputs) {
-    for (ResolveInput i : inputs) bits_ |= bit(i);
-  }
-  constexpr bool has(ResolveInput i) const { return (bits_ & bit(i)) != 0; }
-  constexpr bool empty() const { return bits_ == 0; }
-  constexpr ResolveInputSet& operator|=(ResolveInputSet o) {
-    bits_ |= o.bits_;
-    return *this;
-  }
-  friend constexpr ResolveInputSet operator|(ResolveInputSet a, ResolveInputSet b) {
-    return a |= b;
-  }
-  friend constexpr bool operator==(ResolveInputSet, ResolveInputSet) = default;
-
- private:
-  static constexpr uint32_t bit(ResolveInput i) { return 1u << uint32_t(i); }
-  uint32_t bits_ = 0;
-};
-static_assert(kResolveInputCount <= 32, "ResolveInputSet holds 32 inputs");
+using ResolveInputSet = EnumSet<ResolveInput>;
+static_assert(kResolveInputCount <= 64, "ResolveInputSet holds 64 inputs");
 
 // A setting's `reads` column (common/taa_settings.h): `inputs` when `on`, else none.
 constexpr ResolveInputSet readsIf(bool on, std::initializer_list<ResolveInput> inputs) {

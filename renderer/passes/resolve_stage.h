@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/captures.h"
 #include "passes/gbuffer_needs.h"
 #include "passes/resolve_inputs.h"
 #include "script/frame_state.h"
@@ -19,13 +20,13 @@
 
 namespace taa {
 
-// An image the harness reads back beside the output, valid in its top-left `size` pixels;
-// `bits`: an integer mask, read as float bit values. The name "current" replaces the
-// renderer's own copy of the resolve's input (a stage that keeps the eyes side by side).
+// An image the harness may read back beside the output (api/captures.h), valid in its
+// top-left `size` pixels; read back when the run's captures have it. Capture::Current
+// replaces the renderer's own copy of the resolve's input (a stage that keeps the eyes side
+// by side).
 struct StageCapture {
-  std::string name;
+  Capture capture;
   vk::Image* image = nullptr;
-  bool bits = false;
   glm::ivec2 size{0};
 };
 
@@ -51,7 +52,7 @@ class ResolveStage {
   virtual vk::Image* debugView() { return nullptr; }
   virtual vk::Image* rejection() { return nullptr; }
 
-  // Images read back with the frame's images, when the render options asked for them.
+  // Images the run may read back with the frame's images (read when its captures have them).
   virtual std::vector<StageCapture> captures() { return {}; }
 
   // Per-frame figures for FrameRecord::stats, valid once the frame completed.

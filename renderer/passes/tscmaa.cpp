@@ -35,14 +35,12 @@ gpu::TscmaaUniforms makeTscmaaUniforms(const spec::TscmaaSpec& t, glm::ivec2 eye
   return u;
 }
 
-TscmaaPass::TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput,
-                       bool captureSteps)
+TscmaaPass::TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, CaptureSet captures)
     : ctx_(ctx),
       spec_(spec),
       eyeSize_(spec.render.width, spec.render.height),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
-      linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
-      captureSteps_(captureSteps) {
+      linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
   const int eyes = eyeCount(spec);
   const glm::ivec2 wide = taa::outputSize(spec);
   edges_ = tscmaa::edgePipeline(ctx);
@@ -50,7 +48,7 @@ TscmaaPass::TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captur
   taa_ = tscmaa::taaPipeline(ctx);
   mask_ = tscmaa::image(ctx, "tscmaa_mask", wide, VK_FORMAT_R32_UINT, tscmaa::kStorageCopy);
   cmaa_ = tscmaa::image(ctx, "tscmaa_cmaa", wide, VK_FORMAT_R16G16B16A16_SFLOAT, tscmaa::kAll);
-  if (captureInput)
+  if (captures.has(Capture::Current))
     input_ = tscmaa::image(ctx, "tscmaa_input", wide, VK_FORMAT_R16G16B16A16_SFLOAT, tscmaa::kAll);
   if (eyes > 1)
     sideBySide_ =
@@ -89,11 +87,9 @@ glm::ivec2 TscmaaPass::outputSize() const {
 std::vector<StageCapture> TscmaaPass::captures() {
   const glm::ivec2 wide = outputSize();
   std::vector<StageCapture> out;
-  if (input_) out.push_back({"current", &input_, false, wide});
-  if (captureSteps_) {
-    out.push_back({"cmaa", &cmaa_, false, wide});
-    out.push_back({"tscmaa_mask", &mask_, true, wide});
-  }
+  if (input_) out.push_back({Capture::Current, &input_, wide});
+  out.push_back({Capture::Cmaa, &cmaa_, wide});
+  out.push_back({Capture::EdgeMask, &mask_, wide});
   return out;
 }
 

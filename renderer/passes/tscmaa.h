@@ -32,11 +32,9 @@ std::vector<std::pair<std::string, double>> tscmaaCounters(const std::vector<Tsc
 
 class TscmaaPass final : public ResolveStage {
  public:
-  // `captureInput` keeps a side-by-side copy of each eye's input colour for read-back
-  // ("current"); `captureSteps` reads back the CMAA image ("cmaa") and the edge mask
-  // ("tscmaa_mask").
-  TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, bool captureInput = false,
-             bool captureSteps = false);
+  // With Capture::Current in `captures` it keeps a side-by-side copy of each eye's input
+  // colour to read back; the CMAA image and the edge mask are always there to read.
+  TscmaaPass(vk::Context& ctx, const spec::CaseSpec& spec, CaptureSet captures = {});
   ~TscmaaPass() override;
   TscmaaPass(const TscmaaPass&) = delete;
   TscmaaPass& operator=(const TscmaaPass&) = delete;
@@ -74,7 +72,6 @@ class TscmaaPass final : public ResolveStage {
   VkDeviceSize stride_ = 0;
   vk::Sampler point_, linear_;
   int current_ = 0;  // history index written this frame
-  bool captureSteps_ = false;
 };
 
 }  // namespace taa

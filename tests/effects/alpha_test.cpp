@@ -43,7 +43,7 @@ TEST(EffectAlpha, LowerAlphaConvergesCloserToTheReferenceOnAStaticScene) {
   // The last 8 frames are one whole Halton cycle; their mean error does not favour a step.
   const std::vector<int> last = {40, 41, 42, 43, 44, 45, 46, 47};
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto& a005 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 0.05}})", last, o);
   const auto& a03 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 0.3}})", last);
   const auto& a1 = renderOnce(kAlphaStatic, R"({"taa": {"alpha": 1.0}})", last);

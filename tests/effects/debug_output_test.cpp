@@ -23,10 +23,10 @@ TEST(EffectDebugOutput, VelocityViewEncodesTheGBufferVelocity) {
     "debug": {"output": "velocity", "scale": 0.25}
   })";
   RenderOptions o;
-  o.captureVelocity = true;
+  o.captures |= {Capture::Velocity};
   const auto& run = renderOnce(moving, "{}", {3}, o);
   const Image& view = run[3].color;
-  const Image& v = test::auxImage(run[3], "velocity");
+  const Image& v = test::capturedImage(run[3], Capture::Velocity);
   double worst = 0.0, largest = 0.0;
   for (int y = 0; y < view.height; ++y)
     for (int x = 0; x < view.width; ++x)
@@ -50,10 +50,10 @@ TEST(EffectDebugOutput, RejectionMaskIsOneOnTheRevealedBorderAndZeroInside) {
     "debug": {"output": "rejection"}
   })";
   RenderOptions o;
-  o.captureVelocity = true;
+  o.captures |= {Capture::Velocity};
   const auto& run = renderOnce(pan, "{}", {5}, o);
   const Image& mask = run[5].color;
-  const Image& v = test::auxImage(run[5], "velocity");
+  const Image& v = test::capturedImage(run[5], Capture::Velocity);
   int border = 0, inside = 0, wrong = 0;
   for (int y = 0; y < mask.height; ++y)
     for (int x = 0; x < mask.width; ++x) {
@@ -102,7 +102,7 @@ TEST(EffectDebugOutput, ClampDistanceIsZeroWhenConvergedAndPositiveWhereAMoverPa
     "debug": {"output": "clamp_distance"}
   })";
   RenderOptions o;
-  o.captureIds = true;
+  o.captures |= {Capture::Ids};
   const auto& run = renderOnce(mover, "{}", {10, 11}, o);
   // Pixels the cube covered last frame and has just left: their history is the cube.
   const test::Mask left = test::vacatedMask(run, 10, 11);

@@ -97,8 +97,8 @@ double redness(const Image& img, const Image& ref, const test::Mask& mask) {
 TEST(EffectVelocityAlpha, FastMoverLeavesAShorterTrail) {
   const std::vector<int> frames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
   RenderOptions o;
-  o.reference = true;
-  o.captureIds = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   const auto& plain = renderOnce(kDynamicAlphaMover, "{}", frames, o);
   const auto& fast =
       renderOnce(kDynamicAlphaMover, R"({"taa": {"velocity_alpha": true, "velocity_alpha_px": 0.5}})",

@@ -27,7 +27,7 @@ struct Measured {
 
 Measured measure(const char* filter) {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto& truth =
       renderOnce(kHistoryFilterPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
   const auto& run =
@@ -50,7 +50,7 @@ TEST(EffectHistoryFilter, CatmullRomIsCloserToTheReferenceThanBilinearUnderAPan)
   }
   report("reference local contrast", [] {
     RenderOptions o;
-    o.reference = true;
+    o.captures |= {Capture::Reference};
     const auto& truth =
         renderOnce(kHistoryFilterPan, R"({"taa": {"history_filter": "catmull_rom_5"}})", kLast4, o);
     return test::localContrast(truth[23].reference);

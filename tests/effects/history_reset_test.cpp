@@ -20,12 +20,12 @@ const std::vector<int> kHistoryResetAll = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}
 
 RenderOptions currentHistoryReset() {
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   return o;
 }
 
 bool outputIsInput(const FrameRecord& r) {
-  return test::rgbIdentical(r.color, test::auxImage(r, "current"));
+  return test::rgbIdentical(r.color, test::capturedImage(r, Capture::Current));
 }
 
 TEST(EffectHistoryReset, ScriptedResetFrameOutputsTheCurrentFrame) {

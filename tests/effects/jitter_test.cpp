@@ -23,7 +23,7 @@ const char* kJitterStatic = R"({
 
 TEST(EffectJitter, HaltonConvergesCloserToTheReferenceThanNoJitter) {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto& halton = renderOnce(kJitterStatic, R"({"jitter": {"pattern": "halton"}})", {23}, o);
   const auto& none = renderOnce(kJitterStatic, R"({"jitter": {"pattern": "none"}})", {23});
   const Image& ref = halton[23].reference;  // static scene: the same truth for both runs
@@ -52,13 +52,13 @@ int edgeColumn(const Image& ids, int y) {
 
 TEST(EffectJitter, ManualHalfPixelOffsetsShiftAVerticalEdgeByOnePixel) {
   RenderOptions o;
-  o.captureIds = true;
+  o.captures |= {Capture::Ids};
   const auto& right =
       renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[0.5, 0]]}})", {0}, o);
   const auto& left =
       renderOnce(kQuad, R"({"jitter": {"pattern": "manual", "points": [[-0.5, 0]]}})", {0}, o);
-  const Image& idsR = test::auxImage(right[0], "material_id");
-  const Image& idsL = test::auxImage(left[0], "material_id");
+  const Image& idsR = test::capturedImage(right[0], Capture::Ids);
+  const Image& idsL = test::capturedImage(left[0], Capture::Ids);
   int rows = 0;
   for (int y = 0; y < idsR.height; ++y) {
     const int r = edgeColumn(idsR, y), l = edgeColumn(idsL, y);
@@ -96,12 +96,12 @@ const std::vector<int> kJitterAll = {0, 1, 2, 3, 4, 5, 6, 7, 8};
 
 RenderOptions currentJitter() {
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   return o;
 }
 
 const Image& raw(const test::EffectRun& run, int f) {
-  return test::auxImage(run[f], "current");
+  return test::capturedImage(run[f], Capture::Current);
 }
 
 TEST(EffectJitter, LockPinsOneStepOfTheSequence) {

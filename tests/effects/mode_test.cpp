@@ -21,10 +21,10 @@ TEST(EffectPassThrough, OutputIsTheInputBitForBit) {
     "taa": {"mode": "pass_through"}
   })";
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   const auto& run = renderOnce(moving, "{}", {0, 1, 2, 3}, o);
   for (int f = 0; f < 4; ++f)
-    EXPECT_TRUE(test::bitIdentical(run[f].color, test::auxImage(run[f], "current")))
+    EXPECT_TRUE(test::bitIdentical(run[f].color, test::capturedImage(run[f], Capture::Current)))
         << "frame " << f;
 }
 
@@ -39,7 +39,7 @@ const char* kModePan = R"({
 
 TEST(EffectBasic, GhostsUnderCameraMotionFarMoreThanFull) {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto& full = renderOnce(kModePan, "{}", {23}, o);
   const auto& basic = renderOnce(kModePan, R"({"taa": {"mode": "basic"}})", {23});
   const Image& ref = full[23].reference;

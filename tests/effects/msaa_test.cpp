@@ -79,11 +79,11 @@ TEST(EffectMsaa, EdgesMoveTowardTheReferenceAndInteriorsKeepTheirValues) {
   const int n = largestOffered();
   ASSERT_GE(n, 4) << "Vulkan requires 4 samples for colour and depth attachments";
   RenderOptions o;
-  o.reference = true;
-  o.captureIds = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   const auto& one = renderOnce(kMsaaFence, "{}", {3}, o);
   RenderOptions ids;
-  ids.captureIds = true;
+  ids.captures |= {Capture::Ids};
   const auto& many = renderOnce(kMsaaFence, msaaPatch(n), {3}, ids);
   const Image& ref = one[3].reference;
   const double e1 = test::rmse(one[3].color, ref), eN = test::rmse(many[3].color, ref);
@@ -92,7 +92,7 @@ TEST(EffectMsaa, EdgesMoveTowardTheReferenceAndInteriorsKeepTheirValues) {
   EXPECT_LT(eN, 0.75 * e1);
 
   const test::Mask interior =
-      interiorMask(test::auxImage(one[3], "material_id"), test::auxImage(one[3], "depth"), 1);
+      interiorMask(test::capturedImage(one[3], Capture::Ids), test::auxImage(one[3], "depth"), 1);
   report("interior pixels compared", test::count(interior));
   report("interior pixels that differ at all",
          test::differing(one[3].color, many[3].color, 0.0, interior));
@@ -124,8 +124,8 @@ TEST(EffectMsaa, ResolvedIdsAreIdsOfRealSurfaces) {
   const int n = largestOffered();
   const auto& one = renderOnce(kMsaaMover, "{}", {5});
   const auto& many = renderOnce(kMsaaMover, msaaPatch(n), {5});
-  const Image& ids1 = test::auxImage(one[5], "material_id");
-  const Image& idsN = test::auxImage(many[5], "material_id");
+  const Image& ids1 = test::capturedImage(one[5], Capture::Ids);
+  const Image& idsN = test::capturedImage(many[5], Capture::Ids);
   std::vector<float> known(ids1.data.begin(), ids1.data.end());
   std::sort(known.begin(), known.end());
   int foreign = 0;

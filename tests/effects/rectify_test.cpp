@@ -27,8 +27,8 @@ const std::vector<int> kRectifyFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 1
 // frames but is no more: its ghost.
 double ghosting(const std::string& taa) {
   RenderOptions o;
-  o.reference = true;
-  o.captureIds = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   const auto& truth = renderOnce(kRectifyMover, R"({"taa": {"rectify": "none"}})", kRectifyFrames, o);
   const auto& run = renderOnce(kRectifyMover, R"({"taa": )" + taa + "}", {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;
@@ -51,7 +51,7 @@ TEST(EffectRectify, ClampAndClipReduceGhostingOverTheRoughFloor) {
 
 TEST(EffectRectify, ClampKeepsTheOutputInsideTheCurrentFrames3x3Box) {
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   auto outside = [&](const char* rectify) {
     // taa.color_space means nothing (and is refused) without rectification.
     const std::string space = std::string(rectify) == "none" ? "" : R"("color_space": "rgb", )";
@@ -59,7 +59,7 @@ TEST(EffectRectify, ClampKeepsTheOutputInsideTheCurrentFrames3x3Box) {
         kRectifyMover, std::string(R"({"taa": {)") + space + R"("rectify": ")" + rectify + "\"}}",
         {20}, o);
     const Image& out = run[20].color;
-    const Image& cur = test::auxImage(run[20], "current");
+    const Image& cur = test::capturedImage(run[20], Capture::Current);
     int n = 0;
     for (int y = 0; y < out.height; ++y)
       for (int x = 0; x < out.width; ++x)

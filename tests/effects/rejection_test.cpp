@@ -21,15 +21,15 @@ const char* kRejectionPan = R"({
 
 RenderOptions currentAndVelocity() {
   RenderOptions o;
-  o.captureCurrent = true;
-  o.captureVelocity = true;
+  o.captures |= {Capture::Current};
+  o.captures |= {Capture::Velocity};
   return o;
 }
 
 // Pixels whose own motion puts last frame's position more than 1.5 px off the left or right
 // edge: no neighbour's velocity can bring them back on screen.
 test::Mask revealed(const FrameRecord& r) {
-  const Image& v = test::auxImage(r, "velocity");
+  const Image& v = test::capturedImage(r, Capture::Velocity);
   return test::maskWhere(v.width, v.height, [&](int x, int y) {
     const float prevX = x + 0.5f - v.at(x, y, 0);
     return prevX < -1.5f || prevX > v.width + 1.5f;
@@ -43,8 +43,10 @@ TEST(EffectRejectOffscreen, RevealedBorderPixelsAreTheCurrentFrame) {
   const test::Mask border = revealed(on[5]);
   report("revealed border pixels, frame 5", test::count(border));
   ASSERT_GT(test::count(border), 150);
-  EXPECT_EQ(test::differing(on[5].color, test::auxImage(on[5], "current"), 0.0, border), 0);
-  const int differ = test::differing(off[5].color, test::auxImage(off[5], "current"), 1e-3, border);
+  EXPECT_EQ(test::differing(on[5].color, test::capturedImage(on[5], Capture::Current), 0.0, border),
+            0);
+  const int differ =
+      test::differing(off[5].color, test::capturedImage(off[5], Capture::Current), 1e-3, border);
   report("revealed pixels != current frame, reject_offscreen off", differ);
   EXPECT_GT(differ, test::count(border) / 2);
 }
@@ -65,8 +67,8 @@ const std::vector<int> kRejectionFrames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
 // frames but is no more.
 double trailError(const std::string& patch) {
   RenderOptions o;
-  o.reference = true;
-  o.captureIds = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   const auto& truth = renderOnce(kRejectionMover, "{}", kRejectionFrames, o);
   const auto& run = renderOnce(kRejectionMover, patch, {16, 17, 18, 19, 20, 21, 22, 23});
   double sum = 0.0;

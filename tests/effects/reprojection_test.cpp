@@ -32,15 +32,16 @@ const char* kCamera = R"({
 
 TEST(EffectReprojection, DepthMatchesVelocityOnAStaticSceneUnderCameraMotion) {
   RenderOptions o;
-  o.reference = true;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Current};
   const auto& all = renderOnce(kCamera, R"({"taa": {"use_velocity": "all"}})", kLast8, o);
   const auto& off = renderOnce(kCamera, R"({"taa": {"use_velocity": "off"}})", kLast8);
   const auto whole = [](int) { return test::Mask{}; };
   const double eAll = meanError(all, all, whole), eOff = meanError(off, all, whole);
   double eRaw = 0.0;  // the jittered frames themselves: what no history would give
   for (int f : kLast8)
-    eRaw += test::rmse(test::auxImage(all[f], "current"), all[f].reference) / kLast8.size();
+    eRaw +=
+        test::rmse(test::capturedImage(all[f], Capture::Current), all[f].reference) / kLast8.size();
   report("mean rmse vs reference, use_velocity all (velocity)", eAll);
   report("mean rmse vs reference, use_velocity off (depth)", eOff);
   report("mean rmse vs reference, raw jittered frames", eRaw);
@@ -60,8 +61,8 @@ const char* kReprojectionMover = R"({
 
 RenderOptions withIds(bool reference) {
   RenderOptions o;
-  o.reference = reference;
-  o.captureIds = true;
+  if (reference) o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   return o;
 }
 

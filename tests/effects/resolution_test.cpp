@@ -21,12 +21,12 @@ TEST(EffectUpsample, ConvergesTowardTheFullResolutionReference) {
     "taa": {"alpha": 0.2, "rectify": "none"}
   })";
   RenderOptions o;
-  o.reference = true;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Current};
   const auto& run = renderOnce(half, "{}", {0, 31}, o);
   const Image& ref = run[31].reference;
   const double first = test::rmse(run[0].color, ref), last = test::rmse(run[31].color, ref);
-  const Image& low = test::auxImage(run[31], "current");
+  const Image& low = test::capturedImage(run[31], Capture::Current);
   const double upscaled = test::rmse(test::bilinearUpscale(low, 160, 90), ref);
   report("rmse vs full-res reference, frame 0", first);
   report("rmse vs full-res reference, frame 31", last);
@@ -47,7 +47,7 @@ const char* kResolutionPan = R"({
 TEST(EffectDynamicResolution, PanningErrorStaysCloseToTheFixedResolutionRun) {
   const std::vector<int> frames = {12, 13, 14, 15, 20, 21, 22, 23};
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto& fixed = renderOnce(kResolutionPan, "{}", frames, o);
   const auto& dynamic = renderOnce(
       kResolutionPan,

@@ -50,10 +50,10 @@ TEST(EffectRobustness, HdrValuesAtTheHalfMaximumStayFiniteAndBounded) {
     "script": {"frames": 6}
   })";
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   const auto& probe = renderOnce(base, "{}", {5}, o);
   int atMax = 0;
-  for (float v : test::auxImage(probe[5], "current").data) atMax += !(v < kHalfMax);
+  for (float v : test::capturedImage(probe[5], Capture::Current).data) atMax += !(v < kHalfMax);
   report("input channels at or above the half maximum", atMax);
   ASSERT_GT(atMax, 1000);
   for (const auto& combo : kCombos)
@@ -72,21 +72,21 @@ const char* kFlat = R"({
 
 TEST(EffectRobustness, FlatScenesStayFiniteAndConverge) {
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   for (const char* combo :
        {R"({"rectify": "clip"})", R"({"rectify": "clip", "variance_clip": true})",
         R"({"rectify": "clip", "color_space": "rgb", "variance_clip": true, "variance_gamma": 0})",
         R"({"luma_weight": true})", R"({"reduce_blend_near_clamp": true})",
         R"({"tonemap_weighting": "inverse_luma", "luma_weight": true})"}) {
     const auto& run = renderOnce(kFlat, R"({"taa": )" + std::string(combo) + "}", {11}, o);
-    const Image& cur = test::auxImage(run[11], "current");
+    const Image& cur = test::capturedImage(run[11], Capture::Current);
     EXPECT_TRUE(test::allFiniteAtMost(run[11].color, kHalfMax)) << combo;
     // Flat input: the output is that colour (converged), up to half-float rounding.
     EXPECT_LT(test::maxAbs(run[11].color, cur), 1e-3) << combo;
   }
   // The scene really is flat.
   const auto& run = renderOnce(kFlat, R"({"taa": {"rectify": "clip"}})", {11}, o);
-  const Image& cur = test::auxImage(run[11], "current");
+  const Image& cur = test::capturedImage(run[11], Capture::Current);
   double spread = 0.0;
   for (int y = 0; y < cur.height; ++y)
     for (int x = 0; x < cur.width; ++x)
@@ -107,10 +107,10 @@ TEST(EffectRobustness, MotionOfHundredsOfPixelsPerFrameStaysFinite) {
     "script": {"frames": 6}
   })";
   RenderOptions o;
-  o.captureVelocity = true;
+  o.captures |= {Capture::Velocity};
   const auto& probe = renderOnce(fast, "{}", {5}, o);
   double largest = 0.0;
-  for (float v : test::auxImage(probe[5], "velocity").data)
+  for (float v : test::capturedImage(probe[5], Capture::Velocity).data)
     largest = std::max(largest, double(std::fabs(v)));
   report("largest velocity component (px per frame)", largest);
   EXPECT_GT(largest, 500.0);

@@ -46,7 +46,7 @@ TEST(SeedExtrasUnjitter, NeighbourhoodBoxIsBuiltAtThePixelCentres) {
     "taa": {"rectify": "clamp", "color_space": "rgb", "alpha": 0.0, "history_filter": "bilinear",
             "velocity_sampling": "pixel", "history_format": "rgba32f"}})";
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   auto run = [&](bool unjitter) -> const test::EffectRun& {
     return test::renderOnce(
         clamped,
@@ -56,7 +56,7 @@ TEST(SeedExtrasUnjitter, NeighbourhoodBoxIsBuiltAtThePixelCentres) {
   const auto& on = run(true);
   const auto& off = run(false);
   const glm::vec2 jitter = script::frameState(on.spec, 1).jitter;
-  const Image& cur = test::auxImage(on[1], "current");
+  const Image& cur = test::capturedImage(on[1], Capture::Current);
   const Image& history = on[0].color;
   const int w = cur.width, h = cur.height;
   auto at = [&](int x, int y, int c) {

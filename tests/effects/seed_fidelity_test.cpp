@@ -187,8 +187,8 @@ TEST(SeedFidelityVelocityAttenuation, ShortensTheTrailOfAMover) {
     "movers": [{"shape": "cube", "start": [-3, 0.5, 2], "end": [3, 0.5, 2], "speed": 3, "repeat": "once"}],
     "taa": {"rectify": "none"}})";
   RenderOptions o;
-  o.reference = true;
-  o.captureIds = true;
+  o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Ids};
   const std::vector<int> frames = {8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
   const auto& plain = test::renderOnce(mover, "{}", frames, o);
   const auto& on = test::renderOnce(mover, R"({"taa": {"velocity_attenuation": true}})",

@@ -40,7 +40,7 @@ const test::EffectRun& run(const char* weighting) {
 // Pixels within one of where the reference is brighter than 2 (the highlight).
 test::Mask highlight() {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const Image& ref = renderOnce(kHighlight, "{}", {31}, o)[31].reference;
   return test::dilate(test::maskWhere(ref.width, ref.height,
                                       [&](int x, int y) { return luminance(ref, x, y) > 2.0f; }),

@@ -19,8 +19,8 @@ struct AdaptiveFrame {
     FrameView v;
     v.frame = frame;
     v.output = &output;
-    v.resolved = &resolved;
-    v.segmentation = &mask;
+    v.set(Capture::Resolved, &resolved);
+    v.set(Capture::Segmentation, &mask);
     return v;
   }
 };
@@ -66,14 +66,14 @@ TEST(AdaptiveUnmarkedInvariant, FailsOnOneUnmarkedPixelChangedByOneUlp) {
 TEST(AdaptiveUnmarkedInvariant, FailsWithoutTheCapturedImages) {
   AdaptiveFrame f;
   FrameView v = f.view(0);
-  v.segmentation = nullptr;
+  v.set(Capture::Segmentation, nullptr);
   const auto o = runViews("adaptive_unmarked", adaptiveCase(), {v});
   EXPECT_FALSE(o.passed);
   EXPECT_TRUE(contains(o.detail, "segmentation")) << o.detail;
 }
 
 TEST(AdaptiveUnmarkedInvariant, AppliesToAdaptiveCasesOnly) {
-  EXPECT_TRUE(needsOf("adaptive_unmarked").adaptive);
+  EXPECT_TRUE(needsOf("adaptive_unmarked").captures.has(Capture::Segmentation));
   EXPECT_EQ(inapplicable("adaptive_unmarked", adaptiveCase()), "");
   EXPECT_TRUE(contains(inapplicable("adaptive_unmarked", staticCase()), "taa.mode"));
   auto sharpened = adaptiveCase();

@@ -63,16 +63,20 @@ TEST(InvariantRunner, FromFrameHoldsBackWarmUpExceptFromInvariantsThatJudgeEvery
 }
 
 TEST(InvariantFactory, NeedsMatchWhatEachInvariantReads) {
-  EXPECT_TRUE(needsOf("history_bounded").current);
-  const Needs ghost = needsOf("no_ghosting");
-  EXPECT_TRUE(ghost.reference && ghost.ids && !ghost.velocity);
-  const Needs stab = needsOf("temporal_stability");
-  EXPECT_TRUE(stab.reference && stab.ids && stab.velocity);
-  EXPECT_TRUE(needsOf("converges").reference);
-  EXPECT_TRUE(needsOf("energy").reference);
+  using C = Capture;
+  EXPECT_EQ(needsOf("history_bounded").captures, CaptureSet({C::Current}));
+  EXPECT_EQ(needsOf("no_ghosting").captures, CaptureSet({C::Reference, C::Ids}));
+  EXPECT_EQ(needsOf("temporal_stability").captures,
+            CaptureSet({C::Reference, C::Ids, C::Velocity}));
+  EXPECT_EQ(needsOf("converges").captures, CaptureSet({C::Reference}));
+  EXPECT_EQ(needsOf("energy").captures, CaptureSet({C::Reference}));
+  EXPECT_EQ(needsOf("adaptive_unmarked").captures, CaptureSet({C::Resolved, C::Segmentation}));
+  EXPECT_EQ(needsOf("tscmaa_non_edge").captures, CaptureSet({C::Current, C::Cmaa, C::EdgeMask}));
   const Needs fin = needsOf("finite");
-  EXPECT_FALSE(fin.reference || fin.current || fin.ids || fin.velocity || fin.secondRun);
-  EXPECT_FALSE(needsOf("bit_stable").reference);
+  EXPECT_TRUE(fin.captures.empty());
+  EXPECT_FALSE(fin.secondRun);
+  EXPECT_TRUE(needsOf("bit_stable").captures.empty());
+  EXPECT_FALSE(needsOf("bit_stable").secondRun);
 }
 
 TEST(InvariantValidation, InapplicableInvariantIsAProblemAtItsKey) {

@@ -66,10 +66,10 @@ struct Frame {
     v.frame = frame;
     v.historyReset = reset;
     v.output = output.data.empty() ? nullptr : &output;
-    v.reference = reference.data.empty() ? nullptr : &reference;
-    v.current = current.data.empty() ? nullptr : &current;
-    v.ids = ids.data.empty() ? nullptr : &ids;
-    v.velocity = velocity.data.empty() ? nullptr : &velocity;
+    v.set(Capture::Reference, reference.data.empty() ? nullptr : &reference);
+    v.set(Capture::Current, current.data.empty() ? nullptr : &current);
+    v.set(Capture::Ids, ids.data.empty() ? nullptr : &ids);
+    v.set(Capture::Velocity, velocity.data.empty() ? nullptr : &velocity);
     v.sha256 = sha256;
     return v;
   }

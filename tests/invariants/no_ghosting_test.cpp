@@ -96,7 +96,7 @@ TEST(InvariantNoGhosting, MissingIdsFails) {
   seq[3].ids = Image();
   const auto o = runAll("no_ghosting", ghostCase(), seq);
   EXPECT_FALSE(o.passed);
-  EXPECT_TRUE(contains(o.detail, "frame 3: no ids image")) << o.detail;
+  EXPECT_TRUE(contains(o.detail, "frame 3: no material_id image")) << o.detail;
 }
 
 TEST(InvariantNoGhosting, InapplicableWithoutMovingMoversOrHistory) {

@@ -28,9 +28,9 @@ struct TscmaaFrame {
     FrameView v;
     v.frame = frame;
     v.output = &output;
-    v.current = &input;
-    v.cmaa = &cmaa;
-    v.edgeMask = &mask;
+    v.set(Capture::Current, &input);
+    v.set(Capture::Cmaa, &cmaa);
+    v.set(Capture::EdgeMask, &mask);
     return v;
   }
 };

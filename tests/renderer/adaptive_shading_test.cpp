@@ -20,9 +20,9 @@ TracedAndRaster traceEveryPixel(const std::string& members) {
       "jitter": {"pattern": "none"}, "taa": {"mode": "adaptive"},
       "adaptive": {"trace_all": true, "samples": 1}, "script": {"frames": 1}})");
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   const auto records = test::renderCaseWith(spec, o, {0});
-  return {records.back().color, test::auxImage(records.back(), "current")};
+  return {records.back().color, test::capturedImage(records.back(), Capture::Current)};
 }
 
 // Traced and raster agree to float rounding (half-float storage) over a 5x5 block.

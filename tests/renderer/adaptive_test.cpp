@@ -58,11 +58,11 @@ Agreement tracedAgainstRaster(const std::string& scene, bool rayLod, int frames 
                                        (rayLod ? "true" : "false") + R"(},
       "script": {"frames": )" + std::to_string(frames) + "}}");
   RenderOptions o;
-  o.captureCurrent = true;
+  o.captures |= {Capture::Current};
   const auto records = test::renderCaseWith(spec, o, {frames - 1});
   const FrameRecord& last = records.back();
   EXPECT_DOUBLE_EQ(statOf(last, "traced_share"), 1.0);
-  return agreement(last.color, test::auxImage(last, "current"));
+  return agreement(last.color, test::capturedImage(last, Capture::Current));
 }
 
 std::string builtin(const std::string& name) { return R"("scene": {"builtin": ")" + name + R"("})"; }
@@ -112,11 +112,11 @@ const char* kWiresMoving = R"({"scene": {"builtin": "wires"},
 TEST(AdaptiveUnmarked, UnmarkedPixelsAreTheResolveOutputBitForBit) {
   const auto spec = test::caseFromJson(kWiresMoving);
   RenderOptions o;
-  o.captureAdaptive = true;
+  o.captures |= {Capture::Resolved, Capture::Segmentation};
   const auto frames = test::renderCaseWith(spec, o, {0, 1, 2, 3, 4, 5});
   for (const auto& f : frames) {
-    const Image& resolved = test::auxImage(f, "taa_resolve");
-    const Image& mask = test::auxImage(f, "segmentation");
+    const Image& resolved = test::capturedImage(f, Capture::Resolved);
+    const Image& mask = test::capturedImage(f, Capture::Segmentation);
     ASSERT_TRUE(resolved.sameShape(f.color));
     size_t unmarked = 0, differing = 0, changedMarked = 0;
     for (int y = 0; y < f.color.height; ++y)
@@ -149,10 +149,10 @@ TEST(AdaptiveUnmarked, TheResolveIsThePlainFullResolve) {
     "camera": {"strafe": {"speed": 1.0, "distance": 0.6}}, "taa": {"mode": "full"}, "script": {"frames": 1}})");
   adaptive.script.frames = 1;
   RenderOptions o;
-  o.captureAdaptive = true;
+  o.captures |= {Capture::Resolved, Capture::Segmentation};
   const auto a = test::renderCaseWith(adaptive, o, {0});
   const auto p = test::renderCase(plain, {0});
-  const Image& resolved = test::auxImage(a[0], "taa_resolve");
+  const Image& resolved = test::capturedImage(a[0], Capture::Resolved);
   ASSERT_TRUE(resolved.sameShape(p[0].color));
   EXPECT_EQ(std::memcmp(resolved.data.data(), p[0].color.data.data(),
                         resolved.data.size() * sizeof(float)),

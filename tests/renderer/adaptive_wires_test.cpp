@@ -28,7 +28,7 @@ spec::CaseSpec wiresCase(spec::TaaMode mode) {
 // Output (or reference) images at kMeasured.
 std::vector<Image> render(const spec::CaseSpec& spec, const scene::Scene& scene, bool reference) {
   RenderOptions o;
-  o.reference = reference;
+  if (reference) o.captures |= {Capture::Reference};
   Renderer renderer(test::gpu(), spec, scene, o);
   std::vector<Image> out;
   for (int f = 0; f < spec.script.frames; ++f) {

@@ -36,9 +36,9 @@ double edgeRmse(const Image& a, const Image& b, const Image& mask) {
 
 RenderOptions captures(bool reference) {
   RenderOptions o;
-  o.reference = reference;
-  o.captureCurrent = true;
-  o.captureTscmaa = true;
+  if (reference) o.captures |= {Capture::Reference};
+  o.captures |= {Capture::Current};
+  o.captures |= {Capture::Cmaa, Capture::EdgeMask};
   return o;
 }
 

@@ -24,8 +24,8 @@ constexpr double kRate = 0.8;  // units of rise per second at x = +0.5
 Checked checkBend(const spec::CaseSpec& spec, const FrameRecord& r) {
   const auto s = script::frameState(spec, r.frame);
   const Image& depth = test::auxImage(r, "depth");
-  const Image& velocity = test::auxImage(r, "velocity");
-  const Image& ids = test::auxImage(r, "material_id");
+  const Image& velocity = test::capturedImage(r, Capture::Velocity);
+  const Image& ids = test::capturedImage(r, Capture::Ids);
   const glm::dmat4 inv = glm::inverse(glm::dmat4(s.camera.viewProjection));
   const glm::dmat4 prevVp(s.prevCamera.viewProjection);
   const glm::dvec2 size(s.renderSize);

@@ -38,10 +38,10 @@ spec::CaseSpec tiltCase(float strength, const std::string& lightTravel,
 // or right (quad B) half of the frame.
 double halfLuma(const spec::CaseSpec& spec, bool right) {
   RenderOptions o;
-  o.captureIds = true;
+  o.captures |= {Capture::Ids};
   const auto records = test::renderCaseWith(spec, o, {0});
   const Image& im = records[0].color;
-  const Image& ids = test::auxImage(records[0], "material_id");  // channel 1: material, -1 sky
+  const Image& ids = test::capturedImage(records[0], Capture::Ids);  // channel 1: material, -1 sky
   double sum = 0.0;
   for (int y = 0; y < im.height; ++y)
     for (int x = right ? im.width / 2 : 0; x < (right ? im.width : im.width / 2); ++x)

@@ -36,9 +36,9 @@ struct ShadowFrames {
 
 ShadowFrames renderShadowCase(const spec::CaseSpec& spec) {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   auto records = test::renderCaseWith(spec, o);
-  return {records[0].color, test::auxImage(records[0], "reference")};
+  return {records[0].color, test::capturedImage(records[0], Capture::Reference)};
 }
 
 float shadowLuma(const Image& im, int x, int y) {

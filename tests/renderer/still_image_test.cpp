@@ -32,11 +32,11 @@ TEST(StillImage, NearestAtFullSizeWithoutJitterIsTheImageAndSoIsTheReference) {
   const auto spec = stillCase(
       R"("jitter": {"pattern": "none"}, "taa": {"mode": "off"}, "script": {"frames": 1}, "reference": {"samples": 4})");
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   const auto records = test::renderCaseWith(spec, o, {0});
   const Image src = stillSource();
   const Image& frame = records[0].color;
-  const Image& reference = test::auxImage(records[0], "reference");
+  const Image& reference = test::capturedImage(records[0], Capture::Reference);
   ASSERT_EQ(frame.width, src.width);
   ASSERT_EQ(frame.height, src.height);
   float worstFrame = 0.0f, worstReference = 0.0f;
@@ -124,8 +124,8 @@ TEST(FxaaDebugBorder, TheBorderIsAlwaysMarkedForFxaa) {
       "script": {"frames": 3}, "output": {"frames": [2]}})");
     spec.adaptive.fxaa_debug_border = border;
     RenderOptions o;
-    o.captureAdaptive = true;
-    return test::auxImage(test::renderCaseWith(spec, o, {2})[2], "segmentation");
+    o.captures |= {Capture::Resolved, Capture::Segmentation};
+    return test::capturedImage(test::renderCaseWith(spec, o, {2})[2], Capture::Segmentation);
   };
   const Image plain = mask(0), framed = mask(6);
   int plainFxaaBorder = 0, changedInside = 0;

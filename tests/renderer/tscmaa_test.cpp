@@ -21,7 +21,7 @@ const char* kMoving = R"("scene": {"builtin": "fence"}, "script": {"frames": 6},
 
 RenderOptions captures() {
   RenderOptions o;
-  o.captureTscmaa = true;
+  o.captures |= {Capture::Cmaa, Capture::EdgeMask};
   return o;
 }
 

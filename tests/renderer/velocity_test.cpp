@@ -24,8 +24,8 @@ struct Checked {
 Checked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
   const auto s = script::frameState(spec, r.frame);
   const Image& depth = test::auxImage(r, "depth");
-  const Image& velocity = test::auxImage(r, "velocity");
-  const Image& ids = test::auxImage(r, "material_id");
+  const Image& velocity = test::capturedImage(r, Capture::Velocity);
+  const Image& ids = test::capturedImage(r, Capture::Ids);
   const glm::dmat4 inv = glm::inverse(glm::dmat4(s.camera.viewProjection));
   const glm::dmat4 prevVp(s.prevCamera.viewProjection);
   const glm::dvec2 size(s.renderSize);
@@ -112,7 +112,7 @@ TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
                      "rotation_speed_deg": 5, "rotation_axis": [0, 1, 0]}])");
   const auto frames = test::renderCase(spec);
   // The cube must actually be on screen and moving, or the test proves nothing.
-  const Image& ids = test::auxImage(frames[3], "material_id");
+  const Image& ids = test::capturedImage(frames[3], Capture::Ids);
   int moverPixels = 0;
   for (int y = 0; y < ids.height; ++y)
     for (int x = 0; x < ids.width; ++x) moverPixels += ids.at(x, y, 2) > 0.5f;
@@ -125,7 +125,7 @@ TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
 TEST(Velocity, IsZeroForAStaticCameraAndScene) {
   const auto spec = makeCase(R"("camera": {})");
   const auto frames = test::renderCase(spec);
-  const Image& v = test::auxImage(frames[3], "velocity");
+  const Image& v = test::capturedImage(frames[3], Capture::Velocity);
   // Rounding of the two (identical) projections may differ by an ulp once fused.
   for (float value : v.data) ASSERT_LT(std::fabs(value), 1e-4f);
 }

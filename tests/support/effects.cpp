@@ -24,8 +24,8 @@ const EffectRun& renderOnce(const std::string& base, const std::string& patch,
   static std::map<std::string, std::unique_ptr<EffectRun>> cache;
   std::string key = base + '\n' + patch + '\n';
   for (int f : withImages) key += std::to_string(f) + ',';
-  key += std::to_string(options.reference) + std::to_string(options.captureCurrent) +
-         std::to_string(options.captureIds) + std::to_string(options.captureVelocity);
+  for (const CaptureInfo& c : kCaptures) key += options.captures.has(c.capture) ? '1' : '0';
+  key += options.hashEveryFrame ? 'h' : '-';
   auto& slot = cache[key];
   if (!slot) {
     auto run = std::make_unique<EffectRun>();
@@ -83,7 +83,7 @@ int count(const Mask& m) {
 }
 
 Mask moverMask(const FrameRecord& r) {
-  const Image& ids = auxImage(r, "material_id");
+  const Image& ids = capturedImage(r, Capture::Ids);
   return maskWhere(ids.width, ids.height, [&](int x, int y) { return ids.at(x, y, 2) > 0.5f; });
 }
 

@@ -70,14 +70,15 @@ spec::CaseSpec caseFromJson(const std::string& json, const std::string& name) {
 }
 
 const Image& auxImage(const FrameRecord& r, const std::string& name) {
-  if (name == "reference") {
-    if (!r.hasReference)
-      throw std::runtime_error("frame " + std::to_string(r.frame) + " has no reference");
-    return r.reference;
-  }
   for (const auto& a : r.aux)
     if (a.name == name) return a.image;
   throw std::runtime_error("frame " + std::to_string(r.frame) + " has no buffer " + name);
+}
+
+const Image& capturedImage(const FrameRecord& r, Capture c) {
+  if (const Image* image = r.capture(c)) return *image;
+  throw std::runtime_error("frame " + std::to_string(r.frame) + " has no " + captureName(c) +
+                           " capture");
 }
 
 std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,

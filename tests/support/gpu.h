@@ -38,7 +38,9 @@ std::vector<FrameRecord> renderCase(const spec::CaseSpec& spec, const std::vecto
 std::vector<FrameRecord> renderCaseWith(const spec::CaseSpec& spec, const RenderOptions& options,
                                         const std::vector<int>& framesWithImages = {});
 
-// An aux image of a record by name ("reference" gives the reference); throws when absent.
+// One of the case's output.aux buffers of a record by name ("depth"); throws when absent.
 const Image& auxImage(const FrameRecord& record, const std::string& name);
+// A capture of a record (api/captures.h); throws when it was not read back.
+const Image& capturedImage(const FrameRecord& record, Capture capture);
 
 }  // namespace taa::test

@@ -41,13 +41,13 @@ void copyImage(VkCommandBuffer cmd, vk::Image& from, vk::Image& to) {
 }  // namespace
 
 AdaptivePass::AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
-                           const DrawList& firstFrame, bool capture)
+                           const DrawList& firstFrame, CaptureSet captures)
     : spec_(spec), segmentation_(ctx, spec), trace_(ctx, spec, scene, firstFrame) {
   if (spec.adaptive.fxaa_out_of_history && !spec.adaptive.trace_all) {
     fxaa_ = std::make_unique<FxaaPass>(ctx, FxaaSettings{}, true);
     filtered_ = outputImage(ctx, "adaptive_fxaa", spec, VK_IMAGE_USAGE_STORAGE_BIT);
   }
-  if (capture)
+  if (captures.has(Capture::Resolved))
     beforeTrace_ = outputImage(ctx, "taa_resolve_copy", spec, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
 }
 
@@ -91,10 +91,10 @@ std::vector<std::pair<std::string, double>> AdaptivePass::stats() const {
 }
 
 std::vector<StageCapture> AdaptivePass::captures() {
-  if (!beforeTrace_) return {};
   // At the frame's render size, which is the resolve's output size (no upsampling here).
-  return {{"taa_resolve", &beforeTrace_, false, lastSize_},
-          {"segmentation", &segmentation_.mask(), true, lastSize_}};
+  std::vector<StageCapture> out = {{Capture::Segmentation, &segmentation_.mask(), lastSize_}};
+  if (beforeTrace_) out.push_back({Capture::Resolved, &beforeTrace_, lastSize_});
+  return out;
 }
 
 std::vector<std::string> AdaptivePass::describe() const {

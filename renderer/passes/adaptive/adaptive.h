@@ -28,10 +28,10 @@ struct AdaptiveFrame {
 
 class AdaptivePass final : public ResolveFollower {
  public:
-  // `capture`: keep a copy of the resolve's output before tracing and read it back
-  // with the mask (for the adaptive_unmarked invariant and tests).
+  // With Capture::Resolved in `captures` it keeps a copy of the resolve's output before
+  // tracing to read back (for the adaptive_unmarked invariant and tests).
   AdaptivePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
-               const DrawList& firstFrame, bool capture);
+               const DrawList& firstFrame, CaptureSet captures);
 
   // `resolved` is the resolve's output; returns the frame's output.
   vk::Image& record(VkCommandBuffer cmd, vk::GpuTimer& timer, const AdaptiveFrame& frame,

@@ -67,6 +67,19 @@ Convergence convergence(const std::vector<double>& e) {
   return c;
 }
 
+// "clip.hlsl alpha=0.2 clip=true": a lane's taa section for the legend, by name and typed value
+// whether it came from --params or a lanes file (its other keys follow as key=value).
+std::string describeLane(const nlohmann::json& taa) {
+  std::string out = taa.value("shader", std::string());
+  const auto add = [&](const std::string& item) { out += (out.empty() ? "" : " ") + item; };
+  if (const auto it = taa.find("shader_params"); it != taa.end() && it->is_array())
+    for (const auto& p : *it)
+      if (p.is_object()) add(p.value("name", std::string("?")) + "=" + p.value("value", nlohmann::json()).dump());
+  for (const auto& [key, value] : taa.items())
+    if (key != "shader" && key != "shader_params") add(key + "=" + value.dump());
+  return out;
+}
+
 LaneSpec shaderLane(const fs::path& shader, const std::string& params, const std::string& name,
                     bool qualify) {
   LaneSpec l;
@@ -74,7 +87,6 @@ LaneSpec shaderLane(const fs::path& shader, const std::string& params, const std
   l.taa = {{"shader", shader.filename().string()}};
   auto list = nlohmann::json::array();
   std::stringstream in(params);
-  std::string describe = shader.filename().string();
   for (std::string item; std::getline(in, item, ',');) {
     if (item.empty()) continue;
     const size_t eq = item.find('=');
@@ -92,10 +104,9 @@ LaneSpec shaderLane(const fs::path& shader, const std::string& params, const std
       throw cases::CaseError({"--params " + params + ": " + key + "'s value '" + text +
                               "' is not a number, true or false"});
     list.push_back({{"name", key}, {"value", value}});
-    describe += " " + item;
   }
   if (!list.empty()) l.taa["shader_params"] = list;
-  l.describe = describe;
+  l.describe = describeLane(l.taa);
   l.name = !name.empty() ? name : shader.stem().string();
   if (name.empty() && qualify && !list.empty()) l.name += "[" + params + "]";
   return l;
@@ -129,7 +140,7 @@ std::vector<LaneSpec> loadLanes(const fs::path& file) {
     l.name = name;
     l.taa = taa;
     if (taa.contains("shader")) l.shaderRoot = fs::absolute(file).parent_path();
-    l.describe = taa.dump();
+    l.describe = describeLane(taa);
     out.push_back(std::move(l));
   }
   return out;

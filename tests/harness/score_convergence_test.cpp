@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "case/case_error.h"
 #include "score/score.h"
 
 namespace taa::score {
 namespace {
+
+namespace fs = std::filesystem;
 
 std::vector<double> linear(double from, double to, int n) {
   std::vector<double> v;
@@ -77,9 +81,22 @@ TEST(ScoreLanes, ParamsAreTypedAndNamedPerLane) {
   ASSERT_EQ(l.taa["shader_params"].size(), 2u);
   EXPECT_EQ(l.taa["shader_params"][0]["value"], 0.2);
   EXPECT_TRUE(l.taa["shader_params"][1]["value"].is_boolean());
+  EXPECT_EQ(l.describe, "clip.hlsl alpha=0.2 clip=true");
   EXPECT_EQ(shaderLane("clip.hlsl", "", "mine", false).name, "mine");
   EXPECT_THROW(shaderLane("clip.hlsl", "alpha", "", false), cases::CaseError);
   EXPECT_THROW(shaderLane("clip.hlsl", "alpha=fast", "", false), cases::CaseError);
+}
+
+// A lanes file's lane reads in the legend as a --params one does: by name and typed value.
+TEST(ScoreLanes, ALanesFileShowsParamsByNameAndTypedValue) {
+  const fs::path file = fs::path(TAA_TEST_OUT) / "score_lanes" / "lanes.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << R"({"fixed": {"shader": "g.comp", "shader_clamps": true,
+    "shader_params": [{"name": "depth_fix", "value": true}, {"name": "gain", "value": 0.5}]}})";
+  const auto lanes = loadLanes(file);
+  ASSERT_EQ(lanes.size(), 1u);
+  EXPECT_EQ(lanes[0].name, "fixed");
+  EXPECT_EQ(lanes[0].describe, "g.comp depth_fix=true gain=0.5 shader_clamps=true");
 }
 
 }  // namespace

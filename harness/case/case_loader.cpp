@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 #include "case/case_error.h"
 #include "case/case_validate.h"
@@ -12,8 +13,12 @@
 #include "core/json_guard.h"
 #include "core/sha256.h"
 #include "invariants/registry.h"
+#include "user/glsl_compiler.h"
+#include "user/user_resolve.h"
 
 namespace taa::cases {
+
+namespace fs = std::filesystem;
 
 std::string joinNames(const std::vector<std::string>& names) {
   std::string out;
@@ -29,27 +34,50 @@ std::string formatNumber(double value) {
 
 namespace {
 
-// The case file's bytes, then each file it references (scene, mover models, tracks) by
-// its relative path and bytes: editing any of them makes blessed goldens stale. Each is
-// read as an input file: inside the case's folder after resolving links, regular, bounded.
+// The files a user's shader read to compile: itself, then every include inside its folder,
+// by path relative to that folder (the installed taa_user.h is the harness's, not the case's).
+std::vector<std::pair<std::string, std::string>> shaderInputs(const spec::CaseSpec& spec) {
+  const UserShader shader = loadUserShader(spec);
+  std::vector<std::pair<std::string, std::string>> out{{"taa.shader", spec.taa.shader}};
+  std::error_code ec;
+  const fs::path root = fs::canonical(shader.root, ec);
+  for (const auto& inc : shader.includes) {
+    const fs::path rel = inc.lexically_relative(root);
+    if (ec || rel.empty() || *rel.begin() == "..") continue;
+    out.emplace_back("taa.shader (#include)", rel.generic_string());
+  }
+  return out;
+}
+
+// The case file's bytes, then each file it references (scene, mover models, tracks, a user's
+// shader and its includes) by its relative path and bytes: editing any of them makes blessed
+// goldens stale. Each is read as an input file: inside its folder after resolving links,
+// regular, bounded.
 std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
-  std::vector<std::pair<std::string, std::string>> refs;  // (key, relative path)
-  if (!spec.scene.gltf.empty()) refs.emplace_back("scene.gltf", spec.scene.gltf);
-  if (!spec.camera.track.empty()) refs.emplace_back("camera.track", spec.camera.track);
-  if (!spec.taa.shader.empty()) refs.emplace_back("taa.shader", spec.taa.shader);
+  const fs::path dir = spec.file.parent_path();
+  std::vector<std::tuple<std::string, std::string, fs::path>> refs;  // (key, path, its folder)
+  if (!spec.scene.gltf.empty()) refs.emplace_back("scene.gltf", spec.scene.gltf, dir);
+  if (!spec.camera.track.empty()) refs.emplace_back("camera.track", spec.camera.track, dir);
+  if (!spec.taa.shader.empty()) {
+    const fs::path root = spec.taa.shader_root.empty() ? dir : fs::path(spec.taa.shader_root);
+    try {
+      for (const auto& [key, ref] : shaderInputs(spec)) refs.emplace_back(key, ref, root);
+    } catch (const user::ShaderCompileError& e) {
+      throw CaseError({spec.file.string() + ": taa.shader: does not compile:\n" + e.what()});
+    }
+  }
   for (size_t i = 0; i < spec.movers.size(); ++i) {
     const std::string at = "movers[" + std::to_string(i) + "].";
-    if (!spec.movers[i].gltf.empty()) refs.emplace_back(at + "gltf", spec.movers[i].gltf);
-    if (!spec.movers[i].track.empty()) refs.emplace_back(at + "track", spec.movers[i].track);
+    if (!spec.movers[i].gltf.empty()) refs.emplace_back(at + "gltf", spec.movers[i].gltf, dir);
+    if (!spec.movers[i].track.empty()) refs.emplace_back(at + "track", spec.movers[i].track, dir);
   }
   Sha256 h;
   h.update(text.data(), text.size());
-  for (const auto& [key, ref] : refs) {
+  for (const auto& [key, ref, folder] : refs) {
     std::string b;
     try {
-      const auto dir = spec.file.parent_path();
-      containedRealPath(dir, dir / ref, key);
-      b = readInputFile(dir / ref, kMaxSceneFileBytes);
+      containedRealPath(folder, folder / ref, key);
+      b = readInputFile(folder / ref, kMaxSceneFileBytes);
     } catch (const InputFileError& e) {
       throw CaseError({spec.file.string() + ": " + key + ": " + e.what()});
     }
@@ -62,9 +90,31 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
   return toHex(digest.data(), digest.size());
 }
 
+// A user's resolve in force: none of the built-in resolve's settings (it replaces them), and
+// every constant the shader declares with its typed value, given or default.
+nlohmann::json userShaderJson(const spec::CheckedCase& spec, const nlohmann::json& taa) {
+  nlohmann::json out;
+  for (const char* key : {"mode", "shader", "shader_language", "shader_clamps"}) out[key] = taa[key];
+  const UserShader shader = loadUserShader(spec);
+  if (shader.language == user::ShaderLanguage::Hlsl) out["shader_entry"] = taa["shader_entry"];
+  auto params = nlohmann::json::array();
+  for (const auto& v : userParamValues(spec.taa, shader.interface))
+    params.push_back({{"name", v.name},
+                      {"value", toJson(v.value)},
+                      {"type", user::paramTypeName(v.type)},
+                      {"given", v.given}});
+  out["shader_params"] = params;
+  return out;
+}
+
 }  // namespace
 
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file) {
+  return parseCase(text, file, {});
+}
+
+LoadedCase parseCase(const std::string& text, const std::filesystem::path& file,
+                     const LaneParse& lane) {
   const std::string where = file.string();
   if (const std::string problem = jsonStructureProblem(text); !problem.empty())
     throw CaseError({where + ": " + problem});
@@ -99,6 +149,9 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
   reader.finish();
   if (!ctx.problems.empty()) throw CaseError(ctx.problems);
   out.present = std::move(ctx.present);
+  if (!lane.shaderRoot.empty())
+    out.spec.taa.shader_root = fs::absolute(lane.shaderRoot).lexically_normal().string();
+  out.spec.taa.shader_capabilities_unchecked = lane.capabilitiesUnchecked;
   validateCase(out.spec, out.present);
   out.sha256 = inputsSha256(out.spec, text);
   out.abCase = abCaseJson(root, out.spec);
@@ -120,6 +173,7 @@ nlohmann::json resolvedJson(const spec::CheckedCase& spec) {
   fields(writer, copy);
   // taa.moving is a second parameter set only when the case gives one.
   if (!spec.taa.moving.active) out["taa"].erase("moving");
+  if (!spec.taa.shader.empty()) out["taa"] = userShaderJson(spec, out["taa"]);
   return out;
 }
 

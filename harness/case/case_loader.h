@@ -27,6 +27,17 @@ LoadedCase loadCase(const std::filesystem::path& file);
 // Parses JSON text as if read from `file` (tests and in-memory cases use this).
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file);
 
+// The same for a lane the harness builds: taa.shader relative to `shaderRoot` rather than
+// to the case's folder (its includes must stay inside that folder; a scorecard's lane names
+// a shader on the command line, a sweep's preset one beside its presets file), and a case
+// the shader lacks a capability for left to the lane's runner to skip.
+struct LaneParse {
+  std::filesystem::path shaderRoot;  // taa.shader_root; empty: the case's folder
+  bool capabilitiesUnchecked = false;  // taa.shader_capabilities_unchecked
+};
+LoadedCase parseCase(const std::string& text, const std::filesystem::path& file,
+                     const LaneParse& lane);
+
 // Every value in force, as JSON (taa-harness validate --print).
 nlohmann::json resolvedJson(const spec::CheckedCase& spec);
 

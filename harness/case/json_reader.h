@@ -142,6 +142,16 @@ class JsonReader {
     out = static_cast<float>(d);
     return true;
   }
+  bool read(const nlohmann::json& j, const std::string& path, spec::NumberOrBool& out) {
+    if (j.is_boolean()) {
+      out = {j.get<bool>() ? 1.0 : 0.0, true};
+      return true;
+    }
+    if (!j.is_number()) return typeError(path, "a number, or true or false");
+    out = {j.get<double>(), false};
+    if (!std::isfinite(out.number)) return typeError(path, "a finite number");
+    return true;
+  }
   bool read(const nlohmann::json& j, const std::string& path, std::string& out) {
     if (!j.is_string()) return typeError(path, "a string");
     out = j.get<std::string>();

@@ -28,6 +28,8 @@ nlohmann::json toJson(const T& value) {
     return shortest(value);
   } else if constexpr (std::is_enum_v<T>) {
     return spec::enumToString(value);
+  } else if constexpr (std::is_same_v<T, spec::NumberOrBool>) {
+    return value.isBool ? nlohmann::json(value.number != 0.0) : nlohmann::json(value.number);
   } else if constexpr (std::is_same_v<T, glm::vec2>) {
     return nlohmann::json::array({shortest(value.x), shortest(value.y)});
   } else if constexpr (std::is_same_v<T, glm::vec3>) {
@@ -76,6 +78,7 @@ template <class T> struct TypeName { static constexpr const char* value = "?"; }
 template <> struct TypeName<bool> { static constexpr const char* value = "bool"; };
 template <> struct TypeName<int> { static constexpr const char* value = "int"; };
 template <> struct TypeName<float> { static constexpr const char* value = "number"; };
+template <> struct TypeName<spec::NumberOrBool> { static constexpr const char* value = "number or bool"; };
 template <> struct TypeName<std::string> { static constexpr const char* value = "string"; };
 template <> struct TypeName<glm::vec2> { static constexpr const char* value = "vec2"; };
 template <> struct TypeName<glm::vec3> { static constexpr const char* value = "vec3"; };

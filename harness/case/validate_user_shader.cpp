@@ -4,6 +4,7 @@
 
 #include "case/case_validate.h"
 #include "user/glsl_compiler.h"
+#include "user/user_capabilities.h"
 #include "user/user_resolve.h"
 
 namespace taa::cases {
@@ -13,7 +14,8 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   std::vector<std::pair<std::string, std::string>> out;
   const auto& t = spec.taa;
   if (t.shader.empty()) {
-    for (const char* k : {"taa.shader_params", "taa.shader_clamps"})
+    for (const char* k : {"taa.shader_params", "taa.shader_clamps", "taa.shader_language",
+                          "taa.shader_entry"})
       if (present.count(k))
         out.emplace_back(k, "applies only to a user's resolve; set taa.shader or remove it");
     return out;
@@ -38,6 +40,13 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   if (spec.debug.output != spec::DebugOutput::None)
     out.emplace_back("debug.output",
                      "debug views come from the built-in resolve; remove it with taa.shader");
+  if (present.count("taa.shader_entry") && userShaderLanguage(t) != user::ShaderLanguage::Hlsl)
+    out.emplace_back("taa.shader_entry",
+                     "names an HLSL entry point, but " + t.shader +
+                         " is GLSL (whose entry is main); remove it, or set taa.shader_language "
+                         "to hlsl if the file is HLSL");
+  if (t.shader_entry.empty())
+    out.emplace_back("taa.shader_entry", "is empty; name the HLSL function to run, or remove it");
   if (!out.empty()) return out;
   try {
     const UserShader shader = loadUserShader(spec);
@@ -45,6 +54,9 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
       const auto colon = p.find(": ");
       out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
     }
+    if (!t.shader_capabilities_unchecked)
+      for (const auto& why : user::missingCapabilities(spec, shader.capabilities, t.shader))
+        out.emplace_back("taa.shader", why);
   } catch (const user::ShaderCompileError& e) {
     out.emplace_back("taa.shader", std::string("does not compile:\n") + e.what());
   }

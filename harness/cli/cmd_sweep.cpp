@@ -50,6 +50,7 @@ int cmdSweep(const Args& args) {
   const auto presets = sweep::loadPresets(presetsFile);
   const auto names = split(a.value("--presets"));
   sweep::SweepOptions options;
+  options.presetsDir = fs::absolute(presetsFile).parent_path();
   try {
     options.fromFrame = std::stoi(a.value("--from-frame", "0"));
   } catch (const std::exception&) {

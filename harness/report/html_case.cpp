@@ -205,6 +205,7 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
        "</span><span>" + escapeMarkup(c.name) + "</span><span class=\"file\">" +
        escapeMarkup(c.file) + "</span></h2>\n";
   if (!c.description.empty()) s += "<p class=\"desc\">" + escapeMarkup(c.description) + "</p>\n";
+  if (!c.resolve.empty()) s += "<p class=\"desc\">" + escapeMarkup(c.resolve) + "</p>\n";
   if (!c.message.empty()) s += "<div class=\"msg\">" + escapeMarkup(c.message) + "</div>\n";
   if (!c.blessCommand.empty())
     s += "<div class=\"bless\"><span class=\"muted\">bless:</span><code>" +

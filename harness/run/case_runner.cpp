@@ -16,6 +16,7 @@
 #include "run/invariant_run.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
+#include "user/user_resolve.h"
 
 namespace taa::run {
 
@@ -79,6 +80,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   result.name = spec.name;
   result.file = spec.file.string();
   result.description = spec.description;
+  result.resolve = describeUserShader(spec);
   result.status = CaseStatus::Pass;
   const auto env = golden::currentEnvironment(device.identity());
   result.fingerprint = env.fingerprint();
@@ -125,7 +127,8 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
     if (!o.passed) result.status = CaseStatus::Fail;
   }
   if (golden) {
-    result.status = worse(result.status, golden->finish(outputs, loaded.sha256, result));
+    result.goldenStatus = golden->finish(outputs, loaded.sha256, result);
+    result.status = worse(result.status, result.goldenStatus);
     for (auto& fc : result.frames)
       if (const auto it = abOutputs.find(fc.frame);
           it != abOutputs.end() && !fc.images.actual.empty())

@@ -25,9 +25,15 @@ bool caseFailed(const CaseResult& c) {
 }
 
 void printCase(std::ostream& out, const CaseResult& c) {
+  // A missing golden is a skip unless it fails the case by itself (CI=true, unusable goldens).
+  const bool goldensSkipped = c.goldenStatus == CaseStatus::NoGolden;
+  bool invariantFailed = false;
+  for (const auto& inv : c.invariants) invariantFailed |= !inv.passed;
   for (const auto& f : c.frames) {
     const bool ok = f.status == FrameStatus::Exact || f.status == FrameStatus::WithinTolerance;
-    out << (ok ? "PASS " : "FAIL ") << c.name << " frame " << f.frame << " golden ";
+    const bool skipped = f.status == FrameStatus::MissingGolden && goldensSkipped;
+    out << (ok ? "PASS " : skipped ? "SKIP " : "FAIL ") << c.name << " frame " << f.frame
+        << " golden ";
     if (f.status == FrameStatus::Exact) {
       out << "exact";
     } else if (f.status == FrameStatus::MissingGolden) {
@@ -69,8 +75,16 @@ void printCase(std::ostream& out, const CaseResult& c) {
       out << "ERROR " << c.name << ": " << c.message << "\n";
       break;
     case CaseStatus::Fail:
-      if (!c.message.empty()) out << "FAIL " << c.name << ": " << c.message << "\n";
-      if (!c.frames.empty() && !c.blessCommand.empty())
+      if (goldensSkipped)
+        out << "SKIP " << c.name << ": " << c.message << " once its invariants pass\n";
+      else if (!c.message.empty())
+        out << "FAIL " << c.name << ": " << c.message << "\n";
+      // bless refuses a case whose invariants fail: it is no way out of this failure.
+      if (invariantFailed)
+        out << "HINT " << c.name
+            << ": an invariant fails, so bless would refuse the frames; fix the resolve or the "
+               "case's checks (bless --force only if the invariant itself is wrong)\n";
+      else if (!c.frames.empty() && !c.blessCommand.empty())
         out << "HINT " << c.name << ": if the change is intended, look at the report, then " << c.blessCommand
             << "\n";
       break;

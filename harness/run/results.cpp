@@ -82,6 +82,8 @@ nlohmann::json toJson(const RunResults& r) {
                          {"file", c.file},
                          {"description", c.description},
                          {"status", toString(c.status)},
+                         {"resolve", c.resolve},
+                         {"golden_status", toString(c.goldenStatus)},
                          {"message", c.message},
                          {"bless_command", c.blessCommand},
                          {"fingerprint", c.fingerprint},
@@ -154,8 +156,12 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.name = jc.value("name", "");
     c.file = jc.value("file", "");
     c.description = jc.value("description", "");
+    c.resolve = jc.value("resolve", "");
     c.status = fromString<CaseStatus>(jc.value("status", "error"), {CaseStatus::Pass, CaseStatus::Fail, CaseStatus::Stale,
                                                                      CaseStatus::NoGolden, CaseStatus::Error});
+    c.goldenStatus = fromString<CaseStatus>(
+        jc.value("golden_status", jc.value("status", "error")),
+        {CaseStatus::Pass, CaseStatus::Fail, CaseStatus::Stale, CaseStatus::NoGolden, CaseStatus::Error});
     c.message = jc.value("message", "");
     c.blessCommand = jc.value("bless_command", "");
     c.fingerprint = jc.value("fingerprint", "");

@@ -86,7 +86,12 @@ struct CaseResult {
   std::string name;
   std::string file;
   std::string description;
+  std::string resolve;  // the user's shader and its parameters; "" for the built-in resolve
   CaseStatus status = CaseStatus::Error;
+  // The golden comparison's own verdict (Pass without goldens to check), so the console can
+  // tell a missing golden that is a skip from one that fails (CI=true) when an invariant
+  // fails the case either way.
+  CaseStatus goldenStatus = CaseStatus::Pass;
   std::string message;        // error text, or the stale/no-golden explanation
   std::string blessCommand;   // what to run when the change is intended
   std::string fingerprint;    // this run's environment

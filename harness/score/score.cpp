@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <nlohmann/json.hpp>
+#include <set>
 
 #include "api/renderer.h"
 #include "case/case_error.h"
@@ -17,7 +17,7 @@
 #include "invariants/registry.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
-#include "user/glsl_compiler.h"
+#include "user/user_capabilities.h"
 #include "user/user_resolve.h"
 
 namespace taa::score {
@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// One replay of a case: the built-in resolve or the user's.
+// One lane's replay of a case. (The lockstep replay of lanes against one reference is the
+// sweep's too: a shared lane runner would hold both.)
 struct ScoreLane {
   LaneScore score;
   cases::LoadedCase loaded;
@@ -43,19 +44,7 @@ double scoreMean(const std::vector<double>& v) {
   return v.empty() ? 0.0 : s / double(v.size());
 }
 
-// The first frame from which FLIP stays within 10% (plus 0.001) of its level over the last
-// quarter of the script: how long the resolve takes to settle, resets included.
-int convergenceFrame(const std::vector<double>& flip) {
-  if (flip.empty()) return 0;
-  const size_t tail = std::max<size_t>(1, flip.size() / 4);
-  const double level = scoreMean(std::vector<double>(flip.end() - long(tail), flip.end()));
-  const double bound = level * 1.1 + 1e-3;
-  int first = int(flip.size());
-  for (int f = int(flip.size()) - 1; f >= 0 && flip[size_t(f)] <= bound; --f) first = f;
-  return first;
-}
-
-// Why the user's resolve cannot stand in for this case's, or "".
+// Why no resolve can stand in for this case's, or "".
 std::string notApplicable(const spec::CheckedCase& s) {
   if (s.taa.mode != spec::TaaMode::Full)
     return std::string("taa.mode is ") + spec::enumToString(s.taa.mode);
@@ -73,41 +62,73 @@ nlohmann::json readCaseJson(const fs::path& file) {
   }
 }
 
-// The case with its resolve settings and checks dropped: both lanes start from the built-in
-// defaults, and nothing in the case can refuse the other lane's resolve.
-cases::LoadedCase laneCase(const nlohmann::json& base, const fs::path& file,
-                           const fs::path& shader) {
+// The case with its resolve settings and checks dropped and the lane's taa section merged
+// in: every lane starts from the built-in defaults, and nothing in the case refuses a lane.
+cases::LoadedCase laneCase(const nlohmann::json& base, const fs::path& file, const LaneSpec& lane) {
   nlohmann::json j = base;
   j.erase("taa");
   j.erase("checks");
-  cases::LoadedCase loaded = cases::parseCase(j.dump(2), file);
-  if (!shader.empty()) {
-    // The shader is named on the command line, outside the case: its own folder is its root.
-    loaded.spec.taa.shader = fs::absolute(shader).string();
+  if (!lane.taa.empty()) j["taa"] = lane.taa;
+  cases::LaneParse parse;
+  parse.shaderRoot = lane.shaderRoot;
+  parse.capabilitiesUnchecked = true;
+  try {
+    return cases::parseCase(j.dump(2), file, parse);
+  } catch (const cases::CaseError& e) {
+    std::vector<std::string> problems;
+    for (const auto& p : e.problems()) problems.push_back("lane " + lane.name + ": " + p);
+    throw cases::CaseError(problems);
   }
-  return loaded;
 }
 
 bool hasLabel(const spec::CheckedCase& s, const char* label) {
   return std::find(s.checks.labels.begin(), s.checks.labels.end(), label) != s.checks.labels.end();
 }
 
+// The output with every pixel holding a non-finite RGB sample given the reference's, so the
+// error columns measure the finite samples; `nonFinite` counts the non-finite samples (all
+// channels), `finitePixels` the pixels kept.
+Image finiteOnly(const Image& out, const Image& reference, long long& nonFinite, size_t& finitePixels) {
+  Image f = out;
+  finitePixels = 0;
+  for (size_t p = 0; p < out.pixelCount(); ++p) {
+    bool bad = false;
+    for (int c = 0; c < out.channels; ++c) {
+      const bool finite = std::isfinite(out.data[p * size_t(out.channels) + size_t(c)]);
+      nonFinite += finite ? 0 : 1;
+      bad |= !finite && c < 3;
+    }
+    if (!bad) {
+      ++finitePixels;
+      continue;
+    }
+    for (int c = 0; c < std::min(3, out.channels); ++c)
+      f.data[p * size_t(out.channels) + size_t(c)] = reference.data[p * size_t(reference.channels) + size_t(c)];
+  }
+  return f;
+}
+
 CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& base,
-                    const ScoreOptions& o) {
+                    const ScoreOptions& o, const std::vector<LaneSpec>& specs) {
   std::vector<std::unique_ptr<ScoreLane>> lanes;
-  for (const char* name : {"default", "user"}) {
+  for (const auto& spec : specs) {
     auto lane = std::make_unique<ScoreLane>();
-    lane->score.lane = name;
-    lane->loaded = laneCase(base, file, std::string(name) == "user" ? o.shader : fs::path());
+    lane->score.lane = spec.name;
+    lane->loaded = laneCase(base, file, spec);
+    const auto& s = lane->loaded.spec;
+    if (!s.taa.shader.empty())
+      for (const auto& why : user::missingCapabilities(s, loadUserShader(s).capabilities, s.taa.shader))
+        lane->score.skipped += (lane->score.skipped.empty() ? "" : "; ") + why;
     lanes.push_back(std::move(lane));
   }
-  const auto& first = lanes.front()->loaded.spec;
+  const auto& first = lanes.front()->loaded.spec;  // the built-in lane: it runs every case
   CaseScore c;
   c.name = file.stem().string();
   c.frames = first.script.frames;
   c.movers = invariants::inapplicable("no_ghosting", first).empty();
   for (size_t i = 0; i < lanes.size(); ++i) {
     auto& l = *lanes[i];
+    if (!l.score.skipped.empty()) continue;
     l.scene = scene::buildScene(l.loaded.spec);
     RenderOptions ro;
     if (i == 0) ro.captures |= {Capture::Reference};  // one reference, shared
@@ -120,6 +141,7 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
     Image reference;
     for (size_t i = 0; i < lanes.size(); ++i) {
       auto& l = *lanes[i];
+      if (!l.renderer) continue;
       if (o.progress) o.progress(c.name, l.score.lane, f, c.frames);
       FrameRecord r = l.renderer->renderFrame(f, true);
       double ms = 0.0;
@@ -127,13 +149,18 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
         if (pass != "reference" && pass.rfind("gbuffer", 0) != 0) ms += t;
       l.ms.push_back(ms);
       if (i == 0) reference = r.reference;
-      for (float v : r.color.data) l.score.nonFinite += std::isfinite(v) ? 0 : 1;
-      l.flicker.add(r.color, f > 0);
-      l.score.rmse += compare::computeMetrics(reference, r.color).rmse / c.frames;
-      l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, r.color).mean);
+      size_t finitePixels = 0;
+      const Image finite = finiteOnly(r.color, reference, l.score.nonFinite, finitePixels);
+      l.flicker.add(finite, f > 0);
+      const double rmse = compare::computeMetrics(reference, finite).rmse;
+      // The substituted pixels add no error: scale the mean to the finite pixels alone.
+      l.score.rmse += (finitePixels ? rmse * std::sqrt(double(finite.pixelCount()) / double(finitePixels)) : 0.0) /
+                      c.frames;
+      l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, finite).mean);
       if (l.ghosting && f >= l.loaded.spec.checks.from_frame) {
         invariants::FrameView v = invariants::FrameView::of(r);
         v.set(Capture::Reference, &reference);
+        v.output = &finite;
         l.ghosting->observe(v);
       }
     }
@@ -142,17 +169,17 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
   c.referenceFlicker = referenceFlicker.mean();
   for (auto& lp : lanes) {
     auto& l = *lp;
-    l.score.flip = scoreMean(l.score.flipPerFrame);
-    l.score.flicker = l.flicker.mean();
-    l.score.convergence = convergenceFrame(l.score.flipPerFrame);
-    l.score.frameMs = run::percentile(l.ms, 50.0);
-    if (l.ghosting) {
-      const invariants::Outcome out = l.ghosting->finish();
-      for (const auto& [k, v] : out.values)
-        if (k == "worst_mean_error") {
-          l.score.ghosting = v;
-          l.score.ghostingMeasured = true;
-        }
+    if (l.renderer) {
+      l.score.flip = scoreMean(l.score.flipPerFrame);
+      l.score.flicker = l.flicker.mean();
+      l.score.converged = convergence(l.score.flipPerFrame);
+      l.score.frameMs = run::percentile(l.ms, 50.0);
+      if (l.ghosting)
+        for (const auto& [k, v] : l.ghosting->finish().values)
+          if (k == "worst_mean_error") {
+            l.score.ghosting = v;
+            l.score.ghostingMeasured = true;
+          }
     }
     c.lanes.push_back(std::move(l.score));
   }
@@ -163,16 +190,17 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
 
 Scorecard runScore(Device& device, const ScoreOptions& o) {
   Scorecard s;
-  s.shader = o.shader.string();
   s.device = device.identity().name;
-  // The shader must compile before anything renders: its errors are the user's first news.
-  try {
-    user::CompileOptions co;
-    co.root = fs::absolute(o.shader).parent_path();
-    const auto compiled = user::compileComputeShader(fs::absolute(o.shader), co);
-    user::reflectUserInterface(compiled.spirv, o.shader.string());
-  } catch (const InputError& e) {
-    throw cases::CaseError({o.shader.string() + ": does not compile:\n" + e.what()});
+  LaneSpec builtin;
+  builtin.name = "default";
+  builtin.describe = "the built-in resolve at its defaults";
+  s.lanes.push_back(builtin);
+  std::set<std::string> names{builtin.name};
+  for (const auto& l : o.lanes) {
+    if (!names.insert(l.name).second)
+      throw cases::CaseError({"two lanes are called " + l.name +
+                              "; name them apart (--name, or the lanes file's keys)"});
+    s.lanes.push_back(l);
   }
   std::vector<fs::path> files;
   std::error_code ec;
@@ -182,6 +210,7 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
     throw cases::CaseError({o.casesDir.string() + ": cannot list the folder (" + ec.message() +
                             "); pass --cases DIR"});
   std::sort(files.begin(), files.end());
+  bool compiled = false;
   for (const auto& file : files) {
     if (o.maxCases > 0 && int(s.cases.size()) >= o.maxCases) break;
     const cases::LoadedCase own = cases::loadCase(file);
@@ -189,7 +218,12 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
       s.skipped.push_back(own.spec.name + ": " + why);
       continue;
     }
-    s.cases.push_back(scoreCase(device, file, readCaseJson(file), o));
+    const nlohmann::json base = readCaseJson(file);
+    // Every lane's shader compiles (or names its error) before anything renders.
+    if (!compiled)
+      for (const auto& l : s.lanes) laneCase(base, file, l);
+    compiled = true;
+    s.cases.push_back(scoreCase(device, file, base, o, s.lanes));
     // The lanes drop the case's checks; its labels still say what the case is for.
     s.cases.back().stress = hasLabel(own.spec, "stress");
   }

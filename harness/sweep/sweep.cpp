@@ -12,7 +12,10 @@
 #include "core/json_guard.h"
 #include "invariants/flicker_meter.h"
 #include "run/timing.h"
+#include "invariants/registry.h"
 #include "scene/build_scene.h"
+#include "user/user_capabilities.h"
+#include "user/user_resolve.h"
 
 namespace taa::sweep {
 
@@ -45,6 +48,8 @@ struct Lane {
   std::unique_ptr<Renderer> renderer;
   std::vector<double> taaMs, frameMs;
   invariants::FlickerMeter flicker;
+  std::vector<std::string> notApplicable;
+  std::string skipped;
 };
 
 double mean(const std::vector<double>& v) {
@@ -69,10 +74,37 @@ Presets loadPresets(const fs::path& file) {
   return out;
 }
 
+cases::LoadedCase presetLane(const nlohmann::json& base, const nlohmann::json& patch,
+                             const fs::path& caseFile, const fs::path& presetsDir,
+                             std::vector<std::string>* notApplicable) {
+  nlohmann::json merged = base;
+  merged.merge_patch(patch);
+  const nlohmann::json checks = merged.value("checks", nlohmann::json::object());
+  merged.erase("checks");
+  cases::LaneParse lane;
+  lane.capabilitiesUnchecked = true;
+  // A preset's own shader: beside the case as documented, or else beside its presets file.
+  if (patch.contains("taa") && patch["taa"].is_object() && patch["taa"].contains("shader") &&
+      patch["taa"]["shader"].is_string() && !presetsDir.empty()) {
+    const std::string shader = patch["taa"]["shader"].get<std::string>();
+    std::error_code ec;
+    if (!fs::exists(caseFile.parent_path() / shader, ec) && fs::exists(presetsDir / shader, ec))
+      lane.shaderRoot = presetsDir;
+  }
+  cases::LoadedCase loaded = cases::parseCase(merged.dump(2), caseFile, lane);
+  if (notApplicable && checks.contains("invariants") && checks["invariants"].is_array())
+    for (const auto& name : checks["invariants"])
+      if (name.is_string())
+        if (const std::string why = invariants::inapplicable(name.get<std::string>(), loaded.spec);
+            !why.empty())
+          notApplicable->push_back(name.get<std::string>() + ": " + why);
+  return loaded;
+}
+
 SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& presets,
                      const std::vector<std::string>& names, const SweepOptions& options) {
   const nlohmann::json base = readJson(caseFile);
-  std::vector<std::unique_ptr<Lane>> lanes;
+  std::vector<std::unique_ptr<Lane>> lanes, skippedLanes;
   std::vector<std::string> problems;
   for (const auto& name : names) {
     const auto it = presets.find(name);
@@ -85,20 +117,27 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
       problems.push_back(msg);
       continue;
     }
-    nlohmann::json patched = base;
-    patched.merge_patch(it->second);
     auto lane = std::make_unique<Lane>();
     lane->name = name;
     lane->patch = it->second.dump();
     try {
-      lane->loaded = cases::parseCase(patched.dump(2), caseFile);
+      lane->loaded = presetLane(base, it->second, caseFile, options.presetsDir, &lane->notApplicable);
     } catch (const cases::CaseError& e) {
       for (const auto& p : e.problems()) problems.push_back("preset " + name + ": " + p);
       continue;
     }
-    lanes.push_back(std::move(lane));
+    const auto& spec = lane->loaded.spec;
+    if (!spec.taa.shader.empty()) {
+      const auto missing = user::missingCapabilities(spec, loadUserShader(spec).capabilities,
+                                                     spec.taa.shader);
+      for (const auto& why : missing) lane->skipped += (lane->skipped.empty() ? "" : "; ") + why;
+    }
+    (lane->skipped.empty() ? lanes : skippedLanes).push_back(std::move(lane));
   }
   if (!problems.empty()) throw cases::CaseError(problems);
+  if (lanes.empty() && !skippedLanes.empty())
+    throw cases::CaseError({"every preset's shader lacks what the case needs: " +
+                            skippedLanes.front()->skipped});
   if (lanes.empty()) throw cases::CaseError({"no preset given"});
   const auto& first = lanes.front()->loaded.spec;
   for (const auto& l : lanes) {
@@ -161,10 +200,18 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& pr
     p.flipMean = mean(p.flipPerFrame);
     p.flicker = l.flicker.mean();
     p.referenceFlicker = referenceFlicker.mean();
+    p.notApplicable = l.notApplicable;
     p.taaMs = run::percentile(l.taaMs, 50.0);
     p.frameMs = run::percentile(l.frameMs, 50.0);
     for (const auto& line : l.renderer->log())
       if (line.rfind("pass ", 0) == 0) p.passes.push_back(line.substr(5));
+  }
+  for (const auto& l : skippedLanes) {
+    PresetResult p;
+    p.name = l->name;
+    p.patch = l->patch;
+    p.skipped = l->skipped;
+    out.push_back(std::move(p));
   }
   result.presets = std::move(out);
   return result;

@@ -33,10 +33,18 @@ struct PresetResult {
   std::vector<double> rmsePerFrame;
   std::vector<double> flipPerFrame;
   std::vector<std::string> passes;  // what ran, from the renderer log
+  // The case's invariants this preset cannot meet ("no_ghosting: taa.mode is off ..."): not
+  // applicable for this lane (a sweep measures; it judges no invariant).
+  std::vector<std::string> notApplicable;
+  // Why the lane did not run ("" when it did): its shader lacks a capability the case needs.
+  std::string skipped;
 };
 
 struct SweepOptions {
   int fromFrame = 0;  // frames before this warm up and are not measured
+  // The presets file's folder: a preset's taa.shader that names no file beside the case is
+  // looked up there (its includes then stay in that folder).
+  std::filesystem::path presetsDir;
   std::function<void(const std::string&, int, int)> progress;  // (preset, frame, frames)
 };
 
@@ -48,6 +56,15 @@ struct SweepResult {
   int referenceSamples = 0;
   std::vector<PresetResult> presets;
 };
+
+// The case file's JSON with a preset merged in, parsed as a lane: its checks dropped (the
+// invariants it cannot meet go to `notApplicable`), its taa.shader found beside the case or
+// else in `presetsDir`, a missing capability left for the caller to skip. CaseError when the
+// merged case is invalid.
+cases::LoadedCase presetLane(const nlohmann::json& base, const nlohmann::json& patch,
+                             const std::filesystem::path& caseFile,
+                             const std::filesystem::path& presetsDir,
+                             std::vector<std::string>* notApplicable = nullptr);
 
 // Replays `base` once per preset, all presets in lockstep frame by frame, the first
 // one also rendering the reference. Throws CaseError when a patched case is invalid.

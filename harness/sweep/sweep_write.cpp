@@ -11,13 +11,31 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The Pareto front of the presets that ran, as indices into r.presets.
 std::vector<size_t> front(const SweepResult& r) {
   std::vector<double> x, y;
-  for (const auto& p : r.presets) {
-    x.push_back(p.frameMs);
-    y.push_back(p.flipMean);
-  }
-  return report::paretoFront(x, y);
+  std::vector<size_t> ran;
+  for (size_t i = 0; i < r.presets.size(); ++i)
+    if (r.presets[i].skipped.empty()) {
+      ran.push_back(i);
+      x.push_back(r.presets[i].frameMs);
+      y.push_back(r.presets[i].flipMean);
+    }
+  std::vector<size_t> out;
+  for (size_t k : report::paretoFront(x, y)) out.push_back(ran[k]);
+  return out;
+}
+
+// A lane's notes: why it did not run, or the case's invariants it cannot meet.
+std::string presetNotes(const PresetResult& p) {
+  if (!p.skipped.empty()) return "skipped: " + p.skipped;
+  std::string out;
+  for (const auto& n : p.notApplicable) out += (out.empty() ? "n/a: " : "; ") + n;
+  return out;
+}
+
+std::string figure(const PresetResult& p, double v, int digits) {
+  return p.skipped.empty() ? report::formatFixed(v, digits) : "-";
 }
 
 bool onFront(const std::vector<size_t>& f, size_t i) {
@@ -35,6 +53,7 @@ std::string plot(const SweepResult& r, bool standalone) {
   best.showLabels = true;  // a static SVG (docs, CI artefacts) has no tooltips; the front is sparse
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
+    if (!p.skipped.empty()) continue;
     all.x.push_back(p.frameMs);
     all.y.push_back(p.flipMean);
     all.pointLabels.push_back(p.name);
@@ -63,14 +82,14 @@ std::string plot(const SweepResult& r, bool standalone) {
 std::string markdownTable(const SweepResult& r) {
   const auto f = front(r);
   std::string s =
-      "| preset | FLIP mean | RMSE | flicker (reference) | TAA ms | frame ms | Pareto |\n"
-      "|---|---:|---:|---:|---:|---:|:---:|\n";
+      "| preset | FLIP mean | RMSE | flicker (reference) | TAA ms | frame ms | Pareto | notes |\n"
+      "|---|---:|---:|---:|---:|---:|:---:|---|\n";
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
-    s += "| " + p.name + " | " + report::formatFixed(p.flipMean, 4) + " | " +
-         report::formatFixed(p.rmse, 4) + " | " + report::formatFixed(p.flicker, 4) + " (" +
-         report::formatFixed(p.referenceFlicker, 4) + ") | " + report::formatFixed(p.taaMs, 2) +
-         " | " + report::formatFixed(p.frameMs, 2) + " | " + (onFront(f, i) ? "yes" : "") + " |\n";
+    s += "| " + p.name + " | " + figure(p, p.flipMean, 4) + " | " + figure(p, p.rmse, 4) + " | " +
+         figure(p, p.flicker, 4) + (p.skipped.empty() ? " (" + report::formatFixed(p.referenceFlicker, 4) + ")" : "") +
+         " | " + figure(p, p.taaMs, 2) + " | " + figure(p, p.frameMs, 2) + " | " +
+         (onFront(f, i) ? "yes" : "") + " | " + presetNotes(p) + " |\n";
   }
   return s;
 }
@@ -82,6 +101,7 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
   const auto f = front(r);
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
+    if (!p.skipped.empty()) continue;  // in sweep.md and report.html, with the reason
     std::string patch = p.patch;
     for (auto& c : patch)
       if (c == '"') c = '\'';
@@ -105,9 +125,9 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
   std::vector<std::vector<std::string>> rows;
   for (size_t i = 0; i < r.presets.size(); ++i) {
     const auto& p = r.presets[i];
-    rows.push_back({p.name, report::formatFixed(p.flipMean, 4), report::formatFixed(p.rmse, 4),
-                    report::formatFixed(p.flicker, 4), report::formatFixed(p.taaMs, 2),
-                    report::formatFixed(p.frameMs, 2), onFront(f, i) ? "yes" : "", p.patch});
+    rows.push_back({p.name, figure(p, p.flipMean, 4), figure(p, p.rmse, 4), figure(p, p.flicker, 4),
+                    figure(p, p.taaMs, 2), figure(p, p.frameMs, 2), onFront(f, i) ? "yes" : "",
+                    p.patch, presetNotes(p)});
   }
   report::ReportSection section;
   section.title = "Sweep: " + r.caseName;
@@ -117,7 +137,8 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
                  " samples), times are GPU timestamps on " + r.device + ".";
   section.svg = plot(r, false);
   section.tableHtml = report::htmlTable(
-      {"preset", "FLIP mean", "RMSE", "flicker", "TAA ms", "frame ms", "Pareto", "settings"}, rows);
+      {"preset", "FLIP mean", "RMSE", "flicker", "TAA ms", "frame ms", "Pareto", "settings", "notes"},
+      rows);
   report::writeSectionPage(dir / "report.html", "TAA sweep: " + r.caseName, r.device, section);
 }
 

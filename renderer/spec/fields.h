@@ -18,6 +18,13 @@ struct Meta {
   const char* when = "";    // the condition under which it means something, beyond its modes
 };
 
+// A value that is a number, or JSON true/false (a user shader's bool constant); `number`
+// holds 1 or 0 for a bool, so a check of its type needs no second field.
+struct NumberOrBool {
+  double number = 0.0;
+  bool isBool = false;  // given as true or false
+};
+
 template <class T>
 struct Range {
   T lo;

@@ -54,10 +54,15 @@ TAA_DECLARED_ENUM(DebugOutput, TAA_DEBUG_OUTPUT_VALUES)
   inline constexpr int name = slot;
 TAA_SETTINGS(TAA_CXX_SLOT_E, TAA_CXX_SLOT_B, TAA_CXX_SLOT_F)
 
+// The language of a user's resolve (taa.shader_language): auto takes the file's extension.
+enum class ShaderLanguage { Auto, Glsl, Hlsl };
+TAA_ENUM_NAMES(ShaderLanguage, {ShaderLanguage::Auto, "auto"}, {ShaderLanguage::Glsl, "glsl"},
+               {ShaderLanguage::Hlsl, "hlsl"})
+
 // One specialization constant of a user's resolve (taa.shader), by its name in the shader.
 struct ShaderParam {
   std::string name;
-  float value = 0.0f;
+  NumberOrBool value;  // double: an int's and a uint's whole 32-bit range is exact
 };
 
 template <class V>
@@ -66,7 +71,8 @@ void fields(V& v, ShaderParam& p) {
           Meta{"the constant's name in the shader (layout(constant_id = N) const T name)",
                "renderer/user/user_interface.cpp"});
   v.field("value", p.value,
-          Meta{"its value: true/false as 1/0 for a bool, a whole number for an int or uint",
+          Meta{"its value: true or false (or 1 or 0) for a bool, a whole number for an int or "
+               "uint, a number for a float",
                "renderer/user/user_resolve.cpp"});
 }
 
@@ -115,8 +121,18 @@ struct TaaSpec {
   TaaMovingSpec moving;
   // A user's own resolve (docs/user-taa.md): replaces the built-in one when set.
   std::string shader;
+  ShaderLanguage shader_language = ShaderLanguage::Auto;
+  std::string shader_entry = "main";
   std::vector<ShaderParam> shader_params;
   bool shader_clamps = false;
+  // Not keys: set for the lanes the harness builds (score, sweep), never by a case file.
+  // The folder taa.shader is relative to and its includes must stay inside, when it is not
+  // the case's (a scorecard's lane names a shader on its command line, a sweep's preset one
+  // beside its presets file); empty: the case's folder.
+  std::string shader_root;
+  // The lane's runner skips, with the reason, a case its shader lacks a capability for
+  // (user::missingCapabilities) instead of validation refusing the case.
+  bool shader_capabilities_unchecked = false;
 };
 
 #define TAA_CXX_FIELD_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
@@ -143,10 +159,17 @@ void fields(V& v, TaaSpec& s) {
                 "moves (seed 000); any float taa key, plus from_px, to_px and depth",
                 "renderer/passes/taa_moving.cpp"});
   v.field("shader", s.shader,
-          Meta{"your own resolve: a GLSL compute shader including taa_user.h, relative to the case "
-               "file and inside its folder; replaces the built-in resolve (taa.mode full only, no "
-               "other built-in taa setting)",
+          Meta{"your own resolve: a GLSL compute shader including taa_user.h, or an HLSL one "
+               "including taa_user.hlsli, relative to the case file and inside its folder; "
+               "replaces the built-in resolve (taa.mode full only, no other built-in taa setting)",
                "renderer/user/user_resolve.cpp"});
+  v.field("shader_language", s.shader_language,
+          Meta{"the shader's language: auto (by its extension: .hlsl is HLSL, anything else GLSL), "
+               "glsl or hlsl",
+               "renderer/user/glsl_compiler.cpp", "", "taa.shader is set"});
+  v.field("shader_entry", s.shader_entry,
+          Meta{"an HLSL shader's entry point (GLSL's is always main)",
+               "renderer/user/glsl_compiler.cpp", "", "taa.shader is an HLSL shader"});
   v.list(
       "shader_params", s.shader_params,
       Meta{"values for the shader's specialization constants, [{\"name\": ..., \"value\": ...}]; "

@@ -1,18 +1,24 @@
 #include "user/glsl_compiler.h"
 
 #include <glslang/Public/ResourceLimits.h>
+#include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 #include "core/input_file.h"
 #include "core/output_file.h"
 #include "core/sha256.h"
+#include "user/user_capabilities.h"
 #include "vk/pipeline.h"
 
 namespace taa::user {
@@ -25,7 +31,7 @@ namespace {
 constexpr uint64_t kMaxUserShaderBytes = uint64_t(1) << 20;
 constexpr size_t kMaxIncludeDepth = 32;
 // Bumped when what this file passes to glslang changes, so older cache entries are ignored.
-constexpr const char* kCompilerTag = "taa-user-glsl 1 glslang 12 vulkan1.2 spv1.5";
+constexpr const char* kCompilerTag = "taa-user 2 glslang 12 vulkan1.2 spv1.5";
 
 bool isInside(const fs::path& dir, const fs::path& file) {
   if (dir.empty()) return false;
@@ -60,6 +66,8 @@ class UserIncluder : public glslang::TShader::Includer {
     delete r;
   }
 
+  // A new includer with the same folders, for a second pass over the same text.
+  UserIncluder fresh() const { return UserIncluder(root_, headerDir_); }
   const std::vector<fs::path>& files() const { return files_; }
   const std::string& problem() const { return problem_; }
 
@@ -140,34 +148,66 @@ std::string cleanLog(const std::string& log) {
   return out;
 }
 
+// The text is preprocessed first (its #pragma taa_supports lines say what it declares), then
+// parsed and linked. HLSL takes glslang's HLSL front end, the entry point the options name
+// (renamed "main" in the SPIR-V) and spirv-opt's legalization, which Vulkan needs for
+// HLSL's textures passed to functions; GLSL is compiled as it always was.
 std::vector<uint32_t> runGlslang(const fs::path& source, const std::string& text,
-                                 UserIncluder& includer) {
+                                 UserIncluder& includer, const CompileOptions& o,
+                                 std::string& preprocessed) {
   initGlslangOnce();
-  glslang::TShader shader(EShLangCompute);
+  const bool hlsl = o.language == ShaderLanguage::Hlsl;
   const std::string name = source.string();
   const char* strings[] = {text.c_str()};
   const int lengths[] = {int(text.size())};
   const char* names[] = {name.c_str()};
-  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-  // The include extension is on for every user shader, as it is for the built-in ones.
-  shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
-  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
-  const auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules);
-  auto fail = [&](const std::string& log) {
+  auto configure = [&](glslang::TShader& shader) {
+    shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+    if (hlsl) {
+      shader.setEnvInput(glslang::EShSourceHlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+      // The SPIR-V keeps the name: glslang given only a source entry point falls back on a
+      // function called main, or renames the entry onto one, without a word.
+      shader.setEntryPoint(o.entry.c_str());
+      shader.setSourceEntryPoint(o.entry.c_str());
+    } else {
+      // The include extension is on for every user shader, as it is for the built-in ones.
+      shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
+      shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    }
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+  };
+  const auto messages =
+      EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : EShMsgDefault));
+  const int version = hlsl ? 100 : 450;
+  auto fail = [&](const UserIncluder& inc, const std::string& log) {
     std::string msg = cleanLog(log);
-    if (!includer.problem().empty()) msg = includer.problem() + (msg.empty() ? "" : "\n" + msg);
+    if (!inc.problem().empty()) msg = inc.problem() + (msg.empty() ? "" : "\n" + msg);
     throw ShaderCompileError(msg + "\n(fix the shader; docs/user-taa.md describes the interface)");
   };
-  if (!shader.parse(GetDefaultResources(), 450, false, messages, includer))
-    fail(shader.getInfoLog());
+  {
+    UserIncluder pre = includer.fresh();
+    glslang::TShader shader(EShLangCompute);
+    configure(shader);
+    if (!shader.preprocess(GetDefaultResources(), version, ENoProfile, false, false, messages,
+                           &preprocessed, pre))
+      fail(pre, shader.getInfoLog());
+  }
+  glslang::TShader shader(EShLangCompute);
+  configure(shader);
+  if (!shader.parse(GetDefaultResources(), version, false, messages, includer))
+    fail(includer, shader.getInfoLog());
+  if (hlsl && shader.getIntermediate()->getNumEntryPoints() == 0)
+    throw ShaderCompileError(name + ": has no function " + o.entry +
+                             " to run (taa.shader_entry, default main); name the entry point, the "
+                             "function with [numthreads(X, Y, 1)]");
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(messages)) fail(program.getInfoLog());
+  if (!program.link(messages)) fail(includer, program.getInfoLog());
   std::vector<unsigned int> words;
   glslang::SpvOptions options;
   options.generateDebugInfo = false;
+  options.disableOptimizer = !hlsl;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), words, &options);
   return {words.begin(), words.end()};
 }
@@ -177,13 +217,17 @@ std::string fileSha(const fs::path& file) {
   return sha256Hex(bytes.data(), bytes.size());
 }
 
-// The cache entry KEY.deps lists the SPIR-V's hash and each include's real path and hash;
-// KEY.spv holds the words. A hit needs every include unchanged and the words intact.
-bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out) {
+// The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash and
+// the capabilities the shader declares; KEY.spv holds the words. A hit needs every include
+// unchanged and the words intact; on a miss `why` says what changed ("" when there is no
+// entry at all).
+bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out, std::string& why) {
   std::ifstream deps(dir / (key + ".deps"));
   if (!deps) return false;
+  why = "the cache entry was damaged";
   std::string kind, sha, spvSha;
   std::vector<fs::path> includes;
+  std::vector<std::string> capabilities;
   std::string line;
   while (std::getline(deps, line)) {
     std::istringstream l(line);
@@ -192,12 +236,21 @@ bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out)
     std::getline(l >> std::ws, path);
     if (kind == "spv") {
       spvSha = sha;
+    } else if (kind == "cap") {
+      capabilities.push_back(sha);
     } else if (kind == "inc") {
       std::error_code ec;
-      if (!fs::is_regular_file(path, ec)) return false;
+      if (!fs::is_regular_file(path, ec)) {
+        why = path + " is gone since it was cached";
+        return false;
+      }
       try {
-        if (fileSha(path) != sha) return false;
+        if (fileSha(path) != sha) {
+          why = path + " changed since it was cached";
+          return false;
+        }
       } catch (const ShaderCompileError&) {
+        why = path + " cannot be read";
         return false;
       }
       includes.emplace_back(path);
@@ -216,6 +269,7 @@ bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out)
   out.spirv.resize(bytes.size() / 4);
   std::memcpy(out.spirv.data(), bytes.data(), bytes.size());
   out.includes = std::move(includes);
+  out.capabilities = std::move(capabilities);
   out.fromCache = true;
   return true;
 }
@@ -227,10 +281,31 @@ void writeCache(const fs::path& dir, const std::string& key, const CompiledShade
   writeFileAtomically(dir / (key + ".spv"), bytes);
   std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
   for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
+  for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
   writeFileAtomically(dir / (key + ".deps"), deps);
 }
 
+// What this process last did to get each cache key's SPIR-V (CompiledShader::provenance).
+std::string provenanceOf(const std::string& key, const std::string& happened, bool compiled) {
+  static std::mutex mutex;
+  static std::map<std::string, std::string> last;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (compiled) return last[key] = happened;
+  const auto it = last.find(key);
+  return it == last.end() ? happened : it->second;
+}
+
 }  // namespace
+
+const char* languageName(ShaderLanguage l) {
+  return l == ShaderLanguage::Hlsl ? "hlsl" : "glsl";
+}
+
+ShaderLanguage languageOf(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".hlsl" ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl;
+}
 
 fs::path userHeaderDir() {
   return fs::path(vk::shaderDir()) / "include";
@@ -257,8 +332,8 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
   const std::string text = readShaderText(real, source.string());
   Sha256 h;
   for (const std::string& part :
-       {std::string(kCompilerTag), real.string(), fs::weakly_canonical(headerDir).string(),
-        fs::weakly_canonical(o.root).string(), text}) {
+       {std::string(kCompilerTag), std::string(languageName(o.language)), o.entry, real.string(),
+        fs::weakly_canonical(headerDir).string(), fs::weakly_canonical(o.root).string(), text}) {
     h.update(part.data(), part.size());
     h.update("\0", 1);
   }
@@ -266,11 +341,21 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
   const std::string key = toHex(digest.data(), digest.size());
 
   CompiledShader out;
-  if (readCache(cacheDir, key, out)) return out;
+  std::string miss;
+  if (readCache(cacheDir, key, out, miss)) {
+    out.provenance = provenanceOf(key, "from the cache", false);
+    return out;
+  }
   UserIncluder includer(o.root, headerDir);
-  out.spirv = runGlslang(source, text, includer);
+  std::string preprocessed;
+  out = CompiledShader{};
+  out.spirv = runGlslang(source, text, includer, o, preprocessed);
   out.includes = includer.files();
+  out.capabilities = declaredCapabilities(preprocessed, source.string());
   writeCache(cacheDir, key, out);
+  out.provenance = provenanceOf(
+      key, miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss,
+      true);
   return out;
 }
 

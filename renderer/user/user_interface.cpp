@@ -12,7 +12,8 @@ namespace taa::user {
 namespace {
 
 static_assert(resolveInputBindingsValid({}, {kUserFrame, kUserOutput, kUserHistory0,
-                                             kUserHistory0Out, kUserHistory1, kUserHistory1Out}),
+                                             kUserHistory0Out, kUserHistory1, kUserHistory1Out,
+                                             kUserPointSampler, kUserLinearSampler}),
               "two inputs of a user's resolve share a binding in common/resolve_inputs.h, or one "
               "takes a binding of its own targets");
 
@@ -86,6 +87,21 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
         name + " never writes taa_output (binding 10); a resolve must imageStore its result there");
   for (const ResolveInputInfo& i : kResolveInputs)
     if (i.userBinding >= 0 && has(uint32_t(i.userBinding))) u.reads |= {i.input};
+  // One invocation per output pixel: a deeper group would write each pixel more than once,
+  // and a size the case's shader_params could change would not be the one dispatched.
+  const auto& ls = si.localSize;
+  const std::string size =
+      std::to_string(ls[0]) + "x" + std::to_string(ls[1]) + "x" + std::to_string(ls[2]);
+  if (si.localSizeSpecId[0] >= 0 || si.localSizeSpecId[1] >= 0 || si.localSizeSpecId[2] >= 0)
+    throw ShaderCompileError(name + ": its workgroup size is set by specialization constants; "
+                                    "declare it with numbers (local_size_x = 16, or HLSL's "
+                                    "[numthreads(16, 16, 1)])");
+  if (ls[2] != 1 || uint64_t(ls[0]) * ls[1] > kMaxUserWorkgroupInvocations)
+    throw ShaderCompileError(name + ": declares a workgroup of " + size +
+                             "; a resolve's workgroup is X x Y x 1 with at most " +
+                             std::to_string(kMaxUserWorkgroupInvocations) + " invocations");
+  u.workgroup[0] = ls[0];
+  u.workgroup[1] = ls[1];
 
   std::map<uint32_t, std::string> names;
   std::map<uint32_t, uint32_t> specIds, bindings, types;  // types: id -> opcode

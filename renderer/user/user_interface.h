@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/user_frame.h"
 #include "passes/resolve_inputs.h"
 
 namespace taa::user {
@@ -24,6 +25,8 @@ enum UserBinding : uint32_t {
   kUserHistory0Out = TAA_USER_BINDING_HISTORY0_OUT,  // this frame's history 0 (storage)
   kUserHistory1 = TAA_USER_BINDING_HISTORY1,
   kUserHistory1Out = TAA_USER_BINDING_HISTORY1_OUT,
+  kUserPointSampler = TAA_USER_BINDING_POINT_SAMPLER,  // HLSL's taa_point_clamp
+  kUserLinearSampler = TAA_USER_BINDING_LINEAR_SAMPLER,
 };
 
 enum class ParamType { Bool, Int, Uint, Float };
@@ -38,6 +41,8 @@ struct UserParam {
 
 struct UserInterface {
   ResolveInputSet reads;  // the inputs it declares (taa_color and taa_prev_output always)
+  // The workgroup its SPIR-V declares (z is 1): the dispatch covers the output with it.
+  uint32_t workgroup[2] = {8, 8};
   // History targets 0 and 1: the format the shader's output image declares, or none.
   std::optional<VkFormat> history[2];
   std::vector<UserParam> params;  // by constant_id
@@ -45,9 +50,14 @@ struct UserInterface {
   const UserParam* param(const std::string& name) const;
 };
 
+// The most invocations a user's workgroup may have: what every desktop driver and lavapipe
+// offer (Vulkan's minimum is 128; the pipeline's creation checks the device's own limit).
+inline constexpr uint32_t kMaxUserWorkgroupInvocations = 1024;
+
 // Throws ShaderCompileError naming `name` when the shader breaks taa_user.h's contract
 // (no output image, a history read without its write, an unsupported history format,
-// an unnamed specialization constant).
+// an unnamed specialization constant, a workgroup that is not flat, too large or set by
+// specialization constants).
 UserInterface reflectUserInterface(const std::vector<uint32_t>& spirv, const std::string& name);
 
 }  // namespace taa::user

@@ -1,12 +1,17 @@
 #include "user/user_resolve.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 #include <stdexcept>
 
 #include "passes/storage_image.h"
+#include "script/timing.h"
 #include "user/glsl_compiler.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
@@ -15,18 +20,21 @@ namespace taa {
 
 namespace {
 
-// taa_user.h's TaaUserFrame, std140: matrices and vectors only, so no padding to mirror.
+// taa_user.h's TaaUserFrame (common/user_frame.h), std140: matrices and vectors of four
+// 4-byte components only, so every member starts where the previous one ends.
+using UserCxx_mat4 = glm::mat4;
+using UserCxx_vec4 = glm::vec4;
+using UserCxx_uvec4 = glm::uvec4;
+#define TAA_USER_CXX_MEMBER(type, name, doc) UserCxx_##type name;
 struct UserFrameUniforms {
-  glm::mat4 viewProj;
-  glm::mat4 invViewProj;
-  glm::mat4 prevViewProj;
-  glm::vec4 renderSize;
-  glm::vec4 outputSize;
-  glm::vec4 jitter;
-  glm::vec4 camera;
-  glm::uvec4 info;
+  TAA_USER_FRAME(TAA_USER_CXX_MEMBER)
 };
-static_assert(sizeof(UserFrameUniforms) == 3 * 64 + 5 * 16, "TaaUserFrame layout (taa_user.h)");
+#undef TAA_USER_CXX_MEMBER
+#define TAA_USER_CXX_ALIGNED(type, name, doc)                                    \
+  static_assert(sizeof(UserCxx_##type) % 16 == 0 && offsetof(UserFrameUniforms, name) % 16 == 0, \
+                "TaaUserFrame." #name " would be padded in std140");
+TAA_USER_FRAME(TAA_USER_CXX_ALIGNED)
+#undef TAA_USER_CXX_ALIGNED
 
 // An output-size target the shader writes and later samples, zeroed once so that a shader
 // reading it on a reset frame sees zeros rather than another run's memory.
@@ -54,27 +62,56 @@ const char* userFormatName(VkFormat f) {
 }
 
 // The 32 bits a specialization constant of type `t` takes for `v`, or an error message.
-std::string userParamBits(user::ParamType t, float v, uint32_t& bits) {
+std::string userParamBits(user::ParamType t, spec::NumberOrBool v, uint32_t& bits) {
   using user::ParamType;
-  const bool whole = std::floor(v) == v;
+  const double n = v.number;
+  const bool whole = std::floor(n) == n;
+  if (v.isBool && t != ParamType::Bool)
+    return std::string("give a number, not true or false, for a ") + user::paramTypeName(t);
   switch (t) {
     case ParamType::Bool:
-      if (v != 0.0f && v != 1.0f) return "a bool takes 0 (false) or 1 (true)";
-      bits = v != 0.0f;
+      if (n != 0.0 && n != 1.0) return "a bool takes true or false (or 1 or 0)";
+      bits = n != 0.0;
       return {};
     case ParamType::Int:
-      if (!whole || std::fabs(v) > 16777216.0f) return "an int takes a whole number";
-      bits = uint32_t(int32_t(v));
+      if (!whole || n < -2147483648.0 || n > 2147483647.0)
+        return "an int takes a whole number from -2147483648 to 2147483647";
+      bits = uint32_t(int32_t(int64_t(n)));
       return {};
     case ParamType::Uint:
-      if (!whole || v < 0.0f || v > 16777216.0f) return "a uint takes a whole number of at least 0";
-      bits = uint32_t(v);
+      if (!whole || n < 0.0 || n > 4294967295.0)
+        return "a uint takes a whole number from 0 to 4294967295";
+      bits = uint32_t(int64_t(n));
       return {};
-    case ParamType::Float:
-      std::memcpy(&bits, &v, 4);
+    case ParamType::Float: {
+      if (std::fabs(n) > 3.4028234663852886e38) return "a float takes a number within float range";
+      const float f = float(n);
+      std::memcpy(&bits, &f, 4);
       return {};
+    }
   }
   return "unknown type";
+}
+
+// The value a constant's 32 bits stand for, as a case would write it.
+spec::NumberOrBool userParamValue(user::ParamType t, uint32_t bits) {
+  switch (t) {
+    case user::ParamType::Bool:
+      return {bits ? 1.0 : 0.0, true};
+    case user::ParamType::Int:
+      return {double(int32_t(bits)), false};
+    case user::ParamType::Uint:
+      return {double(bits), false};
+    case user::ParamType::Float: {
+      float f = 0.0f;
+      std::memcpy(&f, &bits, 4);
+      // The shortest decimal that reads back as the same float (0.1, not 0.100000001).
+      char buf[32];
+      const auto r = std::to_chars(buf, buf + sizeof(buf), f);
+      return {std::strtod(std::string(buf, r.ptr).c_str(), nullptr), false};
+    }
+  }
+  return {};
 }
 
 glm::ivec2 userOutputSize(const spec::CaseSpec& s) {
@@ -83,26 +120,39 @@ glm::ivec2 userOutputSize(const spec::CaseSpec& s) {
 
 }  // namespace
 
+user::ShaderLanguage userShaderLanguage(const spec::TaaSpec& taa) {
+  switch (taa.shader_language) {
+    case spec::ShaderLanguage::Glsl:
+      return user::ShaderLanguage::Glsl;
+    case spec::ShaderLanguage::Hlsl:
+      return user::ShaderLanguage::Hlsl;
+    case spec::ShaderLanguage::Auto:
+      break;
+  }
+  return user::languageOf(taa.shader);
+}
+
 UserShader loadUserShader(const spec::CaseSpec& spec) {
-  const auto root =
+  const std::filesystem::path caseDir =
       spec.file.parent_path().empty() ? std::filesystem::path(".") : spec.file.parent_path();
-  // An absolute taa.shader only comes from `taa-harness score`, which names the shader on its
-  // command line; its folder is then the include root. Case files are refused one (validation).
-  const std::filesystem::path file = std::filesystem::path(spec.taa.shader).is_absolute()
-                                         ? std::filesystem::path(spec.taa.shader)
-                                         : root / spec.taa.shader;
-  user::CompileOptions o;
-  o.root = std::filesystem::path(spec.taa.shader).is_absolute() ? file.parent_path() : root;
-  user::CompiledShader c = user::compileComputeShader(file, o);
   UserShader out;
-  out.file = file;
-  out.fromCache = c.fromCache;
+  out.root = spec.taa.shader_root.empty() ? caseDir : std::filesystem::path(spec.taa.shader_root);
+  out.file = out.root / spec.taa.shader;
+  out.language = userShaderLanguage(spec.taa);
+  user::CompileOptions o;
+  o.root = out.root;
+  o.language = out.language;
+  o.entry = spec.taa.shader_entry;
+  user::CompiledShader c = user::compileComputeShader(out.file, o);
   try {
-    out.interface = user::reflectUserInterface(c.spirv, file.string());
+    out.interface = user::reflectUserInterface(c.spirv, out.file.string());
   } catch (const InputError& e) {  // the shader breaks taa_user.h's contract
     throw user::ShaderCompileError(std::string(e.what()) + " (see docs/user-taa.md)");
   }
   out.spirv = std::move(c.spirv);
+  out.includes = std::move(c.includes);
+  out.capabilities = std::move(c.capabilities);
+  out.provenance = std::move(c.provenance);
   return out;
 }
 
@@ -142,6 +192,44 @@ vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserIn
   return c;
 }
 
+std::vector<UserParamValue> userParamValues(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  std::vector<UserParamValue> out;
+  for (const user::UserParam& p : u.params) {
+    UserParamValue v{p.name, p.type, p.defaultBits, false, {}};
+    for (const auto& sp : taa.shader_params)
+      if (sp.name == p.name && userParamBits(p.type, sp.value, v.bits).empty()) v.given = true;
+    v.value = userParamValue(p.type, v.bits);
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::string describeUserParams(const std::vector<UserParamValue>& values) {
+  std::string out;
+  for (const auto& v : values) {
+    std::string text;
+    if (v.value.isBool) {
+      text = v.value.number != 0.0 ? "true" : "false";
+    } else {
+      char buf[32];
+      const auto r = std::to_chars(buf, buf + sizeof(buf), v.value.number);
+      text.assign(buf, r.ptr);
+    }
+    out += (out.empty() ? "" : ", ") + v.name + "=" + text + " (" + user::paramTypeName(v.type) +
+           (v.given ? "" : ", default") + ")";
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::string describeUserShader(const spec::CaseSpec& spec) {
+  if (spec.taa.shader.empty()) return "";
+  const UserShader shader = loadUserShader(spec);
+  const bool hlsl = shader.language == user::ShaderLanguage::Hlsl;
+  return "user shader " + spec.taa.shader + " (" + user::languageName(shader.language) +
+         (hlsl ? ", entry " + spec.taa.shader_entry : "") +
+         "), params: " + describeUserParams(userParamValues(spec.taa, shader.interface));
+}
+
 GBufferNeeds userNeeds(const user::UserInterface& u) {
   return gbufferNeeds(u.reads);
 }
@@ -157,6 +245,7 @@ struct UserResolvePass::Impl {
   vk::Sampler linear, point;
   int current = 0;
   glm::vec2 prevJitter{0.0f};
+  glm::ivec2 prevRenderSize{1};
 
   Impl(vk::Context& c, const spec::CaseSpec& s, UserShader sh)
       : ctx(c),
@@ -200,9 +289,12 @@ std::vector<std::string> UserResolvePass::describe() const {
   const glm::ivec2 size = userOutputSize(s.spec);
   const std::string dims = std::to_string(size.x) + "x" + std::to_string(size.y);
   std::vector<std::string> out;
-  out.push_back("pass user_resolve " + s.shader.file.string() +
-                (s.shader.fromCache ? " (SPIR-V from cache)" : "") +
-                " spec constants: " + userSpecConstants(s.spec.taa, s.shader.interface).describe());
+  const auto& ui = s.shader.interface;
+  out.push_back("pass user_resolve " + s.shader.file.string() + " (" +
+                user::languageName(s.shader.language) + ", SPIR-V " + s.shader.provenance +
+                ") workgroup " + std::to_string(ui.workgroup[0]) + "x" +
+                std::to_string(ui.workgroup[1]) +
+                " params: " + describeUserParams(userParamValues(s.spec.taa, ui)));
   out.push_back("buffer user output 2x " + dims + " rgba16f");
   for (int k = 0; k < 2; ++k)
     if (const auto f = s.shader.interface.history[k])
@@ -225,27 +317,48 @@ void UserResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
   u.jitter = glm::vec4(state.jitter, prevJitter);
   u.camera = glm::vec4(state.camera.nearPlane, state.camera.farPlane, 0.0f, 0.0f);
   u.info = glm::uvec4(uint32_t(state.frame), state.resetHistory ? 0u : 1u, 0u, 0u);
+  const double prevTime = script::frameTime(s.spec.script, std::max(0, state.frame - 1));
+  u.time = glm::vec4(float(1.0 / double(s.spec.script.fps)), float(state.time), float(prevTime), 0.0f);
+  const glm::ivec2 prevSize = state.frame == 0 || state.resetHistory ? state.renderSize : s.prevRenderSize;
+  u.prevRenderSize = glm::vec4(glm::vec2(prevSize), 1.0f / glm::vec2(prevSize));
+  // Every render-size input is allocated at the colour's size (the largest render size).
+  const vk::Image* color = in[ResolveInput::Color];
+  if (!color) throw std::logic_error("user resolve: no input colour");
+  const glm::vec2 inputSize(float(color->desc().width), float(color->desc().height));
+  u.inputSize = glm::vec4(inputSize, 1.0f / inputSize);
   std::memcpy(s.uniforms.mapped(), &u, sizeof(u));
   s.prevJitter = state.jitter;
+  s.prevRenderSize = state.renderSize;
 
   const int previous = s.current;
   s.current ^= 1;
   const auto& ui = s.shader.interface;
+  const vk::ShaderInterface& si = s.pipeline.interface();
   vk::Dispatch d(s.pipeline);
+  // A GLSL shader samples through the sampler bound with each image (its row's filter); an
+  // HLSL one declares textures and names taa_point_clamp or taa_linear_clamp itself.
+  auto bindImage = [&](uint32_t binding, vk::Image& image, VkFilter filter) {
+    const vk::ReflectedBinding* b = si.find(0, binding);
+    if (b && b->type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE)
+      d.texture(binding, image);
+    else
+      d.sample(binding, image, filter == VK_FILTER_LINEAR ? s.linear.handle() : s.point.handle());
+  };
   d.uniform(user::kUserFrame, s.uniforms.handle(), 0, sizeof(UserFrameUniforms));
   for (const ResolveInputInfo& i : kResolveInputs) {
     if (!ui.reads.has(i.input)) continue;
     vk::Image* image = i.source == InputSource::Own ? &s.output[previous] : in[i.input];
     if (!image)
       throw std::logic_error(std::string("user resolve: the plan did not allocate ") + i.name);
-    d.sample(uint32_t(i.userBinding), *image,
-             i.filter == VK_FILTER_LINEAR ? s.linear.handle() : s.point.handle());
+    bindImage(uint32_t(i.userBinding), *image, i.filter);
   }
+  if (si.find(0, user::kUserPointSampler)) d.sampler(user::kUserPointSampler, s.point.handle());
+  if (si.find(0, user::kUserLinearSampler)) d.sampler(user::kUserLinearSampler, s.linear.handle());
   d.store(user::kUserOutput, s.output[s.current]);
   for (int k = 0; k < 2; ++k)
     if (ui.history[k]) {
-      d.sample(k ? user::kUserHistory1 : user::kUserHistory0, s.history[k][previous],
-               s.linear.handle());
+      bindImage(k ? user::kUserHistory1 : user::kUserHistory0, s.history[k][previous],
+                VK_FILTER_LINEAR);
       d.store(k ? user::kUserHistory1Out : user::kUserHistory0Out, s.history[k][s.current]);
     }
   timer.begin(cmd, "user_resolve");

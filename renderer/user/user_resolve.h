@@ -9,6 +9,7 @@
 
 #include "passes/resolve_stage.h"
 #include "spec/case_spec.h"
+#include "user/glsl_compiler.h"
 #include "user/user_interface.h"
 #include "vk/pipeline.h"
 
@@ -17,14 +18,21 @@ namespace taa {
 // The shader of a case (taa.shader), compiled (or taken from the cache) and reflected.
 struct UserShader {
   std::filesystem::path file;
+  std::filesystem::path root;  // the folder it and its includes stay inside
   std::vector<uint32_t> spirv;
   user::UserInterface interface;
-  bool fromCache = false;
+  user::ShaderLanguage language = user::ShaderLanguage::Glsl;
+  std::vector<std::filesystem::path> includes;  // real paths of every file it included
+  std::vector<std::string> capabilities;        // what it declares it can run
+  std::string provenance;                       // user::CompiledShader::provenance
 };
 
-// The case's folder is the include root. Throws user::ShaderCompileError on a shader that
-// does not compile or breaks taa_user.h's contract.
+// The include root is the case's folder (or taa.shader_root). Throws
+// user::ShaderCompileError on a shader that does not compile or breaks taa_user.h's contract.
 UserShader loadUserShader(const spec::CaseSpec& spec);
+
+// The language taa.shader is compiled as: taa.shader_language, or by the file's extension.
+user::ShaderLanguage userShaderLanguage(const spec::TaaSpec& taa);
 
 // taa.shader_params checked against the declaration: one message per problem (unknown name,
 // wrong type, set twice), each naming the key, empty when all are valid.
@@ -32,6 +40,22 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
 
 // The specialization constants taa.shader_params gives (validated beforehand).
 vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u);
+
+// Every constant the shader declares with the value it runs with, typed: "alpha=0.1 (float)",
+// "clip=true (bool, default)", for the run log, validate --print and the report.
+struct UserParamValue {
+  std::string name;
+  user::ParamType type;
+  uint32_t bits;       // as the specialization constant takes it
+  bool given;          // by taa.shader_params, else the shader's default
+  spec::NumberOrBool value;  // as JSON writes it: a bool as true/false
+};
+std::vector<UserParamValue> userParamValues(const spec::TaaSpec& taa, const user::UserInterface& u);
+std::string describeUserParams(const std::vector<UserParamValue>& values);  // "none" if empty
+
+// "user shader my.hlsl (hlsl, entry main), params: alpha=0.1 (float)", for a report's case
+// header; "" when the case runs the built-in resolve.
+std::string describeUserShader(const spec::CaseSpec& spec);
 
 // The G-buffer inputs the shader declares: the plan allocates exactly these.
 GBufferNeeds userNeeds(const user::UserInterface& u);

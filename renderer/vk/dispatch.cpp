@@ -8,6 +8,17 @@ Dispatch& Dispatch::sample(uint32_t binding, Image& image, VkSampler sampler) {
   return *this;
 }
 
+Dispatch& Dispatch::texture(uint32_t binding, Image& image) {
+  barriers_.use(image, Use::SampledCompute);
+  bindings_.texture(binding, image.view());
+  return *this;
+}
+
+Dispatch& Dispatch::sampler(uint32_t binding, VkSampler sampler) {
+  bindings_.sampler(binding, sampler);
+  return *this;
+}
+
 Dispatch& Dispatch::load(uint32_t binding, Image& image) {
   barriers_.use(image, Use::StorageRead);
   bindings_.storage(binding, image.view());

@@ -23,6 +23,9 @@ class Dispatch {
 
   // Read through a sampler (or texelFetch).
   Dispatch& sample(uint32_t binding, Image& image, VkSampler sampler);
+  // A sampled image without a sampler (HLSL's Texture2D), and a sampler on its own.
+  Dispatch& texture(uint32_t binding, Image& image);
+  Dispatch& sampler(uint32_t binding, VkSampler sampler);
   // imageLoad only.
   Dispatch& load(uint32_t binding, Image& image);
   // imageStore (loads of the same image allowed: read-modify-write in place).

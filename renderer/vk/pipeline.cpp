@@ -185,7 +185,7 @@ Pipeline createComputePipelineFromSpirv(Context& ctx, const std::string& shader,
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;
-  info.stage.pName = "main";
+  info.stage.pName = interface.entryPoint.c_str();  // a user's HLSL names its own
   info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout;
   VkPipeline pipeline;
@@ -320,6 +320,16 @@ Bindings& Bindings::add(uint32_t binding, VkDescriptorType type, const VkDescrip
 Bindings& Bindings::sampled(uint32_t binding, VkImageView view, VkSampler sampler) {
   images_.push_back({sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
   return add(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &images_.back(), nullptr);
+}
+
+Bindings& Bindings::texture(uint32_t binding, VkImageView view) {
+  images_.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  return add(binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, &images_.back(), nullptr);
+}
+
+Bindings& Bindings::sampler(uint32_t binding, VkSampler sampler) {
+  images_.push_back({sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
+  return add(binding, VK_DESCRIPTOR_TYPE_SAMPLER, &images_.back(), nullptr);
 }
 
 Bindings& Bindings::storage(uint32_t binding, VkImageView view) {

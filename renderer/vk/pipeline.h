@@ -112,6 +112,8 @@ class Bindings {
   // Every element of an array binding, in order.
   Bindings& sampledArray(uint32_t binding, const std::vector<VkImageView>& views,
                          const std::vector<VkSampler>& samplers);
+  Bindings& texture(uint32_t binding, VkImageView view);  // a sampled image, no sampler
+  Bindings& sampler(uint32_t binding, VkSampler sampler);
   Bindings& storage(uint32_t binding, VkImageView view);
   Bindings& uniform(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
   Bindings& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);

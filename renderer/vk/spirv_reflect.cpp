@@ -217,6 +217,17 @@ ShaderInterface reflectSpirv(const std::vector<uint32_t>& words, const std::stri
       case op::EntryPoint:
         ++entryPoints;
         out.stages = stageOf(m, m.operand(in, 0));
+        // The name: a nul-terminated literal from the third operand on, four bytes a word.
+        out.entryPoint.clear();
+        for (size_t w = 2; w < ops.size(); ++w) {
+          bool end = false;
+          for (int b = 0; b < 4 && !end; ++b) {
+            const char c = char((ops[w] >> (8 * b)) & 0xffu);
+            end = c == 0;
+            if (!end) out.entryPoint += c;
+          }
+          if (end) break;
+        }
         break;
       case op::ExecutionMode:
         if (m.operand(in, 1) == kModeLocalSize)

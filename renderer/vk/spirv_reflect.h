@@ -34,6 +34,7 @@ struct ReflectedBinding {
 
 struct ShaderInterface {
   VkShaderStageFlags stages = 0;
+  std::string entryPoint = "main";          // the module's one entry point
   std::vector<ReflectedBinding> bindings;  // sorted by set, then binding
   uint32_t pushConstantBytes = 0;
   // Compute only: the workgroup size, and per dimension the specialization-constant id

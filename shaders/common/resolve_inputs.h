@@ -26,10 +26,10 @@
 #define TAA_RESOLVE_INPUTS(X)                                                                      \
   X(Color, "colour", colorTex, 1, sampler2D, R16G16B16A16_SFLOAT, NEAREST, COLOR,                  \
     taa_color, TAA_USER_ALWAYS, 1,                                                                 \
-    "current frame's lit colour, linear HDR, render size (point sampler)")                         \
+    "current frame's lit colour, linear HDR, render size")                         \
   X(History, "history", historyTex, 6, sampler2D, UNDEFINED, LINEAR, OWN,                          \
     taa_prev_output, TAA_USER_ALWAYS, 9,                                                           \
-    "your previous frame's taa_output, output size (bilinear, clamp to edge)")                     \
+    "your previous frame's taa_output, output size")                     \
   X(Depth, "depth", depthTex, 2, sampler2D, D32_SFLOAT, NEAREST, GBUF(depth),                      \
     taa_depth, TAA_USE_DEPTH, 2, "depth, reversed Z (1 near, 0 far), render size")                 \
   X(Velocity, "velocity", velocityTex, 3, sampler2D, R16G16_SFLOAT, NEAREST, GBUF(velocity),       \
@@ -47,7 +47,12 @@
   X(PrevIds, "prev_ids", prevIdsTex, 9, usampler2D, R32_UINT, NEAREST, GBUF(prevIds),              \
     taa_prev_ids, TAA_USE_PREV_IDS, 7, "last frame's ids")                                         \
   X(PrevVelocity, "prev_velocity", prevVelocityTex, 10, sampler2D, R16G16_SFLOAT, NEAREST,         \
-    GBUF(prevVelocity), taa_prev_velocity, TAA_USE_PREV_VELOCITY, -1, "last frame's velocity")
+    GBUF(prevVelocity), taa_prev_velocity, TAA_USE_PREV_VELOCITY, 15,                              \
+    "last frame's taa_velocity, as it was then (render pixels of last frame's render size)")      \
+  X(ColorLinear, "colour_linear", colorLinearTex, 14, sampler2D, R16G16B16A16_SFLOAT, LINEAR,      \
+    COLOR, taa_color_linear, TAA_USE_COLOR_LINEAR, 16,                                             \
+    "taa_color again, to sample the current frame between pixel centres (GLSL only: HLSL "        \
+    "samples taa_color through taa_linear_clamp)")
 // clang-format on
 
 // A user's resolve's bindings that are not inputs (taa_user.h): its frame uniforms, the

@@ -116,5 +116,52 @@ TEST(Sweep, ShippedPresetsParseOnEverySweepScene) {
   EXPECT_GE(checked, 4 * 19);
 }
 
+// A preset's lane: the case's invariants it cannot meet are not applicable (the sweep judges
+// none), its shader may sit beside the presets file, and a preset whose shader lacks a
+// capability the case needs is skipped with the reason instead of refusing the sweep.
+TEST(Sweep, PresetLanesNoteInapplicableInvariantsFindShadersAndSkipWhatTheyCannotRun) {
+  const fs::path dir = fs::path(TAA_TEST_OUT) / "sweep" / "lanes" / "cases";
+  fs::create_directories(dir / "presets");
+  std::ofstream(dir / "mover.json") << R"({
+    "scene": {"builtin": "checkerboard"}, "render": {"width": 64, "height": 36},
+    "movers": [{"shape": "cube", "start": [-2, 0.5, 2], "end": [2, 0.5, 2], "speed": 2.4}],
+    "script": {"frames": 6}, "reference": {"samples": 2},
+    "checks": {"invariants": ["finite", "no_ghosting"]}
+  })";
+  std::ofstream(dir / "presets" / "mine.comp") << R"(#version 450
+#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p), 1.0));
+}
+)";
+  setenv("TAA_SHADER_CACHE", (dir / "cache").c_str(), 1);
+  const sweep::Presets lanes = {
+      {"off", {{"taa", {{"mode", "off"}}}}},
+      {"mine", {{"taa", {{"shader", "mine.comp"}}}}},
+      {"mine_up", {{"render", {{"upsample", 2.0}}}, {"taa", {{"shader", "mine.comp"}}}}}};
+  sweep::SweepOptions o;
+  o.presetsDir = dir / "presets";
+  const auto r = sweep::runSweep(test::device(), dir / "mover.json", lanes, {"off", "mine", "mine_up"}, o);
+  ASSERT_EQ(r.presets.size(), 3u);
+  EXPECT_EQ(r.presets[0].name, "off");
+  ASSERT_EQ(r.presets[0].notApplicable.size(), 1u);
+  EXPECT_NE(r.presets[0].notApplicable[0].find("no_ghosting: "), std::string::npos)
+      << r.presets[0].notApplicable[0];
+  EXPECT_TRUE(r.presets[0].skipped.empty());
+  EXPECT_EQ(r.presets[1].name, "mine");  // found in presets/, beside the presets file
+  EXPECT_TRUE(r.presets[1].skipped.empty());
+  EXPECT_GT(r.presets[1].flipMean, 0.0);
+  EXPECT_EQ(r.presets[2].name, "mine_up");
+  EXPECT_NE(r.presets[2].skipped.find("does not declare upsampling"), std::string::npos)
+      << r.presets[2].skipped;
+  EXPECT_TRUE(r.presets[2].flipPerFrame.empty());
+  const std::string md = sweep::markdownTable(r);
+  EXPECT_NE(md.find("n/a: no_ghosting"), std::string::npos) << md;
+  EXPECT_NE(md.find("| mine_up | - |"), std::string::npos) << md;
+  EXPECT_NE(md.find("skipped: "), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace taa

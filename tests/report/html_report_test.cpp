@@ -163,3 +163,16 @@ TEST(ReportHtmlWrite, FailsLoudlyWhenTheFolderIsMissing) {
 }
 
 }  // namespace
+
+TEST(ReportHtmlUserShader, CaseHeaderNamesTheShaderAndItsParameters) {
+  const auto dir = taa::test::freshDir("user_shader_header");
+  auto run = taa::test::sampleRun(dir);
+  run.cases[0].resolve = "user shader mine.hlsl (hlsl, entry main), params: alpha=0.1 (float)";
+  const std::string html = renderHtmlReport(run, dir);
+  const size_t header = html.find("data-case=\"" + run.cases[0].name + "\"");
+  ASSERT_NE(header, std::string::npos);
+  const size_t shown = html.find("user shader mine.hlsl (hlsl, entry main), params: alpha=0.1 (float)");
+  ASSERT_NE(shown, std::string::npos);
+  // In the case's own header, before its first frame.
+  EXPECT_LT(shown - header, html.find("<img", header) - header);
+}

@@ -137,10 +137,16 @@ void main() {
   imageStore(taa_output, p, vec4(taa_color_at(p) * K, 1.0));
 }
 )");
+  // A fresh cache folder of its own: the process remembers what it did per cache key.
+  options_.cacheDir = dir_ / "cache_provenance";
   const auto first = compileComputeShader(file, options_);
   const auto second = compileComputeShader(file, options_);
   EXPECT_FALSE(first.fromCache);
   EXPECT_TRUE(second.fromCache);
+  EXPECT_EQ(first.provenance, "compiled by glslang: no cache entry");
+  // The second lookup was served by the cache, but this process compiled the shader: the
+  // run log must not claim the cache saved the compile.
+  EXPECT_EQ(second.provenance, first.provenance);
   EXPECT_EQ(first.spirv, second.spirv);
   EXPECT_EQ(first.includes, second.includes);
   // Same main file, edited header: a stale cache entry would keep K = 0.5.
@@ -148,6 +154,9 @@ void main() {
   const auto third = compileComputeShader(file, options_);
   EXPECT_FALSE(third.fromCache);
   EXPECT_NE(third.spirv, first.spirv);
+  EXPECT_NE(third.provenance.find("recompiled by glslang: "), std::string::npos) << third.provenance;
+  EXPECT_NE(third.provenance.find("k.glsl changed since it was cached"), std::string::npos)
+      << third.provenance;
   // A corrupted entry is recompiled, not used.
   for (const auto& e : fs::directory_iterator(options_.cacheDir))
     if (e.path().extension() == ".spv") std::ofstream(e.path(), std::ios::binary) << "garbage!";
@@ -227,10 +236,21 @@ void main() {
 
   spec::TaaSpec t;
   t.shader = "decl.comp";
-  t.shader_params = {{"gamma", 2.0f}, {"clip", 0.0f}, {"taps", 5.0f}};
+  t.shader_params = {{"gamma", {2.0}}, {"clip", {0.0, true}}, {"taps", {5.0}}};
   EXPECT_TRUE(userParamProblems(t, u).empty());
   EXPECT_EQ(userSpecConstants(t, u).describe(), "0=1073741824 1=0 2=5");
-  t.shader_params = {{"gama", 2.0f}, {"clip", 0.5f}, {"taps", 1.5f}};
+  EXPECT_EQ(describeUserParams(userParamValues(t, u)),
+            "gamma=2 (float), clip=false (bool), taps=5 (int)");
+  t.shader_params = {{"taps", {7.0}}};
+  EXPECT_EQ(describeUserParams(userParamValues(t, u)),
+            "gamma=1.25 (float, default), clip=true (bool, default), taps=7 (int)");
+  // true/false is for bools only; a bool also takes 1 or 0.
+  t.shader_params = {{"gamma", {1.0, true}}, {"clip", {1.0}}};
+  const auto typed = userParamProblems(t, u);
+  ASSERT_EQ(typed.size(), 1u);
+  EXPECT_NE(typed[0].find("give a number, not true or false, for a float"), std::string::npos)
+      << typed[0];
+  t.shader_params = {{"gama", {2.0}}, {"clip", {0.5}}, {"taps", {1.5}}};
   const auto problems = userParamProblems(t, u);
   ASSERT_EQ(problems.size(), 3u);
   EXPECT_NE(problems[0].find("taa.shader_params[0].name: 'gama'"), std::string::npos)
@@ -248,6 +268,134 @@ TEST_F(GlslCompilerTest, ShaderWithoutOutputBreaksTheContract) {
       write("nothing.comp", "#version 450\nlayout(local_size_x = 8) in;\nvoid main() {}\n"),
       options_);
   EXPECT_THROW(reflectUserInterface(c.spirv, "nothing.comp"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace taa::user
+
+namespace taa::user {
+namespace {
+
+const char* kHlslPassThrough = R"(#include "taa_user.hlsli"
+TAA_NUMTHREADS
+void main(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+  taa_output[p] = float4(taa_color_at(p), 1.0);
+}
+)";
+
+TEST_F(GlslCompilerTest, HlslCompilesThroughItsFrontEndWithTheSameInterface) {
+  options_.language = ShaderLanguage::Hlsl;
+  EXPECT_EQ(languageOf("a/b.HLSL"), ShaderLanguage::Hlsl);
+  EXPECT_EQ(languageOf("a/b.comp"), ShaderLanguage::Glsl);
+  const auto c = compileComputeShader(write("pass.hlsl", kHlslPassThrough), options_);
+  ASSERT_EQ(c.includes.size(), 1u);
+  EXPECT_EQ(c.includes[0].filename(), "taa_user.hlsli");
+  const UserInterface u = reflectUserInterface(c.spirv, "pass.hlsl");
+  // HLSL drops what the shader never reads: even the history it does not sample.
+  EXPECT_EQ(u.reads, (ResolveInputSet{ResolveInput::Color}));
+  // Textures and samplers apart, HLSL's way: the colour is a sampled image at its binding.
+  const vk::ShaderInterface si = vk::reflectSpirv(c.spirv, "pass.hlsl");
+  ASSERT_NE(si.find(0, 1), nullptr);
+  EXPECT_EQ(si.find(0, 1)->type, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
+}
+
+TEST_F(GlslCompilerTest, HlslEntryPointParametersHistoriesAndErrors) {
+  options_.language = ShaderLanguage::Hlsl;
+  options_.entry = "resolve";
+  const auto c = compileComputeShader(write("entry.hlsl", R"(#define TAA_USE_PREV_VELOCITY
+#define TAA_HISTORY0_FORMAT rg16f
+#include "taa_user.hlsli"
+[[vk::constant_id(0)]] const float gain = 0.5;
+[[vk::constant_id(3)]] const bool flip = false;
+[numthreads(16, 4, 1)]
+void resolve(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+  float2 v = taa_prev_velocity_uv(p, TAA_PREVIOUS_MINUS_CURRENT);
+  taa_history0_out[p] = taa_history0.SampleLevel(taa_linear_clamp, v, 0);
+  taa_output[p] = float4(taa_color_at(p) * (flip ? -gain : gain), 1.0);
+}
+)"),
+                                      options_);
+  const UserInterface u = reflectUserInterface(c.spirv, "entry.hlsl");
+  EXPECT_EQ(u.reads, (ResolveInputSet{ResolveInput::Color, ResolveInput::PrevVelocity}));
+  EXPECT_EQ(vk::reflectSpirv(c.spirv, "entry.hlsl").entryPoint, "resolve");
+  ASSERT_TRUE(u.history[0].has_value());
+  EXPECT_EQ(*u.history[0], VK_FORMAT_R16G16_SFLOAT);
+  EXPECT_EQ(u.workgroup[0], 16u);
+  EXPECT_EQ(u.workgroup[1], 4u);
+  ASSERT_EQ(u.params.size(), 2u);
+  EXPECT_EQ(u.params[0].name, "gain");
+  EXPECT_EQ(u.params[1].name, "flip");
+  EXPECT_EQ(u.params[1].type, ParamType::Bool);
+
+  const auto broken = write("broken.hlsl", "#include \"taa_user.hlsli\"\nTAA_NUMTHREADS\n"
+                                           "void resolve(uint3 id : SV_DispatchThreadID) {\n"
+                                           "  float x = undeclared_thing;\n}\n");
+  const std::string msg = compileError(broken);
+  EXPECT_NE(msg.find(broken.string() + ":4:"), std::string::npos) << msg;
+  // glslang would quietly run a function called main instead: the harness refuses.
+  options_.entry = "nowhere";
+  const std::string none = compileError(write("noentry.hlsl", kHlslPassThrough));
+  EXPECT_NE(none.find("has no function nowhere to run"), std::string::npos) << none;
+}
+
+// kPassThrough with `lines` between its #version and its #include.
+std::string passThroughWith(const std::string& lines) {
+  const std::string text = kPassThrough;
+  const size_t afterVersion = text.find('\n') + 1;
+  return text.substr(0, afterVersion) + lines + text.substr(afterVersion);
+}
+
+TEST_F(GlslCompilerTest, CapabilitiesComeFromTheHeadersMacros) {
+  const auto none = compileComputeShader(write("none.comp", kPassThrough), options_);
+  EXPECT_TRUE(none.capabilities.empty());
+  const std::string both =
+      passThroughWith("#define TAA_SUPPORTS_DYNAMIC_RESOLUTION\n#define TAA_SUPPORTS_UPSAMPLING\n");
+  const auto compiled = compileComputeShader(write("both.comp", both), options_);
+  EXPECT_FALSE(compiled.fromCache);
+  EXPECT_EQ(compiled.capabilities, (std::vector<std::string>{"dynamic_resolution", "upsampling"}));
+  // Kept with the cache entry: the cached lookup declares the same.
+  const auto cached = compileComputeShader(write("both.comp", both), options_);
+  EXPECT_TRUE(cached.fromCache);
+  EXPECT_EQ(cached.capabilities, compiled.capabilities);
+  options_.language = ShaderLanguage::Hlsl;
+  const auto hlsl = compileComputeShader(
+      write("up.hlsl", std::string("#define TAA_SUPPORTS_UPSAMPLING\n") + kHlslPassThrough), options_);
+  EXPECT_EQ(hlsl.capabilities, (std::vector<std::string>{"upsampling"}));
+  options_.language = ShaderLanguage::Glsl;
+  const std::string msg =
+      compileError(write("typo.comp", passThroughWith("#pragma taa_supports(upsamplin)\n")));
+  EXPECT_NE(msg.find("taa_supports(upsamplin) names no capability"), std::string::npos) << msg;
+}
+
+TEST_F(GlslCompilerTest, OwnWorkgroupIsReadFromSpirvAndBounded) {
+  const std::string body = R"(#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p), 1.0));
+}
+)";
+  const auto wide = compileComputeShader(
+      write("wide.comp", "#version 450\n#define TAA_OWN_WORKGROUP\nlayout(local_size_x = 32, "
+                         "local_size_y = 2) in;\n" + body),
+      options_);
+  const UserInterface u = reflectUserInterface(wide.spirv, "wide.comp");
+  EXPECT_EQ(u.workgroup[0], 32u);
+  EXPECT_EQ(u.workgroup[1], 2u);
+  const auto deep = compileComputeShader(
+      write("deep.comp", "#version 450\n#define TAA_OWN_WORKGROUP\nlayout(local_size_x = 8, "
+                         "local_size_y = 8, local_size_z = 2) in;\n" + body),
+      options_);
+  EXPECT_THROW(reflectUserInterface(deep.spirv, "deep.comp"), std::runtime_error);
+  const auto huge = compileComputeShader(
+      write("huge.comp", "#version 450\n#define TAA_OWN_WORKGROUP\nlayout(local_size_x = 64, "
+                         "local_size_y = 32) in;\n" + body),
+      options_);
+  EXPECT_THROW(reflectUserInterface(huge.spirv, "huge.comp"), std::runtime_error);
 }
 
 }  // namespace

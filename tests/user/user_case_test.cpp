@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "case/case_error.h"
 #include "case/case_loader.h"
@@ -108,6 +109,71 @@ TEST_F(UserCaseTest, HistoryBoundedOnlyWhenTheShaderDeclaresItClamps) {
   loaded = taa::cases::parseCase(R"({"taa": {"shader": "mine.comp", "shader_clamps": true}})",
                                  dir_ / "c.json");
   EXPECT_EQ(taa::invariants::inapplicable("history_bounded", loaded.spec), "");
+}
+
+TEST_F(UserCaseTest, BoolParametersTakeTrueAndFalse) {
+  std::ofstream(dir_ / "flag.comp") << R"(#version 450
+#include "taa_user.h"
+layout(constant_id = 0) const bool dim = false;
+layout(constant_id = 1) const float gain = 1.0;
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * (dim ? 0.5 : gain), 1.0));
+}
+)";
+  EXPECT_TRUE(problems(R"({"shader": "flag.comp", "shader_params": [{"name": "dim", "value": true}]})").empty());
+  EXPECT_TRUE(problems(R"({"shader": "flag.comp", "shader_params": [{"name": "dim", "value": 1}]})").empty());
+  const auto p = problems(R"({"shader": "flag.comp", "shader_params": [{"name": "gain", "value": true}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("gain is declared float; give a number, not true or false"), std::string::npos) << p[0];
+  // validate --print: every declared constant, typed, and no built-in resolve setting.
+  const auto loaded = taa::cases::parseCase(
+      R"({"taa": {"shader": "flag.comp", "shader_params": [{"name": "dim", "value": true}]}})",
+      dir_ / "c.json");
+  const auto printed = taa::cases::resolvedJson(loaded.spec)["taa"];
+  EXPECT_FALSE(printed.contains("alpha")) << printed.dump();
+  EXPECT_FALSE(printed.contains("history_filter")) << printed.dump();
+  EXPECT_FALSE(printed.contains("shader_entry")) << printed.dump();  // GLSL: always main
+  ASSERT_EQ(printed["shader_params"].size(), 2u) << printed.dump();
+  EXPECT_EQ(printed["shader_params"][0],
+            (nlohmann::json{{"name", "dim"}, {"value", true}, {"type", "bool"}, {"given", true}}));
+  EXPECT_EQ(printed["shader_params"][1],
+            (nlohmann::json{{"name", "gain"}, {"value", 1.0}, {"type", "float"}, {"given", false}}));
+}
+
+TEST_F(UserCaseTest, ACaseNeedingACapabilityTheShaderLacksIsRefused) {
+  const auto load = [&](const std::string& shader, const std::string& render) {
+    try {
+      taa::cases::parseCase(R"({"render": )" + render + R"(, "taa": {"shader": ")" + shader + R"("}})",
+                            dir_ / "c.json");
+    } catch (const taa::cases::CaseError& e) {
+      return joined(e.problems());
+    }
+    return std::string();
+  };
+  const std::string up = load("mine.comp", R"({"width": 64, "height": 36, "upsample": 2})");
+  EXPECT_NE(up.find("c.json: taa.shader: the case renders at 32x18 under its 64x36 output "
+                    "(render.upsample 2), and mine.comp does not declare upsampling"),
+            std::string::npos)
+      << up;
+  EXPECT_NE(up.find("#define TAA_SUPPORTS_UPSAMPLING"), std::string::npos) << up;
+  const std::string dyn = load(
+      "mine.comp", R"({"width": 64, "height": 36, "scale_schedule": [{"frame": 2, "scale": 0.5}]})");
+  EXPECT_NE(dyn.find("does not declare dynamic_resolution"), std::string::npos) << dyn;
+  EXPECT_NE(dyn.find("does not declare upsampling"), std::string::npos) << dyn;
+  std::ofstream(dir_ / "able.comp") << "#version 450\n#define TAA_SUPPORTS_UPSAMPLING\n"
+                                       "#define TAA_SUPPORTS_DYNAMIC_RESOLUTION\n"
+                                    << R"(#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(taa_render_pixel(p)), 1.0));
+}
+)";
+  EXPECT_EQ(load("able.comp", R"({"width": 64, "height": 36, "upsample": 2,
+                                  "scale_schedule": [{"frame": 2, "scale": 0.5}]})"),
+            "");
 }
 
 }  // namespace

@@ -1,0 +1,149 @@
+// The scorecard's lanes as a user names them (a shader and its parameters on the command
+// line, or a lanes file), and its convergence rule.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "case/case_error.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
+#include "report/text_util.h"
+#include "score/score.h"
+
+namespace taa::score {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double laneMean(std::vector<double>::const_iterator a, std::vector<double>::const_iterator b) {
+  double s = 0.0;
+  for (auto it = a; it != b; ++it) s += *it;
+  return a == b ? 0.0 : s / double(b - a);
+}
+
+std::string fixed4(double v) {
+  return report::formatFixed(v, 4);
+}
+
+}  // namespace
+
+Convergence convergence(const std::vector<double>& e) {
+  Convergence c;
+  const size_t n = e.size();
+  if (n < 4) {
+    c.why = "fewer than 4 frames";
+    return c;
+  }
+  const size_t tail = std::max<size_t>(1, n / 4);
+  const double level = laneMean(e.end() - long(tail), e.end());
+  const double fall = e.front() - level;
+  // The first frame from which every later frame stays at or under `bound`.
+  auto settledFrom = [&](double bound) {
+    size_t first = n;
+    for (size_t f = n; f-- > 0 && e[f] <= bound;) first = f;
+    return first;
+  };
+  if (level <= kFloorFlip) {
+    // At the reference's floor: nothing left to fall to.
+    const size_t f = settledFrom(kFloorFlip + std::max(0.0, kSettleShare * fall));
+    if (f + tail <= n) {
+      c.frame = int(f);
+      return c;
+    }
+  }
+  if (fall < kSettleShare * e.front()) {
+    c.why = std::string(fall < 0.0 ? "error rose" : "error fell less than 10%") + " (" +
+            fixed4(e.front()) + " at frame 0, " + fixed4(level) + " over the last quarter)";
+    return c;
+  }
+  const size_t f = settledFrom(level + kSettleShare * fall);
+  if (f + tail > n) {
+    c.why = "still settling in the last quarter (" + fixed4(e.front()) + " at frame 0, " +
+            fixed4(level) + " over the last quarter)";
+    return c;
+  }
+  c.frame = int(f);
+  return c;
+}
+
+// "clip.hlsl alpha=0.2 clip=true": a lane's taa section for the legend, by name and typed value
+// whether it came from --params or a lanes file (its other keys follow as key=value).
+std::string describeLane(const nlohmann::json& taa) {
+  std::string out = taa.value("shader", std::string());
+  const auto add = [&](const std::string& item) { out += (out.empty() ? "" : " ") + item; };
+  if (const auto it = taa.find("shader_params"); it != taa.end() && it->is_array())
+    for (const auto& p : *it)
+      if (p.is_object()) add(p.value("name", std::string("?")) + "=" + p.value("value", nlohmann::json()).dump());
+  for (const auto& [key, value] : taa.items())
+    if (key != "shader" && key != "shader_params") add(key + "=" + value.dump());
+  return out;
+}
+
+LaneSpec shaderLane(const fs::path& shader, const std::string& params, const std::string& name,
+                    bool qualify) {
+  LaneSpec l;
+  l.shaderRoot = fs::absolute(shader).parent_path();
+  l.taa = {{"shader", shader.filename().string()}};
+  auto list = nlohmann::json::array();
+  std::stringstream in(params);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+      throw cases::CaseError({"--params " + params + ": '" + item +
+                              "' is not NAME=VALUE; give e.g. --params alpha=0.2,clip=true"});
+    const std::string key = item.substr(0, eq), text = item.substr(eq + 1);
+    nlohmann::json value;
+    try {
+      value = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception&) {
+      value = nullptr;
+    }
+    if (!value.is_number() && !value.is_boolean())
+      throw cases::CaseError({"--params " + params + ": " + key + "'s value '" + text +
+                              "' is not a number, true or false"});
+    list.push_back({{"name", key}, {"value", value}});
+  }
+  if (!list.empty()) l.taa["shader_params"] = list;
+  l.describe = describeLane(l.taa);
+  l.name = !name.empty() ? name : shader.stem().string();
+  if (name.empty() && qualify && !list.empty()) l.name += "[" + params + "]";
+  return l;
+}
+
+std::vector<LaneSpec> loadLanes(const fs::path& file) {
+  std::string text;
+  try {
+    text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileError& e) {
+    throw cases::CaseError({e.what()});
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw cases::CaseError({file.string() + ": " + problem});
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception&) {
+    throw cases::CaseError({file.string() + ": not valid JSON; fix the syntax"});
+  }
+  if (!j.is_object() || j.empty())
+    throw cases::CaseError({file.string() +
+                            ": expected lanes {\"name\": {\"shader\": \"x.hlsl\", \"shader_params\": "
+                            "[...]}, ...}"});
+  std::vector<LaneSpec> out;
+  for (const auto& [name, taa] : j.items()) {
+    if (!taa.is_object())
+      throw cases::CaseError({file.string() + ": " + name +
+                              ": a lane is a taa section, e.g. {\"shader\": \"x.hlsl\"}"});
+    LaneSpec l;
+    l.name = name;
+    l.taa = taa;
+    if (taa.contains("shader")) l.shaderRoot = fs::absolute(file).parent_path();
+    l.describe = describeLane(taa);
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+}  // namespace taa::score

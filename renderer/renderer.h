@@ -14,6 +14,7 @@
 namespace taa {
 
 class Device;
+class ReferenceCache;
 namespace vk {
 class Context;
 }
@@ -38,6 +39,11 @@ struct RenderOptions {
   // checked. Sets FrameRecord::color and colorSha256 for every frame; aux buffers, captures
   // and the reference still come only with readImages.
   bool hashEveryFrame = false;
+  // Reference frames shared across the renderers of a run (passes/reference_cache.h), used
+  // when both are set: `referenceKey` names everything the case gives the reference pass
+  // (the harness's run::referenceKey), the renderer adds each frame's own inputs.
+  ReferenceCache* referenceCache = nullptr;
+  std::string referenceKey;
 };
 
 class Renderer {

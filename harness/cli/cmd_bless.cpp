@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 const char* kBlessUsage =
-    "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR]\n"
+    "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR] [-j N]\n"
     "taa-harness bless --failed-from out/results.json --reason \"...\"   (re-bless what failed last run)\n"
     "  renders each case, runs its invariants (a failing invariant refuses the bless unless --force),\n"
     "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
@@ -65,7 +65,7 @@ void printChanges(const run::CaseResult& r) {
 }  // namespace
 
 int cmdBless(const Args& args) {
-  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device"}, kBlessUsage);
+  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device", "--jobs"}, kBlessUsage);
   const std::string reason = a.value("--reason");
   if (reason.find_first_not_of(" \t") == std::string::npos)
     throw UsageError("--reason is required: say why the images changed (it is stored in the manifest)\nusage: " +
@@ -85,6 +85,7 @@ int cmdBless(const Args& args) {
   options.run.outDir = a.value("--out", "out/bless");
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
+  options.jobs = parseJobs(a.value("--jobs"));
   for (const auto& c : batch.cases)
     refuseOutputInGoldens(options.run.outDir, options.run.goldensRoot.empty()
                                                   ? run::defaultGoldensRoot(c.spec.file)

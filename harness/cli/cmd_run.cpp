@@ -21,13 +21,18 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string runUsage() {
-  return "taa-harness run CASE... [--out DIR] [--goldens DIR] [--shard I/N] [--device NAME] "
+  return "taa-harness run CASE... [--out DIR] [--goldens DIR] [-j N] [--shard I/N] [--device NAME] "
          "[--validate]\n"
-         "                        [--metric NAME --above X] [--fail-fast]\n"
+         "                        [--metric NAME --above X] [--fail-fast] [--no-reference-cache]\n"
          "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants "
          "and\n"
          "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
-         "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices.\n"
+         "  -j N (--jobs N) renders N cases at once, each worker on its own device (default: one per\n"
+         "  core); the console lines and every output stay in case order, the same for any N.\n"
+         "  A reference frame several cases (or the frames of a still scene) share is rendered once;\n"
+         "  --no-reference-cache renders every one (the results are the same).\n"
+         "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices;\n"
+         "  `taa-harness merge` joins the shards' outputs.\n"
          "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
          "  cover the cases run so far.\n"
          "  --metric NAME --above X: exit 1 when a checked frame's NAME (" +
@@ -61,8 +66,8 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
 
 int cmdRun(const Args& args) {
   const auto a =
-      parseArgs(args, {"--validate", "--fail-fast"},
-                {"--out", "--goldens", "--shard", "--device", "--metric", "--above"}, runUsage());
+      parseArgs(args, {"--validate", "--fail-fast", "--no-reference-cache"},
+                {"--out", "--goldens", "--shard", "--device", "--metric", "--above", "--jobs"}, runUsage());
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + runUsage());
   if (a.values.count("--metric") != a.values.count("--above"))
     throw UsageError(std::string("--metric and --above go together\nusage: ") + runUsage());
@@ -82,7 +87,10 @@ int cmdRun(const Args& args) {
                                                   : run::defaultGoldensRoot(c.spec.file));
   createOutputDirectory(out);
   const auto start = std::chrono::steady_clock::now();
+  const CpuTimes cpuBefore = cpuTimes();
   BatchOptions options;
+  options.jobs = parseJobs(a.value("--jobs"));
+  options.shareReferences = !a.has("--no-reference-cache");
   options.run.outDir = out;
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
@@ -90,12 +98,13 @@ int cmdRun(const Args& args) {
   options.failFast = a.has("--fail-fast");
   options.run.missingGoldenFails = runningInCi();
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   writeFileAtomically(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");
   report::writeJUnit(out / "junit.xml", outcome.results);
   report::writeHtmlReport(out / "report.html", outcome.results);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run::printSummary(std::cout, outcome.results, seconds);
+  std::cout << throughputLine(outcome, seconds, cpuBefore) << "\n";
   if (outcome.notRun > 0)
     std::cout << "--fail-fast: stopped at the first failing case, " << outcome.notRun << " of "
               << batch.cases.size() << " cases not run\n";

@@ -1,12 +1,16 @@
 #include "cli/run_cases.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <mutex>
 
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
@@ -17,6 +21,7 @@
 #include "device_error.h"
 #include "golden/environment.h"
 #include "run/console.h"
+#include "run/ordered_run.h"
 #include "scene/scene_error.h"
 
 namespace taa::cli {
@@ -53,13 +58,101 @@ std::pair<int, int> parseShard(const std::string& shard) {
   throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N, e.g. --shard 2/4");
 }
 
-std::function<void(int, int)> terminalProgress(const std::string& name, size_t index, size_t count) {
-  if (!isatty(STDERR_FILENO)) return {};
-  return [name, index, count](int f, int frames) {
-    std::cerr << "\r[" << index + 1 << "/" << count << "] " << name << " frame " << f + 1 << "/" << frames
-              << "\033[K" << std::flush;
-    if (f + 1 == frames) std::cerr << "\r\033[K" << std::flush;
+// "\r[3/99] fence frame 12/24 | open_area frame 3/32" on a terminal: what each worker renders.
+class TerminalProgress {
+ public:
+  TerminalProgress(size_t workers, size_t count)
+      : on_(isatty(STDERR_FILENO) != 0), lanes_(workers), count_(count) {}
+
+  std::function<void(int, int)> forCase(size_t worker, const std::string& name) {
+    if (!on_) return {};
+    return [this, worker, name](int f, int frames) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      lanes_[worker] = f + 1 == frames ? "" : name + " frame " + std::to_string(f + 1) + "/" +
+                                                  std::to_string(frames);
+      draw();
+    };
+  }
+  void caseDone() {
+    if (!on_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++done_;
+    if (done_ == count_)
+      std::cerr << "\r\033[K" << std::flush;
+    else
+      draw();
+  }
+  // Before a console line: the progress line goes, and comes back with the next frame.
+  void clear() {
+    if (!on_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::cerr << "\r\033[K" << std::flush;
+  }
+
+ private:
+  void draw() {
+    std::string line = "[" + std::to_string(done_) + "/" + std::to_string(count_) + "]";
+    for (const auto& l : lanes_)
+      if (!l.empty()) line += " " + l + " |";
+    if (line.back() == '|') line.pop_back();
+    std::cerr << "\r" << line << "\033[K" << std::flush;
+  }
+  bool on_;
+  std::mutex mutex_;
+  std::vector<std::string> lanes_;
+  size_t count_, done_ = 0;
+};
+
+// One case's outcome as the batch keeps it until its turn in case order.
+struct CaseSlot {
+  run::CaseResult result;
+  bool regression = false;
+  bool badInput = false;
+  std::map<int, Image> outputs;  // when keepOutputs
+};
+
+CaseSlot runOne(Device& device, const cases::LoadedCase& loaded, const run::RunOptions& ro,
+                bool keepOutputs) {
+  CaseSlot slot;
+  run::CaseResult& result = slot.result;
+  auto failWith = [&](const std::string& message) {
+    result.name = loaded.spec.name;
+    result.file = loaded.spec.file.string();
+    result.status = run::CaseStatus::Error;
+    result.message = message;
   };
+  try {
+    const int before = device.validationMessages();
+    result = run::runCase(device, loaded, ro, keepOutputs ? &slot.outputs : nullptr);
+    if (device.validationMessages() > before) {
+      result.status = run::CaseStatus::Fail;
+      result.message += std::string(result.message.empty() ? "" : "; ") +
+                        std::to_string(device.validationMessages() - before) +
+                        " validation message(s) (see stderr)";
+    }
+  } catch (const scene::SceneError& e) {
+    failWith(e.what());
+    slot.badInput = true;
+  } catch (const UnsupportedSettingError& e) {
+    // A setting this device lacks (render.msaa): the case must change, as for a bad scene.
+    failWith(e.what());
+    slot.badInput = true;
+  } catch (const ImageWriteError&) {
+    throw;  // the disk, not the case: exit 3, not a regression
+  } catch (const OutputError&) {
+    throw;
+  } catch (const fs::filesystem_error&) {
+    throw;
+  } catch (const ImageIoError& e) {
+    failWith(e.what());
+    slot.regression = true;
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const EnvironmentError*>(&e) || dynamic_cast<const DeviceError*>(&e)) throw;
+    failWith(e.what());
+    slot.regression = true;
+  }
+  slot.regression |= run::caseFailed(result);
+  return slot;
 }
 
 }  // namespace
@@ -110,73 +203,95 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
   return batch;
 }
 
+size_t parseJobs(const std::string& value) {
+  if (value.empty()) return 0;
+  size_t used = 0;
+  long n = 0;
+  try {
+    n = std::stol(value, &used);
+  } catch (const std::exception&) {
+  }
+  if (used != value.size() || n < 1 || n > 1024)
+    throw UsageError("--jobs '" + value + "': expected a number of cases to run at once, 1 to 1024 "
+                     "(e.g. -j 2; leave it out for one per core)");
+  return size_t(n);
+}
+
+CpuTimes cpuTimes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) * 1e-6; };
+  return {seconds(u.ru_utime), seconds(u.ru_stime)};
+}
+
+std::string throughputLine(const BatchOutcome& outcome, double wallSeconds, const CpuTimes& before) {
+  const CpuTimes now = cpuTimes();
+  const double user = now.user - before.user, system = now.system - before.system;
+  long frames = 0;
+  for (const auto& c : outcome.results.cases) frames += c.framesRendered;
+  char buf[400];
+  std::snprintf(buf, sizeof(buf),
+                "run: %ld frames in %.1f s (%.1f frames/s); CPU %.1f s (user %.1f, system %.1f), "
+                "CPU/wall %.2f with %zu worker%s; pipelines: %zu compiled, %zu reused; "
+                "references: %zu rendered, %zu reused",
+                frames, wallSeconds, wallSeconds > 0 ? double(frames) / wallSeconds : 0.0,
+                user + system, user, system, wallSeconds > 0 ? (user + system) / wallSeconds : 0.0,
+                outcome.workers, outcome.workers == 1 ? "" : "s", outcome.pipelinesCreated,
+                outcome.pipelinesReused, outcome.referencesRendered, outcome.referencesReused);
+  return buf;
+}
+
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
                       const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs) {
   BatchOutcome out;
+  const size_t count = batch.cases.size();
+  const size_t workers = std::max<size_t>(1, std::min(options.jobs ? options.jobs : run::availableCores(), count));
+  // One device per worker: lavapipe runs a device's one queue on one thread, so cases on one
+  // device would render one after another. Each device's pipeline cache serves every case
+  // its worker runs.
   DeviceOptions co;
   co.device = options.device;
   co.validate = options.validate;
-  Device device(co);
-  out.results.device = device.identity().name;
-  out.environment = golden::currentEnvironment(device.identity());
+  std::vector<std::unique_ptr<Device>> devices;
+  for (size_t w = 0; w < workers; ++w) devices.push_back(std::make_unique<Device>(co));
+  out.results.device = devices[0]->identity().name;
+  out.environment = golden::currentEnvironment(devices[0]->identity());
   out.results.fingerprint = out.environment.fingerprint();
+  out.workers = workers;
+  TerminalProgress progress(workers, count);
+  ReferenceCache references;
+  std::vector<CaseSlot> slots(count);
   bool regression = false, badInput = false;
-  for (size_t k = 0; k < batch.cases.size(); ++k) {
-    const auto& loaded = batch.cases[k];
-    run::RunOptions ro = options.run;
-    ro.progress = terminalProgress(loaded.spec.name, k, batch.cases.size());
-    run::CaseResult result;
-    try {
-      const int before = device.validationMessages();
-      std::map<int, Image>* keep = keepOutputs ? &out.outputs[loaded.spec.name] : nullptr;
-      result = run::runCase(device, loaded, ro, keep);
-      if (device.validationMessages() > before) {
-        result.status = run::CaseStatus::Fail;
-        result.message += std::string(result.message.empty() ? "" : "; ") +
-                          std::to_string(device.validationMessages() - before) +
-                          " validation message(s) (see stderr)";
-      }
-    } catch (const scene::SceneError& e) {
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      badInput = true;
-    } catch (const UnsupportedSettingError& e) {
-      // A setting this device lacks (render.msaa): the case must change, as for a bad scene.
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      badInput = true;
-    } catch (const ImageWriteError&) {
-      throw;  // the disk, not the case: exit 3, not a regression
-    } catch (const OutputError&) {
-      throw;
-    } catch (const fs::filesystem_error&) {
-      throw;
-    } catch (const ImageIoError& e) {
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      regression = true;
-    } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const EnvironmentError*>(&e) || dynamic_cast<const DeviceError*>(&e)) throw;
-      result.name = loaded.spec.name;
-      result.file = loaded.spec.file.string();
-      result.status = run::CaseStatus::Error;
-      result.message = e.what();
-      regression = true;
-    }
-    regression |= run::caseFailed(result);
-    if (onCase) onCase(result);
-    out.results.cases.push_back(std::move(result));
-    if (options.failFast && (regression || badInput)) {
-      out.notRun = batch.cases.size() - k - 1;
-      break;
-    }
+  run::runOrdered(
+      count, workers,
+      [&](size_t w, size_t k) {
+        run::RunOptions ro = options.run;
+        if (options.shareReferences) ro.references = &references;
+        ro.progress = progress.forCase(w, batch.cases[k].spec.name);
+        slots[k] = runOne(*devices[w], batch.cases[k], ro, keepOutputs);
+        progress.caseDone();
+      },
+      [&](size_t k) {
+        CaseSlot slot = std::move(slots[k]);
+        regression |= slot.regression;
+        badInput |= slot.badInput;
+        progress.clear();
+        if (onCase) onCase(slot.result);
+        if (keepOutputs) out.outputs[slot.result.name] = std::move(slot.outputs);
+        out.results.cases.push_back(std::move(slot.result));
+        if (options.failFast && (regression || badInput)) {
+          out.notRun = count - k - 1;
+          return false;
+        }
+        return true;
+      });
+  for (const auto& d : devices) {
+    const auto p = d->pipelineCounts();
+    out.pipelinesCreated += p.created;
+    out.pipelinesReused += p.reused;
   }
+  out.referencesRendered = references.stats().rendered;
+  out.referencesReused = references.stats().reused;
   out.exitCode = badInput ? kBadInput : regression ? kRegression : kPass;
   return out;
 }

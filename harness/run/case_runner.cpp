@@ -14,6 +14,7 @@
 #include "renderer.h"
 #include "run/golden_check.h"
 #include "run/invariant_run.h"
+#include "run/reference_key.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
 
@@ -64,6 +65,10 @@ void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scen
   ro.captureVelocity = checks.needs().velocity;
   ro.captureAdaptive = checks.needs().adaptive;
   ro.captureTscmaa = checks.needs().tscmaa;
+  if (ro.reference && options.references) {
+    ro.referenceCache = options.references;
+    ro.referenceKey = referenceKey(spec);
+  }
   Renderer renderer(device, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
@@ -137,15 +142,19 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
           outputs[r.frame] = std::move(r.color);
       },
       &result.log);
+  result.framesRendered += spec.script.frames;
   if (checks.needs().secondRun) {
     replay(
         device, spec, scene, checks, options, checks.judgesWarmUp(),
         [&](FrameRecord& r) { checks.observeRepeat(viewOf(r)); }, nullptr);
+    result.framesRendered += spec.script.frames;
   }
   result.timings = timing.summary();
   std::map<int, Image> abOutputs;
-  if (!loaded.abCase.empty() && options.writeImages)
+  if (!loaded.abCase.empty() && options.writeImages) {
     abOutputs = renderAbSide(device, loaded, options);
+    result.framesRendered += spec.script.frames;
+  }
 
   // The case's status is the worst of its checks: a failed invariant fails the case whether
   // its goldens are missing, stale or match.

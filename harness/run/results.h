@@ -114,6 +114,7 @@ struct CaseResult {
   std::vector<PassTiming> timings;
   std::vector<std::string> log;       // passes and buffers the renderer allocated
   double seconds = 0.0;               // wall time of the case (not a result, for scheduling)
+  int framesRendered = 0;             // every replay's frames (repeat, report.ab); not in JSON
 };
 
 struct RunResults {

@@ -30,6 +30,11 @@ void ReferenceCache::insert(const std::string& key, Image image) {
   }
 }
 
+std::vector<std::string> ReferenceCache::keys() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return {recent_.begin(), recent_.end()};
+}
+
 ReferenceCacheStats ReferenceCache::stats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return stats_;

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "core/image.h"
 
@@ -34,6 +35,8 @@ class ReferenceCache {
   std::shared_ptr<const Image> find(const std::string& key);
   void insert(const std::string& key, Image image);
   ReferenceCacheStats stats() const;
+  // The keys held, most recently used first (for tests that compare two caches' images).
+  std::vector<std::string> keys() const;
 
  private:
   struct Entry {

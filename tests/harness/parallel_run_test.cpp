@@ -23,8 +23,19 @@ using test::HarnessCli;
 
 // Repo cases of different kinds: a reference two of them share (clamp_rgb and
 // velocity_longest3x3), a still scene, a cut, report.ab, TSCMAA stereo, MSAA-free fast ones.
-const char* kRepoCases[] = {"clamp_rgb", "jitter_legacy2", "velocity_longest3x3", "camera_cut",
-                            "alpha_low_static", "report_ab_zoom", "tscmaa_stereo", "history_bilinear"};
+const std::vector<std::string> kRepoCases = {"clamp_rgb",        "jitter_legacy2", "velocity_longest3x3",
+                                             "camera_cut",       "alpha_low_static", "report_ab_zoom",
+                                             "tscmaa_stereo",    "history_bilinear"};
+// Fast ones for the merge, which joins results and folders whatever the cases render.
+const std::vector<std::string> kMergeCases = {"clamp_rgb",        "jitter_legacy2",   "camera_cut",
+                                              "alpha_low_static", "history_bilinear", "debug_velocity"};
+
+// The case files, and the repo's goldens.
+std::string repoCases(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& c : names) s += (fs::path(TAA_SOURCE_DIR) / "cases" / (c + ".json")).string() + " ";
+  return s + "--goldens " + (fs::path(TAA_SOURCE_DIR) / "goldens").string() + " ";
+}
 
 std::string readFile(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -90,11 +101,6 @@ void expectSame(const RunOutput& a, const RunOutput& b, const std::string& what)
 
 class ParallelRun : public HarnessCli {
  protected:
-  std::string repoCases() const {
-    std::string s;
-    for (const char* c : kRepoCases) s += fs::path(TAA_SOURCE_DIR).append("cases").append(std::string(c) + ".json").string() + " ";
-    return s + "--goldens " + (fs::path(TAA_SOURCE_DIR) / "goldens").string() + " ";
-  }
   RunOutput runInto(const std::string& name, const std::string& args, int expectExit = 0) {
     const auto r = harness("run " + args + " --out " + (root_ / name).string());
     EXPECT_EQ(r.exitCode, expectExit) << r.output;
@@ -103,11 +109,11 @@ class ParallelRun : public HarnessCli {
 };
 
 TEST_F(ParallelRun, EveryOutputIsTheSameForAnyWorkerCount) {
-  const RunOutput one = runInto("j1", repoCases() + "-j 1");
+  // One worker rendering every reference, against three sharing them: neither the worker
+  // count nor the reference cache may change a result (the cache is shared by the workers).
+  const RunOutput one = runInto("j1", repoCases(kRepoCases) + "-j 1 --no-reference-cache");
   EXPECT_NE(one.console.find("PASS clamp_rgb invariant no_ghosting"), std::string::npos) << one.console;
-  expectSame(one, runInto("j3", repoCases() + "-j3"), "-j 3 against -j 1");
-  // The reference cache changes what is rendered, never a result.
-  expectSame(one, runInto("nocache", repoCases() + "-j 2 --no-reference-cache"), "without the reference cache");
+  expectSame(one, runInto("j3", repoCases(kRepoCases) + "-j3"), "-j 3 sharing references against -j 1");
 }
 
 TEST_F(ParallelRun, FailFastStopsAtTheSameCaseForAnyWorkerCount) {
@@ -182,16 +188,30 @@ TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
   EXPECT_NE(bad.output.find("results.json"), std::string::npos) << bad.output;
 }
 
+// The unsharded run and its three shards, made once for the suite (each test copies them).
 class Merge : public ParallelRun {
  protected:
+  static fs::path runs() { return fs::path(TAA_TEST_OUT) / "merge-runs"; }
+  static void SetUpTestSuite() {
+    fs::remove_all(runs());
+    auto runTo = [](const std::string& name, const std::string& args) {
+      const auto r = test::runHarness("run " + repoCases(kMergeCases) + args + " --out " + (runs() / name).string() + " ",
+                                      "CI=false ");
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+      std::ofstream(runs() / (name + ".console")) << r.output;
+    };
+    runTo("whole", "-j 2");
+    for (int i = 1; i <= 3; ++i) runTo("shard" + std::to_string(i), "--shard " + std::to_string(i) + "/3");
+  }
+  void SetUp() override {
+    ParallelRun::SetUp();
+    for (int i = 1; i <= 3; ++i)
+      fs::copy(runs() / ("shard" + std::to_string(i)), shard(i), fs::copy_options::recursive);
+  }
   test::ProcessResult merge(const std::string& dirs) {
     return harness("merge " + dirs + " --out " + (root_ / "merged").string());
   }
   std::string shard(int i) const { return (root_ / ("shard" + std::to_string(i))).string(); }
-  void runShards() {
-    for (int i = 1; i <= 3; ++i)
-      runInto("shard" + std::to_string(i), repoCases() + "--shard " + std::to_string(i) + "/3");
-  }
   void editResults(int i, const std::function<void(nlohmann::json&)>& edit) {
     const fs::path p = fs::path(shard(i)) / "results.json";
     auto j = nlohmann::json::parse(readFile(p));
@@ -201,25 +221,23 @@ class Merge : public ParallelRun {
 };
 
 TEST_F(Merge, ThreeShardsMergeIntoTheUnshardedRun) {
-  const RunOutput whole = runInto("whole", repoCases() + "-j 2");
-  runShards();
+  const RunOutput whole = readRun(runs() / "whole", readFile(runs() / "whole.console"));
   const auto r = merge(shard(2) + " " + shard(3) + " " + shard(1));  // any order
   ASSERT_EQ(r.exitCode, 0) << r.output;
   expectSame(whole, readRun(root_ / "merged", r.output), "three shards merged");
 }
 
 TEST_F(Merge, RefusesShardsThatDoNotMakeOneRun) {
-  runShards();
   auto refused = [&](const std::string& dirs, const std::string& why) {
     const auto r = merge(dirs);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
   };
-  refused(shard(1) + " " + shard(3), "shard 2/3 is missing (its cases: jitter_legacy2, alpha_low_static, history_bilinear)");
+  refused(shard(1) + " " + shard(3), "shard 2/3 is missing (its cases: jitter_legacy2, history_bilinear)");
   refused(shard(1) + " " + shard(2) + " " + shard(2) + " " + shard(3), "are both shard 2/3");
   refused((root_ / "nowhere").string(), "nowhere/results.json");
-  // A shard of another case set: the same cases less one.
-  harness("run " + repoCases() + " --shard 2/3 --out " + (root_ / "other").string() + " " +
+  // A shard of another case set: the same cases and one more.
+  harness("run " + repoCases(kMergeCases) + " --shard 2/3 --out " + (root_ / "other").string() + " " +
           (fs::path(TAA_SOURCE_DIR) / "cases" / "fxaa_only.json").string());
   refused(shard(1) + " " + (root_ / "other").string() + " " + shard(3), "ran another case set");
   editResults(2, [](auto& j) { j["commit"] = "0123456789abcdef"; });

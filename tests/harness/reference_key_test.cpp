@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,18 @@ nlohmann::json referenceBase(const std::string& pathPatch) {
 }
 
 spec::CaseSpec specOf(const nlohmann::json& j) { return test::caseFromJson(j.dump(), "reference_key"); }
+
+// The base case with KEY set to VALUE; nothing where the path refuses that value.
+std::optional<spec::CaseSpec> withSetting(const nlohmann::json& base, const std::string& key,
+                                          const nlohmann::json& value) {
+  nlohmann::json j = base;
+  j.merge_patch(test::audit::patchFor(key, value));
+  try {
+    return specOf(j);
+  } catch (const cases::CaseError&) {
+    return std::nullopt;
+  }
+}
 
 std::vector<FrameRecord> renderReferences(const spec::CaseSpec& spec, ReferenceCache* cache) {
   RenderOptions o;
@@ -125,14 +138,9 @@ TEST(ReferenceKey, MissesWhenASettingItKeepsChanges) {
     const std::string key = row["key"];
     if (leftOutOfTheKey(key) || test::audit::excluded(key)) continue;
     for (const auto& value : test::audit::alternatives(row, path)) {
-      nlohmann::json j = base;
-      j.merge_patch(test::audit::patchFor(key, value));
-      spec::CaseSpec spec;
-      try {
-        spec = specOf(j);
-      } catch (const cases::CaseError&) {
-        continue;  // refused here: nothing to share
-      }
+      const auto variant = withSetting(base, key, value);
+      if (!variant) continue;  // refused here: nothing to share
+      const spec::CaseSpec& spec = *variant;
       if (resolved(spec) == resolved(specOf(base))) continue;  // the path's value already
       EXPECT_NE(run::referenceKey(spec), baseKey) << key << " = " << value.dump();
       ++checked;
@@ -167,14 +175,9 @@ TEST_P(ReferenceKeyLeftOut, SettingsLeftOutLeaveTheReferenceAsRendered) {
     if (!leftOutOfTheKey(key) || test::audit::excluded(key)) continue;
     // The first value the path accepts: one render per setting keeps the test short.
     for (const auto& value : test::audit::alternatives(row, path)) {
-      nlohmann::json j = base;
-      j.merge_patch(test::audit::patchFor(key, value));
-      spec::CaseSpec spec;
-      try {
-        spec = specOf(j);
-      } catch (const cases::CaseError&) {
-        continue;
-      }
+      const auto variant = withSetting(base, key, value);
+      if (!variant) continue;
+      const spec::CaseSpec& spec = *variant;
       // Its own cache: each of its frames' references as rendered, under its key.
       ReferenceCache own;
       renderReferences(spec, &own);

@@ -6,12 +6,13 @@
 # over 10 s or needing over 2 GiB fails the script; libFuzzer leaves the input as
 # crash-*/timeout-*/oom-* in $TAA_FUZZ_OUT (default build-asan/fuzz): copy it into
 # tests/fuzz/corpus/TARGET/ once fixed, so every build replays it (fuzz_regressions_test).
+# TAA_ASAN_BUILT=1: the fuzz targets are built already (.ci/run builds the tree once).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
 seconds=${TAA_FUZZ_SECONDS:-60}
 out=${TAA_FUZZ_OUT:-$build/fuzz}
-bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf
+[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 for target in case track gltf; do

@@ -6,8 +6,6 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
-#include "core/input_file.h"
-#include "core/json_guard.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
@@ -19,28 +17,14 @@ namespace fs = std::filesystem;
 
 namespace {
 const char* kBlessUsage =
-    "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR]\n"
+    "taa-harness bless CASE... --reason \"why the image changed\" [--force] [--goldens DIR] [--out DIR] [-j N]\n"
     "taa-harness bless --failed-from out/results.json --reason \"...\"   (re-bless what failed last run)\n"
     "  renders each case, runs its invariants (a failing invariant refuses the bless unless --force),\n"
     "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
 
 std::vector<std::string> failedCases(const fs::path& results) {
-  std::string text;
-  try {
-    text = readInputFile(results, kMaxTrackFileBytes);
-  } catch (const InputFileError& e) {
-    throw UsageError(std::string(e.what()) + "; pass the results.json of a previous run");
-  }
-  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
-    throw UsageError(results.string() + ": " + problem);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
-  }
   std::vector<std::string> files;
-  for (const auto& c : run::runResultsFromJson(j).cases)
+  for (const auto& c : readResultsFile(results, "pass the results.json of a previous run").cases)
     if (c.status != run::CaseStatus::Pass && c.status != run::CaseStatus::Error)
       files.push_back(c.file);
   return files;
@@ -65,7 +49,7 @@ void printChanges(const run::CaseResult& r) {
 }  // namespace
 
 int cmdBless(const Args& args) {
-  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device"}, kBlessUsage);
+  const auto a = parseArgs(args, {"--force"}, {"--reason", "--goldens", "--out", "--failed-from", "--device", "--jobs"}, kBlessUsage);
   const std::string reason = a.value("--reason");
   if (reason.find_first_not_of(" \t") == std::string::npos)
     throw UsageError("--reason is required: say why the images changed (it is stored in the manifest)\nusage: " +
@@ -85,6 +69,7 @@ int cmdBless(const Args& args) {
   options.run.outDir = a.value("--out", "out/bless");
   options.run.goldensRoot = a.value("--goldens");
   options.device = a.value("--device");
+  options.jobs = parseJobs(a.value("--jobs"));
   for (const auto& c : batch.cases)
     refuseOutputInGoldens(options.run.outDir, options.run.goldensRoot.empty()
                                                   ? run::defaultGoldensRoot(c.spec.file)

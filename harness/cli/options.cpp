@@ -6,8 +6,11 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::s
                      const std::set<std::string>& valueNames, const std::string& usage) {
   ParsedArgs out;
   for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
+    std::string a = args[i];
     if (a == "--help" || a == "-h") throw HelpRequested(usage);
+    // -j N and -jN, make's spelling, for commands that take --jobs.
+    if (valueNames.count("--jobs") && a.rfind("-j", 0) == 0)
+      a = a.size() == 2 ? "--jobs" : "--jobs=" + a.substr(2);
     if (a.rfind("--", 0) != 0) {
       out.positional.push_back(a);
       continue;

@@ -39,7 +39,8 @@ struct ParsedArgs {
   }
 };
 
-// `flagNames` take no value; `valueNames` take the next argument (or --key=value).
+// `flagNames` take no value; `valueNames` take the next argument (or --key=value); where
+// `valueNames` holds --jobs, -j N and -jN mean --jobs N.
 // Throws HelpRequested (what(): the usage) for --help or -h, UsageError for anything unknown.
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& flagNames,
                      const std::set<std::string>& valueNames, const std::string& usage);

@@ -14,6 +14,7 @@
 #include "golden/environment.h"
 #include "run/golden_check.h"
 #include "run/invariant_run.h"
+#include "run/reference_key.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
 #include "user/user_resolve.h"
@@ -36,6 +37,10 @@ void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scen
   RenderOptions ro;
   ro.hashEveryFrame = hashEveryFrame;
   ro.captures = checks.needs().captures;
+  if (ro.captures.has(Capture::Reference) && options.references) {
+    ro.referenceCache = options.references;
+    ro.referenceKey = referenceKey(spec);
+  }
   Renderer renderer(device, spec, scene, ro);
   if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
@@ -79,6 +84,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   CaseResult result;
   result.name = spec.name;
   result.file = spec.file.string();
+  result.caseSha256 = loaded.sha256;
   result.description = spec.description;
   result.resolve = describeUserShader(spec);
   result.status = CaseStatus::Pass;
@@ -110,15 +116,19 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
           outputs[r.frame] = std::move(r.color);
       },
       &result.log);
+  result.framesRendered += spec.script.frames;
   if (checks.needs().secondRun) {
     replay(
         device, spec, scene, checks, options, checks.judgesWarmUp(),
         [&](FrameRecord& r) { checks.observeRepeat(invariants::FrameView::of(r)); }, nullptr);
+    result.framesRendered += spec.script.frames;
   }
   result.timings = timing.summary();
   std::map<int, Image> abOutputs;
-  if (!loaded.abCase.empty() && options.writeImages)
+  if (!loaded.abCase.empty() && options.writeImages) {
     abOutputs = renderAbSide(device, loaded, options);
+    result.framesRendered += spec.script.frames;
+  }
 
   // The case's status is the worst of its checks: a failed invariant fails the case whether
   // its goldens are missing, stale or match.

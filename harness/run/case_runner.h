@@ -12,6 +12,7 @@
 #include "api/device.h"
 #include "case/case_loader.h"
 #include "core/image.h"
+#include "passes/reference_cache.h"
 #include "run/results.h"
 
 namespace taa::run {
@@ -25,6 +26,9 @@ struct RunOptions {
   bool missingGoldenFails = false;
   // Called before each frame with (frame, frame count); for terminal progress.
   std::function<void(int, int)> progress;
+  // Reference frames shared by the run's cases (and the frames of a still scene); null:
+  // every reference is rendered.
+  ReferenceCache* references = nullptr;
 };
 
 // Where a case's goldens live: goldens/ next to the folder holding the case file.

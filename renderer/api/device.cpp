@@ -4,6 +4,7 @@
 #include "api/renderer.h"
 #include "vk/context.h"
 #include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
 #include "vk/shader_cache.h"
 
 namespace taa {
@@ -33,6 +34,11 @@ Device::~Device() = default;
 
 int Device::validationMessages() const {
   return ctx_->validationMessages();
+}
+
+PipelineCounts Device::pipelineCounts() const {
+  const auto s = ctx_->pipelines().stats();
+  return {s.created, s.reused};
 }
 
 // Defined here rather than in renderer.cpp: it is the facade's entry, and it only unwraps.

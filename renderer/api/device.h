@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -31,6 +32,13 @@ struct DeviceIdentity {
   bool isCpu = false;
 };
 
+// Pipelines compiled on a device and requests answered with one compiled before
+// (a case sharing a pipeline with an earlier case of the run).
+struct PipelineCounts {
+  size_t created = 0;
+  size_t reused = 0;
+};
+
 class Device {
  public:
   // Throws EnvironmentError (device_error.h) when no usable device is found.
@@ -42,6 +50,7 @@ class Device {
   const DeviceIdentity& identity() const { return identity_; }
   // Validation messages of severity warning or error seen so far (0 unless validating).
   int validationMessages() const;
+  PipelineCounts pipelineCounts() const;
 
   // The renderer's view; opaque outside renderer/.
   vk::Context& context() { return *ctx_; }

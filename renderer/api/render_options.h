@@ -2,9 +2,13 @@
 // output, and whether every frame's output is hashed.
 #pragma once
 
+#include <string>
+
 #include "api/captures.h"
 
 namespace taa {
+
+class ReferenceCache;
 
 struct RenderOptions {
   // The images read back beside the output of every frame whose images are read (see
@@ -16,6 +20,11 @@ struct RenderOptions {
   // checked. Sets FrameRecord::color and colorSha256 for every frame; aux buffers, captures
   // and the reference still come only with readImages.
   bool hashEveryFrame = false;
+  // Reference frames shared across the renderers of a run (passes/reference_cache.h), used
+  // when both are set: `referenceKey` names everything the case gives the reference pass
+  // (the harness's run::referenceKey), the renderer adds each frame's own inputs.
+  ReferenceCache* referenceCache = nullptr;
+  std::string referenceKey;
 };
 
 }  // namespace taa

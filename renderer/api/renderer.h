@@ -15,6 +15,7 @@
 namespace taa {
 
 class Device;
+class ReferenceCache;
 namespace vk {
 class Context;
 }

@@ -18,6 +18,7 @@
 #include "passes/inject.h"
 #include "passes/post_filter.h"
 #include "passes/reference.h"
+#include "passes/reference_cache.h"
 #include "passes/shadow.h"
 #include "passes/still_image.h"
 #include "script/frame_state.h"
@@ -272,12 +273,22 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   output = &s.post.afterResolve(view, *output, outSize);
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
+  std::shared_ptr<const Image> cachedReference;
+  std::string referenceKey;
   if (s.reference && readImages) {
-    s.timer.begin(cmd, "reference");
     for (int eye = 0; eye < eyes; ++eye)
-      s.reference->record(cmd, eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), draws,
-                          s.instances.handle(), shadows, eye);
-    s.timer.end(cmd);
+      s.reference->prepare(eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), shadows,
+                           eye);
+    if (s.options.referenceCache && !s.options.referenceKey.empty()) {
+      referenceKey = s.reference->frameKey(s.options.referenceKey, draws, shadows);
+      cachedReference = s.options.referenceCache->find(referenceKey);
+    }
+    if (!cachedReference) {
+      s.timer.begin(cmd, "reference");
+      for (int eye = 0; eye < eyes; ++eye)
+        s.reference->record(cmd, draws, s.instances.handle(), eye);
+      s.timer.end(cmd);
+    }
   }
   // A debug view replaces the output (after the passes it would otherwise feed).
   if (vk::Image* v = s.resolve ? s.resolve->debugView() : nullptr) output = v;
@@ -294,7 +305,7 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
     src.renderSize = state.renderSize;
     src.resolveInput = resolveInput;
     src.targets = &s.targets;
-    src.reference = s.reference.get();
+    src.reference = cachedReference ? nullptr : s.reference.get();
     if (readImages) {
       if (s.resolve) src.captures = s.resolve->captures();
       for (auto& c : s.post.captures()) src.captures.push_back(std::move(c));
@@ -312,6 +323,12 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   if (s.resolve) record.stats = s.resolve->stats();
   for (auto& stat : s.post.stats()) record.stats.push_back(std::move(stat));
   if (readOutput) s.readback.finish(record);
+  if (cachedReference) {
+    record.reference = *cachedReference;
+    record.hasReference = true;
+  } else if (!referenceKey.empty() && record.hasReference) {
+    s.options.referenceCache->insert(referenceKey, record.reference);
+  }
   return record;
 }
 

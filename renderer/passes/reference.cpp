@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/sha256.h"
 #include "frame/frame_uniforms.h"
 #include "script/jitter.h"
 #include "script/stereo.h"
@@ -80,9 +81,8 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 }
 
-void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
-                           const DrawList& draws, VkBuffer instances, const ShadowCascades& shadows,
-                           int eye) {
+void ReferencePass::prepare(const script::FrameState& state, const ShadowCascades& shadows,
+                            int eye) {
   const glm::ivec2 size(spec_.render.width, spec_.render.height);
   // The same instant as the frame, without the frame's jitter and at output size.
   script::FrameState sub = state;
@@ -95,6 +95,12 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
     setShadowUniforms(u, shadows);
     std::memcpy(static_cast<uint8_t*>(uniforms_.mapped()) + (first + i) * stride_, &u, sizeof(u));
   }
+}
+
+void ReferencePass::record(VkCommandBuffer cmd, const DrawList& draws, VkBuffer instances,
+                           int eye) {
+  const glm::ivec2 size(spec_.render.width, spec_.render.height);
+  const size_t first = size_t(eye) * offsets_.size();
   for (size_t i = 0; i < offsets_.size(); ++i) {
     if (still_)
       still_->record(cmd, targets_.color, size, offsets_[i], true);
@@ -109,6 +115,42 @@ void ReferencePass::record(VkCommandBuffer cmd, const script::FrameState& state,
         .constants(push)
         .record(ctx_, cmd, uint32_t(size.x), uint32_t(size.y));
   }
+}
+
+std::string ReferencePass::frameKey(const std::string& caseKey, const DrawList& draws,
+                                    const ShadowCascades& shadows) const {
+  Sha256 h;
+  auto add = [&h](const void* data, size_t bytes) {
+    const uint64_t n = bytes;
+    h.update(&n, sizeof(n));  // lengths delimit the parts
+    h.update(data, bytes);
+  };
+  add(caseKey.data(), caseKey.size());
+  const uint32_t shape[4] = {accum_.desc().width, accum_.desc().height, uint32_t(offsets_.size()),
+                             still_ ? 1u : 0u};
+  add(shape, sizeof(shape));
+  const size_t eyes = size_t(eyeCount(spec_));
+  for (size_t k = 0; k < eyes * offsets_.size(); ++k)
+    add(static_cast<const uint8_t*>(uniforms_.mapped()) + k * stride_, sizeof(gpu::FrameUniforms));
+  add(draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+  for (const auto* list : {&draws.opaque, &draws.blended}) {
+    std::vector<int32_t> d;
+    for (const Draw& x : *list)
+      d.insert(d.end(), {int32_t(x.instance), x.mesh, x.primitive, x.deformedVertex});
+    add(d.data(), d.size() * sizeof(int32_t));
+  }
+  add(draws.deformed.data(), draws.deformed.size() * sizeof(scene::Vertex));
+  add(draws.deformedPrev.data(), draws.deformedPrev.size() * sizeof(glm::vec4));
+  // The atlas the sub-samples read is drawn from these cascades and the same draws.
+  add(&shadows.count, sizeof(shadows.count));
+  add(shadows.splits.data(), sizeof(shadows.splits));
+  add(shadows.lightViewProj.data(), sizeof(shadows.lightViewProj));
+  add(shadows.texelWorld.data(), sizeof(shadows.texelWorld));
+  add(&shadows.depthPerWorld, sizeof(shadows.depthPerWorld));
+  add(&shadows.forward, sizeof(shadows.forward));
+  add(&shadows.origin, sizeof(shadows.origin));
+  const auto digest = h.finish();
+  return toHex(digest.data(), digest.size());
 }
 
 }  // namespace taa

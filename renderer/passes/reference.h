@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/vec2.hpp>
+#include <string>
 #include <vector>
 
 #include "frame/draw_list.h"
@@ -30,10 +31,16 @@ class ReferencePass {
   ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScene& scene,
                 ShadowPass* shadow = nullptr, StillImagePass* still = nullptr);
 
-  // Records every sub-sample render and the average for this frame, seen from `eye`
-  // (stereo TSCMAA: each eye fills its half of the side-by-side output).
-  void record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,
-              VkBuffer instances, const ShadowCascades& shadows = {}, int eye = 0);
+  // Writes this frame's sub-sample uniforms seen from `eye` (stereo TSCMAA: each eye fills
+  // its half of the side-by-side output); record() draws with them.
+  void prepare(const script::FrameState& state, const ShadowCascades& shadows = {}, int eye = 0);
+  // Records every sub-sample render of `eye` and their average.
+  void record(VkCommandBuffer cmd, const DrawList& draws, VkBuffer instances, int eye = 0);
+  // What this frame's reference is a function of, once every eye is prepared: `caseKey` (what
+  // the case gives the pass: scene, shading, size, samples; RenderOptions::referenceKey), the
+  // sub-samples' uniforms, the draws, instances and deformed vertices, and the shadow cascades.
+  std::string frameKey(const std::string& caseKey, const DrawList& draws,
+                       const ShadowCascades& shadows) const;
   vk::Image& output() { return accum_; }
   int samples() const { return int(offsets_.size()); }
 

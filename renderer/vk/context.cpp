@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "vk/check.h"
+#include "vk/pipeline_cache.h"
 
 namespace taa::vk {
 
@@ -57,11 +58,13 @@ Context::Context(const ContextOptions& options) {
   createInstance(options.validate);
   pickDevice(wanted);
   createDevice();
+  pipelines_ = std::make_unique<PipelineCache>();
 }
 
 Context::~Context() {
   if (device_) {
     vkDeviceWaitIdle(device_);
+    pipelines_.reset();  // its pipelines belong to the device
     vkDestroyFence(device_, fence_, nullptr);
     vkDestroyCommandPool(device_, pool_, nullptr);
     vkDestroyDevice(device_, nullptr);

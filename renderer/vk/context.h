@@ -6,10 +6,13 @@
 
 #include <atomic>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace taa::vk {
+
+class PipelineCache;
 
 struct ContextOptions {
   // Case-insensitive substring of the device name; empty: $TAA_DEVICE, else lavapipe.
@@ -58,6 +61,9 @@ class Context {
   // Validation messages of severity warning or error seen so far.
   int validationMessages() const { return validationMessages_.load(); }
 
+  // Every pipeline made on this device, by what shapes it (vk/pipeline_cache.h).
+  PipelineCache& pipelines() { return *pipelines_; }
+
  private:
   void createInstance(bool validate);
   void pickDevice(const std::string& wanted);
@@ -74,6 +80,7 @@ class Context {
   PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
   DeviceInfo info_;
   std::atomic<int> validationMessages_{0};
+  std::unique_ptr<PipelineCache> pipelines_;
 };
 
 }  // namespace taa::vk

@@ -7,9 +7,11 @@
 #include <fstream>
 #include <utility>
 
+#include "core/sha256.h"
 #include "scene/scene.h"
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/pipeline_cache.h"
 
 namespace taa::vk {
 
@@ -38,58 +40,39 @@ std::string SpecConstants::describe() const {
   return out;
 }
 
+std::string SpecConstants::bytes() const {
+  std::string out;
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    out.append(reinterpret_cast<const char*>(&entries_[i].constantID), 4);
+    out.append(reinterpret_cast<const char*>(&data_[i]), 4);
+  }
+  return out;
+}
+
 VkSpecializationInfo SpecConstants::info() const {
   return {uint32_t(entries_.size()), entries_.data(), data_.size() * 4, data_.data()};
 }
 
-Pipeline::Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint,
-                   VkDescriptorSetLayout setLayout, VkPipelineLayout layout, VkPipeline pipeline,
-                   ShaderInterface interface)
-    : device_(device),
-      name_(std::move(name)),
-      bindPoint_(bindPoint),
-      setLayout_(setLayout),
-      layout_(layout),
-      pipeline_(pipeline),
-      interface_(std::move(interface)) {}
-
-Pipeline::~Pipeline() { release(); }
-Pipeline::Pipeline(Pipeline&& o) noexcept { *this = std::move(o); }
-Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
-  if (this != &o) {
-    release();
-    device_ = std::exchange(o.device_, VK_NULL_HANDLE);
-    name_ = std::move(o.name_);
-    bindPoint_ = o.bindPoint_;
-    setLayout_ = std::exchange(o.setLayout_, VK_NULL_HANDLE);
-    layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
-    pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
-    interface_ = std::move(o.interface_);
-  }
-  return *this;
+PipelineObjects::~PipelineObjects() {
+  if (!device) return;
+  vkDestroyPipeline(device, pipeline, nullptr);
+  vkDestroyPipelineLayout(device, layout, nullptr);
+  vkDestroyDescriptorSetLayout(device, setLayout, nullptr);
 }
 
 void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const {
-  if (bytes > interface_.pushConstantBytes)
-    throw std::logic_error(name_ + ": " + std::to_string(bytes) +
+  if (bytes > o_->interface.pushConstantBytes)
+    throw std::logic_error(o_->name + ": " + std::to_string(bytes) +
                            " bytes of push constants, but its shaders declare " +
-                           std::to_string(interface_.pushConstantBytes));
-  vkCmdPushConstants(cmd, layout_, interface_.stages, 0, bytes, data);
+                           std::to_string(o_->interface.pushConstantBytes));
+  vkCmdPushConstants(cmd, o_->layout, o_->interface.stages, 0, bytes, data);
 }
 
 void Pipeline::dispatch(VkCommandBuffer cmd, uint32_t width, uint32_t height,
                         uint32_t depth) const {
-  const auto& l = interface_.localSize;
+  const auto& l = o_->interface.localSize;
   vkCmdDispatch(cmd, (width + l[0] - 1) / l[0], (height + l[1] - 1) / l[1],
                 (depth + l[2] - 1) / l[2]);
-}
-
-void Pipeline::release() {
-  if (!device_) return;
-  vkDestroyPipeline(device_, pipeline_, nullptr);
-  vkDestroyPipelineLayout(device_, layout_, nullptr);
-  vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
-  device_ = VK_NULL_HANDLE;
 }
 
 std::string shaderDir() {
@@ -171,40 +154,48 @@ Pipeline createComputePipeline(Context& ctx, const std::string& shader, const Sp
 Pipeline createComputePipelineFromSpirv(Context& ctx, const std::string& shader,
                                         const std::vector<uint32_t>& words,
                                         const SpecConstants& spec) {
-  VkDevice device = ctx.device();
-  ShaderInterface interface = reflectSpirv(words, shader);
-  if (interface.stages != VK_SHADER_STAGE_COMPUTE_BIT)
-    throw ShaderInterfaceError(shader + " is not a compute shader");
-  specializeLocalSize(interface, spec);
-  VkDescriptorSetLayout setLayout;
-  VkPipelineLayout layout;
-  createLayouts(device, interface, shader, setLayout, layout);
-  VkShaderModule module = createModule(device, words);
-  const VkSpecializationInfo specInfo = spec.info();
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
-  info.stage.pName = interface.entryPoint.c_str();  // a user's HLSL names its own
-  info.stage.pSpecializationInfo = &specInfo;
-  info.layout = layout;
-  VkPipeline pipeline;
-  const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device, module, nullptr);
-  VK_CHECK(r);
-  return Pipeline(device, shader, VK_PIPELINE_BIND_POINT_COMPUTE, setLayout, layout, pipeline,
-                  std::move(interface));
+  const std::string key = "compute\n" + shader + "\n" + sha256Hex(words.data(), words.size() * 4) +
+                          "\n" + spec.bytes();
+  return Pipeline(ctx.pipelines().get(key, [&] {
+    auto o = std::make_shared<PipelineObjects>();
+    o->device = ctx.device();
+    o->name = shader;
+    o->bindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
+    o->interface = reflectSpirv(words, shader);
+    if (o->interface.stages != VK_SHADER_STAGE_COMPUTE_BIT)
+      throw ShaderInterfaceError(shader + " is not a compute shader");
+    specializeLocalSize(o->interface, spec);
+    createLayouts(o->device, o->interface, shader, o->setLayout, o->layout);
+    VkShaderModule module = createModule(o->device, words);
+    const VkSpecializationInfo specInfo = spec.info();
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = o->interface.entryPoint.c_str();  // a user's HLSL names its own
+    info.stage.pSpecializationInfo = &specInfo;
+    info.layout = o->layout;
+    const VkResult r =
+        vkCreateComputePipelines(o->device, VK_NULL_HANDLE, 1, &info, nullptr, &o->pipeline);
+    vkDestroyShaderModule(o->device, module, nullptr);
+    VK_CHECK(r);
+    return std::shared_ptr<const PipelineObjects>(std::move(o));
+  }));
 }
 
-Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& d) {
-  VkDevice device = ctx.device();
-  const auto vertWords = loadSpirv(d.vertexShader);
-  const auto fragWords = loadSpirv(d.fragmentShader);
-  ShaderInterface interface = mergeInterfaces(reflectSpirv(vertWords, d.vertexShader),
-                                              reflectSpirv(fragWords, d.fragmentShader), name);
-  VkDescriptorSetLayout setLayout;
-  VkPipelineLayout layout;
-  createLayouts(device, interface, name, setLayout, layout);
+namespace {
+
+std::shared_ptr<const PipelineObjects> makeGraphicsPipeline(Context& ctx, const std::string& name,
+                                                            const GraphicsDesc& d,
+                                                            const std::vector<uint32_t>& vertWords,
+                                                            const std::vector<uint32_t>& fragWords) {
+  auto o = std::make_shared<PipelineObjects>();
+  VkDevice device = o->device = ctx.device();
+  o->name = name;
+  o->bindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  o->interface = mergeInterfaces(reflectSpirv(vertWords, d.vertexShader),
+                                 reflectSpirv(fragWords, d.fragmentShader), name);
+  createLayouts(device, o->interface, name, o->setLayout, o->layout);
   VkShaderModule vert = createModule(device, vertWords);
   VkShaderModule frag = createModule(device, fragWords);
   const VkSpecializationInfo specInfo = d.spec.info();
@@ -295,14 +286,48 @@ Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const Gra
   info.pDepthStencilState = &depth;
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
-  info.layout = layout;
-  VkPipeline pipeline;
-  const VkResult r = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  info.layout = o->layout;
+  const VkResult r =
+      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &o->pipeline);
   vkDestroyShaderModule(device, vert, nullptr);
   vkDestroyShaderModule(device, frag, nullptr);
   VK_CHECK(r);
-  return Pipeline(device, name, VK_PIPELINE_BIND_POINT_GRAPHICS, setLayout, layout, pipeline,
-                  std::move(interface));
+  return o;
+}
+
+}  // namespace
+
+// A new GraphicsDesc field changes the size: add it to the key below, then update the size.
+// A field left out would let two different pipelines share one cache entry.
+static_assert(sizeof(GraphicsDesc) == 168, "GraphicsDesc changed: key every field in graphicsPipelineKey");
+
+std::string graphicsPipelineKey(const std::string& name, const GraphicsDesc& d,
+                                const std::vector<uint32_t>& vertWords,
+                                const std::vector<uint32_t>& fragWords) {
+  std::string key = "graphics\n" + name + "\n" + d.vertexShader + "\n" +
+                    sha256Hex(vertWords.data(), vertWords.size() * 4) + "\n" + d.fragmentShader +
+                    "\n" + sha256Hex(fragWords.data(), fragWords.size() * 4) + "\n" +
+                    d.spec.bytes() + "\n";
+  auto add = [&key](uint64_t v) { key.append(reinterpret_cast<const char*>(&v), sizeof(v)); };
+  add(d.colorFormats.size());
+  for (const VkFormat f : d.colorFormats) add(uint64_t(f));
+  add(d.vertexInput);
+  add(uint64_t(d.depthFormat));
+  add(d.depthTest);
+  add(d.depthWrite);
+  add(uint64_t(d.depthCompare));
+  add(d.cullMode);
+  add(d.blendFirstAttachment);
+  add(d.samples);
+  return key;
+}
+
+Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& d) {
+  const auto vertWords = loadSpirv(d.vertexShader);
+  const auto fragWords = loadSpirv(d.fragmentShader);
+  return Pipeline(ctx.pipelines().get(graphicsPipelineKey(name, d, vertWords, fragWords), [&] {
+    return makeGraphicsPipeline(ctx, name, d, vertWords, fragWords);
+  }));
 }
 
 Bindings& Bindings::add(uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo* image,

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,45 +32,54 @@ class SpecConstants {
   // Human-readable "id=value" list, for the run log.
   std::string describe() const;
   VkSpecializationInfo info() const;
+  // Every (id, value) pair as bytes, in the order set: part of a pipeline's cache key.
+  std::string bytes() const;
 
  private:
   std::vector<VkSpecializationMapEntry> entries_;
   std::vector<uint32_t> data_;
 };
 
+// The Vulkan objects of one pipeline; destroyed with the last Pipeline (or cache entry)
+// that holds them.
+struct PipelineObjects {
+  PipelineObjects() = default;
+  PipelineObjects(const PipelineObjects&) = delete;
+  PipelineObjects& operator=(const PipelineObjects&) = delete;
+  ~PipelineObjects();
+  VkDevice device = VK_NULL_HANDLE;
+  std::string name;
+  VkPipelineBindPoint bindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  ShaderInterface interface;
+};
+
+// A pipeline is immutable once made, so passes of several renderers on one context share it:
+// createComputePipeline and createGraphicsPipeline hand out the context's cached one
+// (vk/pipeline_cache.h) when its inputs are the same.
 class Pipeline {
  public:
   Pipeline() = default;
-  Pipeline(VkDevice device, std::string name, VkPipelineBindPoint bindPoint,
-           VkDescriptorSetLayout setLayout, VkPipelineLayout layout, VkPipeline pipeline,
-           ShaderInterface interface);
-  ~Pipeline();
-  Pipeline(Pipeline&& o) noexcept;
-  Pipeline& operator=(Pipeline&& o) noexcept;
+  explicit Pipeline(std::shared_ptr<const PipelineObjects> objects) : o_(std::move(objects)) {}
 
-  VkPipeline handle() const { return pipeline_; }
-  VkPipelineLayout layout() const { return layout_; }
-  VkPipelineBindPoint bindPoint() const { return bindPoint_; }
-  const std::string& name() const { return name_; }
+  VkPipeline handle() const { return o_ ? o_->pipeline : VK_NULL_HANDLE; }
+  VkPipelineLayout layout() const { return o_->layout; }
+  VkPipelineBindPoint bindPoint() const { return o_->bindPoint; }
+  const std::string& name() const { return o_->name; }
   // What the shaders declare; localSize already holds any specialized workgroup size.
-  const ShaderInterface& interface() const { return interface_; }
-  void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+  const ShaderInterface& interface() const { return o_->interface; }
+  void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, o_->bindPoint, o_->pipeline); }
   // Pushes `bytes` at offset 0 to every stage of the push-constant range; throws
   // std::logic_error when the shaders' block is smaller.
   void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const;
   // Enough workgroups of the shader's local size to cover width x height x depth.
   void dispatch(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t depth = 1) const;
-  explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
+  explicit operator bool() const { return handle() != VK_NULL_HANDLE; }
 
  private:
-  void release();
-  VkDevice device_ = VK_NULL_HANDLE;
-  std::string name_;
-  VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
-  ShaderInterface interface_;
+  std::shared_ptr<const PipelineObjects> o_;
 };
 
 // Where SPIR-V is read from: $TAA_SHADER_DIR, else PREFIX/share/taa-harness/shaders beside an
@@ -104,6 +114,12 @@ struct GraphicsDesc {
 };
 
 Pipeline createGraphicsPipeline(Context& ctx, const std::string& name, const GraphicsDesc& desc);
+// What the context's pipeline cache knows a graphics pipeline by: its name, both stages' SPIR-V,
+// and every field of `desc` (a field added to GraphicsDesc must be added here; a static_assert
+// on the struct's size says so).
+std::string graphicsPipelineKey(const std::string& name, const GraphicsDesc& desc,
+                                const std::vector<uint32_t>& vertWords,
+                                const std::vector<uint32_t>& fragWords);
 
 // Descriptor writes for one push: collect, then push before a draw or dispatch.
 class Bindings {

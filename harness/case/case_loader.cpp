@@ -7,6 +7,7 @@
 #include "case/case_validate.h"
 #include "case/json_reader.h"
 #include "case/json_writer.h"
+#include "case/validate_inputs.h"
 #include "case/validate_report.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
@@ -89,6 +90,11 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
     throw CaseError({where + ": a number is too large for a double (over about 1.8e308); fix the number"});
   }
   if (!root.is_object()) throw CaseError({where + ": the case must be a JSON object {...}"});
+  if (const auto bad = controlCharacterProblems(root); !bad.empty()) {
+    std::vector<std::string> problems;
+    for (const auto& [key, msg] : bad) problems.push_back(where + ": " + key + ": " + msg);
+    throw CaseError(problems);
+  }
 
   LoadedCase out;
   out.spec.file = file;

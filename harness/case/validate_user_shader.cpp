@@ -4,6 +4,7 @@
 
 #include "case/case_validate.h"
 #include "user/glsl_compiler.h"
+#include "user/shader_bounds.h"
 #include "user/user_resolve.h"
 
 namespace taa::cases {
@@ -38,6 +39,13 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   if (spec.debug.output != spec::DebugOutput::None)
     out.emplace_back("debug.output",
                      "debug views come from the built-in resolve; remove it with taa.shader");
+  // A missing value would silently be 0.
+  for (size_t i = 0; i < t.shader_params.size(); ++i) {
+    const std::string key = "taa.shader_params[" + std::to_string(i) + "]";
+    for (const char* k : {".name", ".value"})
+      if (!present.count(key + k))
+        out.emplace_back(key + k, std::string("is missing; give the constant's ") + (k + 1));
+  }
   if (!out.empty()) return out;
   try {
     const UserShader shader = loadUserShader(spec);
@@ -45,6 +53,12 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
       const auto colon = p.find(": ");
       out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
     }
+    // Array lengths the case's values give: the default passed when the shader loaded.
+    if (out.empty())
+      if (const std::string why =
+              user::spirvMemoryProblem(shader.spirv, userSpecValues(t, shader.interface));
+          !why.empty())
+        out.emplace_back("taa.shader_params", "with these values " + shader.file.string() + ": " + why);
   } catch (const user::ShaderCompileError& e) {
     out.emplace_back("taa.shader", std::string("does not compile:\n") + e.what());
   }

@@ -57,7 +57,7 @@ TAA_SETTINGS(TAA_CXX_SLOT_E, TAA_CXX_SLOT_B, TAA_CXX_SLOT_F)
 // One specialization constant of a user's resolve (taa.shader), by its name in the shader.
 struct ShaderParam {
   std::string name;
-  float value = 0.0f;
+  double value = 0.0;  // double: an int's and a uint's whole 32-bit range is exact
 };
 
 template <class V>
@@ -66,7 +66,8 @@ void fields(V& v, ShaderParam& p) {
           Meta{"the constant's name in the shader (layout(constant_id = N) const T name)",
                "renderer/user/user_interface.cpp"});
   v.field("value", p.value,
-          Meta{"its value: true/false as 1/0 for a bool, a whole number for an int or uint",
+          Meta{"its value (required): true/false as 1/0 for a bool, a whole number for an int "
+               "(-2147483648 to 2147483647) or a uint (0 to 4294967295)",
                "renderer/user/user_resolve.cpp"});
 }
 

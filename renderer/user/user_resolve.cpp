@@ -54,25 +54,30 @@ const char* userFormatName(VkFormat f) {
 }
 
 // The 32 bits a specialization constant of type `t` takes for `v`, or an error message.
-std::string userParamBits(user::ParamType t, float v, uint32_t& bits) {
+std::string userParamBits(user::ParamType t, double v, uint32_t& bits) {
   using user::ParamType;
   const bool whole = std::floor(v) == v;
   switch (t) {
     case ParamType::Bool:
-      if (v != 0.0f && v != 1.0f) return "a bool takes 0 (false) or 1 (true)";
-      bits = v != 0.0f;
+      if (v != 0.0 && v != 1.0) return "a bool takes 0 (false) or 1 (true)";
+      bits = v != 0.0;
       return {};
     case ParamType::Int:
-      if (!whole || std::fabs(v) > 16777216.0f) return "an int takes a whole number";
-      bits = uint32_t(int32_t(v));
+      if (!whole || v < -2147483648.0 || v > 2147483647.0)
+        return "an int takes a whole number from -2147483648 to 2147483647";
+      bits = uint32_t(int32_t(int64_t(v)));
       return {};
     case ParamType::Uint:
-      if (!whole || v < 0.0f || v > 16777216.0f) return "a uint takes a whole number of at least 0";
-      bits = uint32_t(v);
+      if (!whole || v < 0.0 || v > 4294967295.0)
+        return "a uint takes a whole number from 0 to 4294967295";
+      bits = uint32_t(int64_t(v));
       return {};
-    case ParamType::Float:
-      std::memcpy(&bits, &v, 4);
+    case ParamType::Float: {
+      if (std::fabs(v) > 3.4028234663852886e38) return "a float takes a number within float range";
+      const float f = float(v);
+      std::memcpy(&bits, &f, 4);
       return {};
+    }
   }
   return "unknown type";
 }
@@ -132,13 +137,19 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
   return out;
 }
 
-vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u) {
-  vk::SpecConstants c;
+std::map<uint32_t, uint32_t> userSpecValues(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  std::map<uint32_t, uint32_t> out;
   for (const auto& sp : taa.shader_params)
     if (const user::UserParam* p = u.param(sp.name)) {
       uint32_t bits = 0;
-      if (userParamBits(p->type, sp.value, bits).empty()) c.set(p->specId, bits);
+      if (userParamBits(p->type, sp.value, bits).empty()) out[p->specId] = bits;
     }
+  return out;
+}
+
+vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  vk::SpecConstants c;
+  for (const auto& [id, bits] : userSpecValues(taa, u)) c.set(id, bits);
   return c;
 }
 

@@ -85,7 +85,7 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file)
       }
     }
     throw CaseError({where + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": not valid JSON (" + e.what() + "); fix the syntax at that position"});
+                     ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + "); fix the syntax at that position"});
   } catch (const nlohmann::json::exception&) {  // found by fuzz_case: 1e999 overflows a double
     throw CaseError({where + ": a number is too large for a double (over about 1.8e308); fix the number"});
   }

@@ -37,7 +37,7 @@ std::vector<std::string> failedCases(const fs::path& results) {
   try {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
+    throw UsageError(results.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")");
   }
   std::vector<std::string> files;
   for (const auto& c : run::runResultsFromJson(j).cases)

@@ -31,9 +31,12 @@ int cmdScore(const Args& args) {
   if (a.positional.size() != 1) throw UsageError(std::string("usage: ") + kScoreUsage);
   score::ScoreOptions o;
   o.shader = a.positional[0];
-  if (!fs::is_regular_file(o.shader)) throw UsageError(o.shader.string() + ": no such shader file");
+  // Only existence here: the compiler says what else is wrong (a FIFO, a link loop).
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(o.shader, ec)))
+    throw UsageError(o.shader.string() + ": no such shader file");
   o.casesDir = a.value("--cases", "cases");
-  if (!fs::is_directory(o.casesDir))
+  if (!fs::is_directory(o.casesDir, ec))
     throw UsageError(o.casesDir.string() + ": no such folder of cases; pass --cases DIR");
   o.maxCases = a.flags.count("--quick") ? 3 : 0;
   if (isatty(STDERR_FILENO))

@@ -12,6 +12,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
+#include "core/input_file.h"
 #include "core/output_file.h"
 #include "device.h"
 #include "device_error.h"
@@ -25,14 +26,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<fs::path> expand(const std::vector<std::string>& paths) {
+// A folder's *.json files, each inside it after resolving links (a link leading out is
+// refused unread); a file named on the command line is the user's choice and read as named.
+std::vector<fs::path> expand(const std::vector<std::string>& paths,
+                             std::vector<std::string>& problems) {
   std::vector<fs::path> files;
   for (const auto& p : paths) {
-    if (fs::is_directory(p)) {
-      std::vector<fs::path> inDir;
-      for (const auto& e : fs::directory_iterator(p))
-        if (e.path().extension() == ".json") inDir.push_back(e.path());
-      std::sort(inDir.begin(), inDir.end());
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      const auto inDir = inputFilesIn(p, ".json", problems);
       files.insert(files.end(), inDir.begin(), inDir.end());
     } else {
       files.emplace_back(p);
@@ -43,14 +45,16 @@ std::vector<fs::path> expand(const std::vector<std::string>& paths) {
 
 std::pair<int, int> parseShard(const std::string& shard) {
   const auto slash = shard.find('/');
-  try {
-    if (slash != std::string::npos) {
-      const int i = std::stoi(shard.substr(0, slash)), n = std::stoi(shard.substr(slash + 1));
-      if (n >= 1 && i >= 1 && i <= n) return {i, n};
-    }
-  } catch (const std::exception&) {
+  auto whole = [](const std::string& t) {
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
+      return -1;
+    return std::stoi(t);
+  };
+  if (slash != std::string::npos) {
+    const int i = whole(shard.substr(0, slash)), n = whole(shard.substr(slash + 1));
+    if (n >= 1 && i >= 1 && i <= n) return {i, n};
   }
-  throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N, e.g. --shard 2/4");
+  throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N <= 999999, e.g. --shard 2/4");
 }
 
 std::function<void(int, int)> terminalProgress(const std::string& name, size_t index, size_t count) {
@@ -91,7 +95,7 @@ void refuseOutputInGoldens(const fs::path& out, const fs::path& goldensRoot) {
 CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard) {
   CaseBatch batch;
   std::vector<std::string> problems;
-  for (const auto& file : expand(paths)) {
+  for (const auto& file : expand(paths, problems)) {
     try {
       batch.cases.push_back(cases::loadCase(file));
     } catch (const cases::CaseError& e) {

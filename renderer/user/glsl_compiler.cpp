@@ -26,31 +26,9 @@ namespace {
 // Bumped when what this file passes to glslang changes, so older cache entries are ignored.
 constexpr const char* kCompilerTag = "taa-user-glsl 1 glslang 12 vulkan1.2 spv1.5";
 
-bool isInside(const fs::path& dir, const fs::path& file) {
-  if (dir.empty()) return false;
-  const auto rel = file.lexically_relative(dir);
-  return !rel.empty() && *rel.begin() != "..";
-}
-
 fs::path absoluteNormal(const fs::path& p) {
   std::error_code ec;
   return fs::absolute(p, ec).lexically_normal();
-}
-
-// Where `p` leads with every symbolic link followed, also when the last one dangles (so a
-// link's target is judged by where it points, whether or not something is there); empty for
-// a loop.
-fs::path followLinks(fs::path p) {
-  std::error_code ec;
-  for (int hop = 0; hop < 40; ++hop) {
-    p = fs::weakly_canonical(p, ec);
-    if (ec) return {};
-    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
-    const fs::path target = fs::read_symlink(p, ec);
-    if (ec) return {};
-    p = (target.is_absolute() ? target : p.parent_path() / target).lexically_normal();
-  }
-  return {};
 }
 
 std::string readShaderText(const fs::path& file, const std::string& what) {
@@ -139,9 +117,9 @@ class UserIncluder : public glslang::TShader::Includer {
 
   // Inside the case's folder or the installed headers, by the path's text or its real path.
   bool allowed(const fs::path& p) {
-    return isInside(absoluteNormal(root_), p) || isInside(rootReal(), p) ||
-           (!headerDir_.empty() && isInside(absoluteNormal(headerDir_), p)) ||
-           isInside(headerReal(), p);
+    return isInsideFolder(absoluteNormal(root_), p) || isInsideFolder(rootReal(), p) ||
+           (!headerDir_.empty() && isInsideFolder(absoluteNormal(headerDir_), p)) ||
+           isInsideFolder(headerReal(), p);
   }
 
   const fs::path& rootReal() {

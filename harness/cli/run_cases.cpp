@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
@@ -17,6 +18,7 @@
 #include "device.h"
 #include "device_error.h"
 #include "golden/environment.h"
+#include "golden/golden_store.h"
 #include "run/console.h"
 #include "scene/scene_error.h"
 
@@ -116,6 +118,12 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
 
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
                       const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs) {
+  std::set<fs::path> roots;
+  for (const auto& c : batch.cases)
+    roots.insert(options.run.goldensRoot.empty() ? run::defaultGoldensRoot(c.spec.file)
+                                                 : options.run.goldensRoot);
+  for (const auto& root : roots)
+    for (const auto& note : golden::removeStaleStaging(root)) std::cerr << "note: " << note << "\n";
   BatchOutcome out;
   DeviceOptions co;
   co.device = options.device;

@@ -24,9 +24,9 @@ constexpr double kMaxFlipPixelsPerDegree = 1000.0;
 const char* kCompareUsage =
     "taa-harness compare REFERENCE TEST [--metrics LIST] [--flip-ppd N] [--hdr] [--threads N]\n"
     "                    [--pixel-threshold T] [--max METRIC=V,...] [--min METRIC=V,...]\n"
-    "                    [--heatmap OUT.png] [--json]\n"
-    "  metrics of TEST against REFERENCE (OpenEXR or PNG; EXR files are linear, PNG files\n"
-    "  display-referred sRGB; both must be the same kind).\n"
+    "                    [--heatmap OUT.png] [--layer NAME] [--json]\n"
+    "  metrics of TEST against REFERENCE (OpenEXR or PNG, told apart by content: EXR files are\n"
+    "  linear, PNG files display-referred sRGB; both must be the same kind).\n"
     "  --metrics   comma list of max_abs, mean_abs, rmse, psnr, share_over, flip_mean, flip_p50,\n"
     "              flip_p95, flip_p99, flip_max (default: all)\n"
     "  --flip-ppd  pixels per degree for FLIP, 0.01 to 1000 (default 67.02: 0.7 m from a 0.7 m\n"
@@ -36,6 +36,8 @@ const char* kCompareUsage =
     "  --pixel-threshold  per-pixel bound that share_over counts, at least 0 (default 1/255)\n"
     "  --max/--min exit 1 when a metric is above a --max or below a --min bound\n"
     "  --heatmap   write the FLIP error map as a magma PNG\n"
+    "  --layer     compare the EXR layer NAME (channels NAME.R, NAME.G, NAME.B, NAME.A); without\n"
+    "              it the channels named R, G, B, A (R required; no channel is taken by position)\n"
     "  --json      print the result as JSON instead of lines\n"
     "exit: 0 within every bound, 1 a bound violated, 2 bad input (file, option, shape)";
 
@@ -83,7 +85,8 @@ nlohmann::json number(double v) {
 int cmdCompare(const Args& args) {
   const auto a = parseArgs(
       args, {"--json", "--hdr"},
-      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap"},
+      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap",
+       "--layer"},
       kCompareUsage);
   if (a.positional.size() != 2) {
     throw UsageError("expected REFERENCE and TEST, got " + std::to_string(a.positional.size()) +
@@ -110,6 +113,7 @@ int cmdCompare(const Args& args) {
   if (a.values.count("--pixel-threshold"))
     req.pixelThreshold = numberOption(a, "--pixel-threshold", 0.0, 1e30);
   req.hdr = a.has("--hdr");
+  req.layer = a.value("--layer");
   req.wantHeatmap = a.values.count("--heatmap") > 0;
   parseBounds("--max", a.value("--max"), true, req.bounds);
   parseBounds("--min", a.value("--min"), false, req.bounds);

@@ -214,7 +214,10 @@ std::string shown(const json& v) {
 }
 
 std::string rangeText(double lo, double hi, bool aboveLo) {
-  auto n = [](double d) { return json(d).dump(); };
+  // Most bounds are whole numbers: "at least 0", not "at least 0.0".
+  auto n = [](double d) {
+    return d == std::floor(d) && std::fabs(d) < 1e15 ? std::to_string(int64_t(d)) : json(d).dump();
+  };
   if (hi == kInf) return (aboveLo ? "above " : "at least ") + n(lo);
   if (lo == -kInf) return "at most " + n(hi);
   return "from " + n(lo) + " to " + n(hi);

@@ -3,7 +3,8 @@
 
 Each file states one defect that once crashed, hung or over-allocated a reader
 (issue 14): overflowing accessor counts and offsets, buffer views past their buffer,
-lying image headers, out-of-range references, deep nesting, duplicate keys; and for the
+lying image headers, out-of-range references, deep nesting, duplicate keys, indices and enums of the wrong
+type or range; and for the
 image codecs (issue 26) length fields past the bytes present and EXR channel names that
 are not R, G, B, A. Inputs a fuzzer finds are copied into corpus/ as they are, next to
 these. tests/core/image_hostile_test.cpp reads the image ones by name.
@@ -157,6 +158,19 @@ def main():
         "extras_nested_deep.gltf": b'{"asset": {"version": "2.0", "extras": ' + b"[" * 5000 + b"]" * 5000 + b"}}",
         "duplicate_key.gltf": b'{"asset": {"version": "2.0"}, "nodes": [], "nodes": [{}]}',
         "node_cycle.gltf": b'{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"children": [0]}]}',
+        # Indices, enums and fixed-length arrays of the wrong type or range (gltf_checks.cpp):
+        # tinygltf would wrap, default or keep them.
+        "index_2_32_plus_1.gltf": gltf([vec3(3)], VIEW, nodes=[{"mesh": 4294967297}]),
+        "index_fractional.gltf": gltf([vec3(3)], VIEW, scenes=[{"nodes": [0.5]}]),
+        "index_string.gltf": gltf([vec3(3)], [{"buffer": "0", "byteLength": 36}]),
+        "byte_offset_negative.gltf": gltf([vec3(3, -4)], VIEW),
+        "matrix_15_numbers.gltf": gltf([vec3(3)], VIEW, nodes=[{"mesh": 0, "matrix": [1] * 15}]),
+        "base_color_2_numbers.gltf": gltf([vec3(3)], VIEW, materials=[
+            {"pbrMetallicRoughness": {"baseColorFactor": [1, 1]}, "doubleSided": "yes"}]),
+        "wrap_s_12345.gltf": textured(PNG_HEADER(4, 4), {"buffer": 0, "byteOffset": 36, "byteLength": 33},
+                                      {"source": 0, "sampler": 0}).replace(
+            b'"images"', b'"samplers": [{"wrapS": 12345}], "images"'),
+        "uri_nul.gltf": gltf([vec3(3)], VIEW, images=[{"uri": "a.bin%00.png"}]),
         "glb_bin_chunk_past_end.glb": glb_bin_past_end(),
         "glb_chunk_length_huge.glb": b"glTF" + struct.pack("<II", 2, 40) + struct.pack("<I", 0xFFFFFFF0) + b"JSON" + b"{}" + b" " * 18,
     }

@@ -10,6 +10,7 @@
 #include <new>
 #include <string>
 
+#include "support/shader_folder.h"
 #include "user/compile_sandbox.h"
 #include "user/glsl_compiler.h"
 #include "user/shader_bounds.h"
@@ -20,22 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ShaderBoundsTest : public ::testing::Test {
+class ShaderBoundsTest : public test::ShaderFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(TAA_TEST_OUT) / "shader_bounds" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "src");
-    options_.root = dir_ / "src";
-    options_.headerDir = fs::path(TAA_SOURCE_DIR) / "shaders" / "user";
-    options_.cacheDir = dir_ / "cache";
-  }
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / "src" / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
   // A resolve that includes taa_user.h, with `decl` before main and `value` stored.
   fs::path resolve(const std::string& name, const std::string& decl,
                    const std::string& value = "taa_color_at(p)") {
@@ -61,8 +48,6 @@ class ShaderBoundsTest : public ::testing::Test {
     const CompiledShader c = compileComputeShader(file, options_);
     EXPECT_NO_THROW(reflectUserInterface(c.spirv, file.string()));
   }
-  fs::path dir_;
-  CompileOptions options_;
 };
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)

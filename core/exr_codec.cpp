@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/image_checks.h"
 #include "core/image_io.h"
 
 namespace taa::exr {
@@ -64,6 +65,28 @@ int exrChannelRank(const std::string& name) {
   return 4;
 }
 
+// LAYER.R, LAYER.G, LAYER.B, LAYER.A of `names`, those present in that order; R is required.
+std::vector<std::string> exrChannelsByName(const std::vector<std::string>& names,
+                                           const std::string& layer) {
+  const std::string prefix = layer.empty() ? "" : layer + ".";
+  std::vector<std::string> out;
+  for (const char* c : kExrChannelNames)
+    if (std::find(names.begin(), names.end(), prefix + c) != names.end()) out.push_back(prefix + c);
+  if (out.empty() || out[0] != prefix + "R") {
+    std::string list, layers;
+    for (const auto& n : names) {
+      list += (list.empty() ? "" : ", ") + n;
+      const auto dot = n.rfind('.');
+      if (dot != std::string::npos && layers.find(n.substr(0, dot)) == std::string::npos)
+        layers += (layers.empty() ? "" : ", ") + n.substr(0, dot);
+    }
+    throw ExrError("has no " + prefix + "R channel (its channels: " + list + ")" +
+                   (layers.empty() ? std::string("; channels are chosen by name, R, G, B and A")
+                                   : "; choose a layer (" + layers + ") with --layer"));
+  }
+  return out;
+}
+
 }  // namespace
 
 bool hasExrMagic(std::string_view bytes) {
@@ -105,8 +128,11 @@ std::string encode(const Image& image, bool halfFloat) {
   }
 }
 
-Image decode(std::string_view bytes, uint64_t maxSamples) {
+Image decode(std::string_view bytes, uint64_t maxSamples, const std::string* layer) {
   if (!hasExrMagic(bytes)) throw ExrError("not an OpenEXR file (no OpenEXR magic number)");
+  ExrHeaderInfo info;
+  if (const std::string why = exrStructureProblem(bytes, maxSamples, info); !why.empty())
+    throw ExrError(why);
   try {
     ExrMemoryIn in(bytes);
     Imf::InputFile file(in, 1);
@@ -126,6 +152,7 @@ Image decode(std::string_view bytes, uint64_t maxSamples) {
     std::stable_sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
       return exrChannelRank(a) < exrChannelRank(b);
     });
+    if (layer) names = exrChannelsByName(names, *layer);
     if (width <= 0 || height <= 0 || names.empty())
       throw ExrError("has an empty data window or no channels");
     if (uint64_t(width) * uint64_t(height) * names.size() > maxSamples)

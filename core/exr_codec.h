@@ -29,7 +29,11 @@ std::string encode(const Image& image, bool halfFloat);
 // Decodes the first part of a scanline or tiled OpenEXR (any pixel type) into float samples.
 // Channels come in the order R, G, B, A (those present), then the others in the file's
 // (alphabetical) order. The data window is read; its origin is dropped. Images with more than
-// `maxSamples` samples, deep data and subsampled channels are refused.
-Image decode(std::string_view bytes, uint64_t maxSamples);
+// `maxSamples` samples, deep data and subsampled channels are refused, and so is every file
+// whose length fields claim more bytes than it has (exrStructureProblem, before OpenEXR).
+// With `layer`, channels are chosen by name instead: LAYER.R, .G, .B, .A ("R", "G", "B", "A"
+// for an empty layer), those present in that order; a file without LAYER.R is refused
+// naming its channels.
+Image decode(std::string_view bytes, uint64_t maxSamples, const std::string* layer = nullptr);
 
 }  // namespace taa::exr

@@ -205,6 +205,27 @@ Image readImage(const fs::path& path) {
                      "convert it to one of them");
 }
 
+ReadImage readImageByName(const fs::path& path, const std::string& layer) {
+  const std::string bytes = readImageFile(path);
+  ReadImage out;
+  try {
+    if (exr::hasExrMagic(bytes)) {
+      out.image = exr::decode(bytes, kMaxImageSamples, &layer);
+      out.linear = true;
+      return out;
+    }
+    if (png::hasPngSignature(bytes)) {
+      out.image = png::decode(bytes, kMaxImageSamples);
+      return out;
+    }
+  } catch (const std::runtime_error& e) {
+    throw ImageIoError(path, e.what());
+  }
+  throw ImageIoError(path,
+                     "is neither OpenEXR nor PNG (the two formats the harness reads); "
+                     "convert it to one of them");
+}
+
 Image readExr(const fs::path& path) {
   const std::string bytes = readImageFile(path);
   if (!exr::hasExrMagic(bytes)) {

@@ -67,6 +67,18 @@ inline constexpr uint64_t kMaxImageSamples = uint64_t(1) << 28;
 // palettes expanded to RGB and transparency to an alpha channel that stays unassociated.
 Image readImage(const std::filesystem::path& path);
 
+// An image as `compare` reads it: the kind decided by the file's first bytes, not its name.
+struct ReadImage {
+  Image image;
+  bool linear = false;  // OpenEXR (linear), else PNG (display-referred)
+};
+
+// readImage, but an EXR's channels are chosen by name: LAYER.R, LAYER.G, LAYER.B, LAYER.A (R,
+// G, B, A for an empty `layer`), those present in that order, R required; a file without them
+// is refused naming its channels (a layered, B,G,R-ordered or X,Y,Z file is never read as RGB
+// by position).
+ReadImage readImageByName(const std::filesystem::path& path, const std::string& layer);
+
 // Writes a linear HDR image for viewing as 8-bit sRGB PNG, alpha dropped; see toDisplaySrgb for
 // the exact mapping. Atomic like writeExr.
 void writePng(const std::filesystem::path& path, const Image& hdr);

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -44,6 +45,7 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out) {
     const int err = errno;
     if (err == ENOENT)
       refuse(file, "does not exist; check the path (relative paths start at the case's folder)");
+    if (err == ELOOP) refuse(file, "is a symbolic-link loop; point the link at a file");
     refuse(file,
            "cannot be opened (" + std::string(std::strerror(err)) + "); check its permissions");
   }
@@ -71,22 +73,70 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out) {
 
 }  // namespace
 
+fs::path followLinks(fs::path p) {
+  std::error_code ec;
+  for (int hop = 0; hop < 40; ++hop) {
+    p = fs::weakly_canonical(p, ec);
+    if (ec) return {};
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+    const fs::path target = fs::read_symlink(p, ec);
+    if (ec) return {};
+    p = (target.is_absolute() ? target : p.parent_path() / target).lexically_normal();
+  }
+  return {};
+}
+
+bool isInsideFolder(const fs::path& folder, const fs::path& p) {
+  if (folder.empty()) return false;
+  const fs::path rel = p.lexically_relative(folder);
+  return !rel.empty() && !rel.is_absolute() && *rel.begin() != "..";
+}
+
 fs::path containedRealPath(const fs::path& root, const fs::path& file, const std::string& what) {
   std::error_code ec;
   const fs::path realRoot = fs::canonical(root.empty() ? fs::path(".") : root, ec);
   if (ec) refuse(root, "cannot be resolved (" + ec.message() + ")");
-  const fs::path real = fs::canonical(file, ec);
-  if (ec) {
-    if (fs::is_symlink(file, ec))
-      refuse(file, what + " is a symbolic link to a missing file; point it at a file inside " +
-                       realRoot.string());
+  // Where the path leads decides before whether anything is there: a refusal never tells
+  // whether a file outside the folder exists, nor where a link points.
+  const fs::path led = followLinks(fs::absolute(file, ec));
+  if (led.empty())
+    refuse(file, what + " is a symbolic-link loop (or a link chain over 40 long); point the "
+                        "link at a file");
+  if (!isInsideFolder(realRoot, led))
+    refuse(file, what + " leads outside '" + realRoot.string() +
+                     "' (through '..' or a symbolic link); copy the file itself into that folder");
+  if (!fs::exists(fs::symlink_status(led, ec)))
     refuse(file, what + " does not exist; check the path (relative to the case's folder)");
+  return led;
+}
+
+std::vector<fs::path> inputFilesIn(const fs::path& dir, const std::string& extension,
+                                   std::vector<std::string>& problems) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec), end;
+  if (ec) {
+    problems.push_back(dir.string() + ": cannot list the folder (" + ec.message() + ")");
+    return files;
   }
-  const fs::path rel = real.lexically_relative(realRoot);
-  if (rel.empty() || rel.is_absolute() || *rel.begin() == "..")
-    refuse(file, what + " resolves to '" + real.string() + "', outside '" + realRoot.string() +
-                     "' (through a symbolic link); copy the file itself into that folder");
-  return real;
+  for (; it != end; it.increment(ec)) {
+    if (ec) {
+      problems.push_back(dir.string() + ": cannot list the folder (" + ec.message() + ")");
+      break;
+    }
+    if (it->path().extension() != extension) continue;
+    try {
+      const fs::path real = containedRealPath(dir, it->path(), "the file");
+      std::error_code kind;
+      if (fs::is_directory(real, kind)) continue;  // a folder named x.json is no case
+      files.push_back(it->path());
+    } catch (const InputFileError& e) {
+      problems.push_back(e.what());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::sort(problems.begin(), problems.end());
+  return files;
 }
 
 std::string readInputFile(const fs::path& file, uint64_t maxBytes) {

@@ -34,6 +34,21 @@ class InputFileError : public InputError {
 std::filesystem::path containedRealPath(const std::filesystem::path& root,
                                         const std::filesystem::path& file, const std::string& what);
 
+// Where `p` leads with every symbolic link followed, the last one too when it dangles (a
+// link is judged by where it points, whether or not something is there); empty for a loop.
+std::filesystem::path followLinks(std::filesystem::path p);
+
+// Whether `p` lies inside `folder` by its text (both normalised and absolute).
+bool isInsideFolder(const std::filesystem::path& folder, const std::filesystem::path& p);
+
+// The files of `dir` (not its subfolders) ending in `extension`, sorted, each of which leads
+// to something inside `dir` after resolving links (containedRealPath). An entry that leads
+// out or loops, and a folder that cannot be listed, go to `problems` instead: the caller
+// reports them (exit 2), and nothing of such a file is read.
+std::vector<std::filesystem::path> inputFilesIn(const std::filesystem::path& dir,
+                                                const std::string& extension,
+                                                std::vector<std::string>& problems);
+
 // The whole content of `file`, which must be a regular file of at most `maxBytes` bytes.
 // Throws InputFileError otherwise (missing, unreadable, FIFO, device, directory, too big).
 std::string readInputFile(const std::filesystem::path& file, uint64_t maxBytes);

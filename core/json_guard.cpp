@@ -178,4 +178,20 @@ std::string jsonStructureProblem(std::string_view text, int maxDepth) {
   return Scanner(text, maxDepth).run();
 }
 
+std::string jsonErrorWithoutContent(const std::string& what) {
+  std::string s = what;
+  if (s.rfind("[json.exception.", 0) == 0) {
+    const size_t close = s.find("] ");
+    if (close != std::string::npos) s = s.substr(close + 2);
+  }
+  const size_t quoted = s.find("; last read:");
+  if (quoted != std::string::npos) s = s.substr(0, quoted);
+  // "number overflow parsing '1e999...'" quotes the token: keep the kind of error only.
+  const size_t token = s.find(" parsing '");
+  if (token != std::string::npos) s = s.substr(0, token);
+  // Lexer messages name characters by code ("control character U+0000"), never quote them;
+  // anything else from the file would sit after "last read".
+  return s;
+}
+
 }  // namespace taa

@@ -18,4 +18,9 @@ inline constexpr int kMaxJsonDepth = 256;
 // duplicate, where it first appeared. Malformed JSON is left for the real parser to report.
 std::string jsonStructureProblem(std::string_view text, int maxDepth = kMaxJsonDepth);
 
+// nlohmann's message for a failed parse (`what`), less what would quote the file: its
+// "[json.exception...]" prefix and its "; last read: '...'" tail. A file that fails to parse
+// may be no JSON at all (a link to a secret), and no byte of it is ever printed.
+std::string jsonErrorWithoutContent(const std::string& what);
+
 }  // namespace taa

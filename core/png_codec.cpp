@@ -8,12 +8,16 @@
 #include <cstring>
 #include <vector>
 
+#include "core/image_checks.h"
+
 namespace taa::png {
 
 // libpng reports errors by longjmp to the last setjmp. Every function below that can reach a
 // longjmp holds only trivially destructible locals (C++ forbids jumping over destructors), so
 // buffers live in the plain structs and the C++ wrappers own them.
 namespace {
+
+constexpr png_alloc_size_t kMaxPngChunkBytes = png_alloc_size_t(64) << 20;
 
 struct PngCodecJob {
   char message[256] = "";
@@ -138,6 +142,7 @@ std::string encode8(const uint8_t* samples, int width, int height, int channels,
 
 Image decode(std::string_view bytes, uint64_t maxSamples) {
   if (!hasPngSignature(bytes)) throw PngError("not a PNG file (no PNG signature)");
+  if (const std::string why = pngStructureProblem(bytes); !why.empty()) throw PngError(why);
   PngCodecJob job;
   job.input = reinterpret_cast<const unsigned char*>(bytes.data());
   job.inputSize = bytes.size();
@@ -146,6 +151,8 @@ Image decode(std::string_view bytes, uint64_t maxSamples) {
   if (!png) throw PngError("libpng could not start (out of memory)");
   png_infop info = png_create_info_struct(png);
   png_set_read_fn(png, &job, pngCodecRead);
+  // Compressed ancillary chunks (iCCP, zTXt, iTXt) inflate: bound what one may become.
+  png_set_chunk_malloc_max(png, kMaxPngChunkBytes);
   PngShape shape;
   bool ok = info && pngReadHeader(png, info, &shape);
   const uint64_t samples = uint64_t(shape.width) * shape.height * uint64_t(shape.channels);

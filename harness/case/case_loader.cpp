@@ -8,6 +8,7 @@
 #include "case/case_validate.h"
 #include "case/json_reader.h"
 #include "case/json_writer.h"
+#include "case/validate_inputs.h"
 #include "case/validate_report.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
@@ -134,11 +135,16 @@ LoadedCase parseCase(const std::string& text, const std::filesystem::path& file,
       }
     }
     throw CaseError({where + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": not valid JSON (" + e.what() + "); fix the syntax at that position"});
+                     ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + "); fix the syntax at that position"});
   } catch (const nlohmann::json::exception&) {  // found by fuzz_case: 1e999 overflows a double
     throw CaseError({where + ": a number is too large for a double (over about 1.8e308); fix the number"});
   }
   if (!root.is_object()) throw CaseError({where + ": the case must be a JSON object {...}"});
+  if (const auto bad = controlCharacterProblems(root); !bad.empty()) {
+    std::vector<std::string> problems;
+    for (const auto& [key, msg] : bad) problems.push_back(where + ": " + key + ": " + msg);
+    throw CaseError(problems);
+  }
 
   LoadedCase out;
   out.spec.file = file;

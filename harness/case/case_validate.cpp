@@ -8,6 +8,7 @@
 
 #include "case/case_error.h"
 #include "case/validate_inert.h"
+#include "case/validate_inputs.h"
 #include "case/validate_invariants.h"
 #include "case/validate_report.h"
 #include "case/validate_taa.h"
@@ -281,6 +282,8 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
   validateMovers(p, spec.movers, present);
   validateJitter(p, spec.jitter, present);
   for (const auto& [key, msg] : taaProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : emptyPathProblems(spec, present)) p.add(key, msg);
+  for (const auto& [key, msg] : outputVolumeProblems(spec)) p.add(key, msg);
   for (const auto& [key, msg] : userShaderProblems(spec, present)) p.add(key, msg);
   for (const auto& [key, msg] : inertProblems(spec, present)) p.add(key, msg);
   if (present.count("material.lod_bias") && spec.material.lod_bias_taa_only &&

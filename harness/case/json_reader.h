@@ -152,6 +152,12 @@ class JsonReader {
     if (!std::isfinite(out.number)) return typeError(path, "a finite number");
     return true;
   }
+  bool read(const nlohmann::json& j, const std::string& path, double& out) {
+    if (!j.is_number()) return typeError(path, "a number");
+    out = j.get<double>();
+    if (!std::isfinite(out)) return typeError(path, "a finite number");
+    return true;
+  }
   bool read(const nlohmann::json& j, const std::string& path, std::string& out) {
     if (!j.is_string()) return typeError(path, "a string");
     out = j.get<std::string>();

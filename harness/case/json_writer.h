@@ -79,6 +79,7 @@ template <> struct TypeName<bool> { static constexpr const char* value = "bool";
 template <> struct TypeName<int> { static constexpr const char* value = "int"; };
 template <> struct TypeName<float> { static constexpr const char* value = "number"; };
 template <> struct TypeName<spec::NumberOrBool> { static constexpr const char* value = "number or bool"; };
+template <> struct TypeName<double> { static constexpr const char* value = "number"; };
 template <> struct TypeName<std::string> { static constexpr const char* value = "string"; };
 template <> struct TypeName<glm::vec2> { static constexpr const char* value = "vec2"; };
 template <> struct TypeName<glm::vec3> { static constexpr const char* value = "vec3"; };

@@ -5,6 +5,7 @@
 #include "case/case_validate.h"
 #include "user/glsl_compiler.h"
 #include "user/user_capabilities.h"
+#include "user/shader_bounds.h"
 #include "user/user_resolve.h"
 
 namespace taa::cases {
@@ -47,6 +48,13 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
                          "to hlsl if the file is HLSL");
   if (t.shader_entry.empty())
     out.emplace_back("taa.shader_entry", "is empty; name the HLSL function to run, or remove it");
+  // A missing value would silently be 0.
+  for (size_t i = 0; i < t.shader_params.size(); ++i) {
+    const std::string key = "taa.shader_params[" + std::to_string(i) + "]";
+    for (const char* k : {".name", ".value"})
+      if (!present.count(key + k))
+        out.emplace_back(key + k, std::string("is missing; give the constant's ") + (k + 1));
+  }
   if (!out.empty()) return out;
   try {
     const UserShader shader = loadUserShader(spec);
@@ -57,6 +65,12 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
     if (!t.shader_capabilities_unchecked)
       for (const auto& why : user::missingCapabilities(spec, shader.capabilities, t.shader))
         out.emplace_back("taa.shader", why);
+    // Array lengths the case's values give: the default passed when the shader loaded.
+    if (out.empty())
+      if (const std::string why =
+              user::spirvMemoryProblem(shader.spirv, userSpecValues(t, shader.interface));
+          !why.empty())
+        out.emplace_back("taa.shader_params", "with these values " + shader.file.string() + ": " + why);
   } catch (const user::ShaderCompileError& e) {
     out.emplace_back("taa.shader", std::string("does not compile:\n") + e.what());
   }

@@ -19,36 +19,27 @@ namespace taa::cli {
 
 namespace {
 
+constexpr double kMaxFlipPixelsPerDegree = 1000.0;
+
 const char* kCompareUsage =
     "taa-harness compare REFERENCE TEST [--metrics LIST] [--flip-ppd N] [--hdr] [--threads N]\n"
     "                    [--pixel-threshold T] [--max METRIC=V,...] [--min METRIC=V,...]\n"
-    "                    [--heatmap OUT.png] [--json]\n"
-    "  metrics of TEST against REFERENCE (OpenEXR or PNG; EXR files are linear, PNG files\n"
-    "  display-referred sRGB; both must be the same kind).\n"
+    "                    [--heatmap OUT.png] [--layer NAME] [--json]\n"
+    "  metrics of TEST against REFERENCE (OpenEXR or PNG, told apart by content: EXR files are\n"
+    "  linear, PNG files display-referred sRGB; both must be the same kind).\n"
     "  --metrics   comma list of max_abs, mean_abs, rmse, psnr, share_over, flip_mean, flip_p50,\n"
     "              flip_p95, flip_p99, flip_max (default: all)\n"
-    "  --flip-ppd  pixels per degree for FLIP (default 67.02: 0.7 m from a 0.7 m wide 4K screen)\n"
+    "  --flip-ppd  pixels per degree for FLIP, 0.01 to 1000 (default 67.02: 0.7 m from a 0.7 m\n"
+    "              wide 4K screen)\n"
     "  --hdr       HDR-FLIP for linear inputs (default: LDR-FLIP of the tonemapped PNG view)\n"
     "  --threads   FLIP worker threads (default: one per core; results do not depend on it)\n"
-    "  --pixel-threshold  per-pixel bound that share_over counts (default 1/255)\n"
+    "  --pixel-threshold  per-pixel bound that share_over counts, at least 0 (default 1/255)\n"
     "  --max/--min exit 1 when a metric is above a --max or below a --min bound\n"
     "  --heatmap   write the FLIP error map as a magma PNG\n"
+    "  --layer     compare the EXR layer NAME (channels NAME.R, NAME.G, NAME.B, NAME.A); without\n"
+    "              it the channels named R, G, B, A (R required; no channel is taken by position)\n"
     "  --json      print the result as JSON instead of lines\n"
     "exit: 0 within every bound, 1 a bound violated, 2 bad input (file, option, shape)";
-
-double parseNumber(const std::string& text, const std::string& what) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || std::isnan(v)) {
-    throw UsageError(what + ": '" + text + "' is not a number");
-  }
-  return v;
-}
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> out;
@@ -63,7 +54,9 @@ std::vector<std::string> splitList(const std::string& text) {
 // "flip_mean=0.05,rmse=0.01" into bounds; names must be known metrics.
 void parseBounds(const std::string& option, const std::string& text, bool isMax,
                  std::vector<compare::Bound>& out) {
-  for (const std::string& item : splitList(text)) {
+  const auto items = splitList(text);
+  if (!text.empty() && items.empty()) throw UsageError(option + ": no METRIC=VALUE in '" + text + "'");
+  for (const std::string& item : items) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) {
       throw UsageError(option + ": '" + item + "' should be METRIC=VALUE, e.g. flip_mean=0.05");
@@ -75,7 +68,9 @@ void parseBounds(const std::string& option, const std::string& text, bool isMax,
                        compare::metricNameList());
     }
     b.isMax = isMax;
-    b.value = parseNumber(item.substr(eq + 1), option + " " + b.metric);
+    ParsedArgs one;
+    one.values[option + " " + b.metric] = item.substr(eq + 1);
+    b.value = numberOption(one, option + " " + b.metric, -1e300, 1e300);
     out.push_back(b);
   }
 }
@@ -90,7 +85,8 @@ nlohmann::json number(double v) {
 int cmdCompare(const Args& args) {
   const auto a = parseArgs(
       args, {"--json", "--hdr"},
-      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap"},
+      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap",
+       "--layer"},
       kCompareUsage);
   if (a.positional.size() != 2) {
     throw UsageError("expected REFERENCE and TEST, got " + std::to_string(a.positional.size()) +
@@ -109,24 +105,15 @@ int cmdCompare(const Args& args) {
       }
     }
   }
-  if (a.values.count("--flip-ppd")) {
-    req.flip.pixelsPerDegree = parseNumber(a.value("--flip-ppd"), "--flip-ppd");
-    if (!(req.flip.pixelsPerDegree > 0.0) || !std::isfinite(req.flip.pixelsPerDegree)) {
-      throw UsageError("--flip-ppd must be a positive number, got " + a.value("--flip-ppd"));
-    }
-  }
-  if (a.values.count("--threads")) {
-    const double t = parseNumber(a.value("--threads"), "--threads");
-    if (t < 1 || t > 1024 || t != std::floor(t)) {
-      throw UsageError("--threads must be a whole number in [1, 1024], got " +
-                       a.value("--threads"));
-    }
-    req.flip.threads = int(t);
-  }
-  if (a.values.count("--pixel-threshold")) {
-    req.pixelThreshold = parseNumber(a.value("--pixel-threshold"), "--pixel-threshold");
-  }
+  // FLIP's filters are 0.135 * ppd pixels wide: past 1000 ppd (a 135-pixel radius) the cost
+  // grows without telling anything a viewer could see.
+  if (a.values.count("--flip-ppd"))
+    req.flip.pixelsPerDegree = numberOption(a, "--flip-ppd", 0.01, kMaxFlipPixelsPerDegree);
+  if (a.values.count("--threads")) req.flip.threads = int(numberOption(a, "--threads", 1, 1024, true));
+  if (a.values.count("--pixel-threshold"))
+    req.pixelThreshold = numberOption(a, "--pixel-threshold", 0.0, 1e30);
   req.hdr = a.has("--hdr");
+  req.layer = a.value("--layer");
   req.wantHeatmap = a.values.count("--heatmap") > 0;
   parseBounds("--max", a.value("--max"), true, req.bounds);
   parseBounds("--min", a.value("--min"), false, req.bounds);
@@ -138,13 +125,8 @@ int cmdCompare(const Args& args) {
     throw UsageError(e.what());
   }
   if (req.wantHeatmap) {
-    try {
-      writePngLinear8(a.value("--heatmap"), compare::heatmap(out.flipMap));
-    } catch (const ImageIoError& e) {
-      throw UsageError(std::string("--heatmap: ") + e.what());
-    } catch (const ImageWriteError& e) {  // a path given on the command line: the argument's
-      throw UsageError(std::string("--heatmap: ") + e.what());
-    }
+    // A heatmap that cannot be written is an output failure (exit 3), like every output.
+    writePngLinear8(a.value("--heatmap"), compare::heatmap(out.flipMap));
   }
 
   if (a.has("--json")) {

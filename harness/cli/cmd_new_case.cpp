@@ -52,10 +52,11 @@ int cmdNewCase(const Args& args) {
     if (casesDir.empty()) throw UsageError(scenePath.string() + " is not under a cases/ folder; pass --cases DIR");
   }
   int frames = 16;
-  if (a.values.count("--frames")) frames = std::stoi(a.value("--frames"));
+  if (a.values.count("--frames")) frames = int(numberOption(a, "--frames", 1, 100000, true));
   const fs::path rel = relativeInside(scenePath, casesDir);
   const fs::path out = casesDir / (name + ".json");
-  if (fs::exists(out)) throw UsageError(out.string() + " exists; choose another --name or delete it");
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(out, ec))) throw UsageError(out.string() + " exists; choose another --name or delete it");
 
   scene::Scene scene;
   scene.models.push_back(scene::loadGltf(scenePath, scene));

@@ -105,14 +105,15 @@ int cmdRun(const Args& args) {
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + runUsage());
   if (a.values.count("--metric") != a.values.count("--above"))
     throw UsageError(std::string("--metric and --above go together\nusage: ") + runUsage());
+  double above = 0.0;
   if (a.values.count("--metric")) {
     try {
       run::ImageMetrics probe;
       compare::metricByName(probe, a.value("--metric"));  // rejects an unknown name before rendering
-      std::stod(a.value("--above"));
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--metric/--above: ") + e.what());
     }
+    above = numberOption(a, "--above", -1e300, 1e300);
   }
   CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
   const fs::path out = a.value("--out", "out");
@@ -146,7 +147,7 @@ int cmdRun(const Args& args) {
               << batch.cases.size() << " cases not run\n";
   std::cout << "report: " << (out / "report.html").string() << "\n";
   if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
-  if (a.values.count("--metric")) return metricVerdict(outcome.results, a.value("--metric"), std::stod(a.value("--above")));
+  if (a.values.count("--metric")) return metricVerdict(outcome.results, a.value("--metric"), above);
   return outcome.exitCode;
 }
 

@@ -69,8 +69,11 @@ int cmdScore(const Args& args) {
   if (!a.positional.empty() || (lanes.empty() && lanesFile.empty()))
     throw UsageError(std::string("usage: ") + kScoreUsage);
   score::ScoreOptions o;
+  std::error_code ec;
   for (const auto& l : lanes) {
-    if (!fs::is_regular_file(l.shader)) throw UsageError(l.shader.string() + ": no such shader file");
+    // Only existence here: the compiler says what else is wrong (a FIFO, a link loop).
+    if (!fs::exists(fs::symlink_status(l.shader, ec)))
+      throw UsageError(l.shader.string() + ": no such shader file");
     // A lane is named after its shader's stem; two shaders of one stem (a GLSL resolve and its
     // HLSL twin) by their file names, one shader given twice also by its parameters.
     const bool repeated = std::count_if(lanes.begin(), lanes.end(),
@@ -85,7 +88,7 @@ int cmdScore(const Args& args) {
   if (!lanesFile.empty())
     for (auto& l : score::loadLanes(lanesFile)) o.lanes.push_back(std::move(l));
   o.casesDir = a.value("--cases", "cases");
-  if (!fs::is_directory(o.casesDir))
+  if (!fs::is_directory(o.casesDir, ec))
     throw UsageError(o.casesDir.string() + ": no such folder of cases; pass --cases DIR");
   o.maxCases = a.flags.count("--quick") ? 3 : 0;
   if (isatty(STDERR_FILENO))

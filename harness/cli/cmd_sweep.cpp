@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/input_file.h"
 #include "cli/run_cases.h"
 #include "sweep/sweep.h"
 
@@ -36,13 +37,21 @@ int cmdSweep(const Args& args) {
   const auto a = parseArgs(args, {}, {"--presets", "--presets-file", "--from-frame", "--out", "--device"}, kSweepUsage);
   if (a.positional.size() != 1 || !a.values.count("--presets")) throw UsageError(std::string("usage: ") + kSweepUsage);
   const fs::path caseFile = a.positional[0];
-  if (!fs::exists(caseFile)) throw UsageError(caseFile.string() + ": no such case file");
+  std::error_code ec;  // a link loop is the case reader's to report (exit 2), not an exception here
+  if (!fs::exists(fs::symlink_status(caseFile, ec)))
+    throw UsageError(caseFile.string() + ": no such case file");
   fs::path presetsFile = a.value("--presets-file");
   if (presetsFile.empty()) {
     // Default: presets/presets.json in the nearest folder named "cases" above the case.
     for (fs::path p = fs::absolute(caseFile).parent_path(); !p.empty() && p != p.root_path(); p = p.parent_path())
       if (p.filename() == "cases") {
         presetsFile = p / "presets" / "presets.json";
+        // Found, not named: it must lie in that cases folder after resolving links.
+        try {
+          containedRealPath(p, presetsFile, "the default presets file");
+        } catch (const InputFileError& e) {
+          throw UsageError(std::string(e.what()) + "; or pass --presets-file");
+        }
         break;
       }
     if (presetsFile.empty()) throw UsageError(caseFile.string() + " is not under a cases/ folder; pass --presets-file");
@@ -51,11 +60,8 @@ int cmdSweep(const Args& args) {
   const auto names = split(a.value("--presets"));
   sweep::SweepOptions options;
   options.presetsDir = fs::absolute(presetsFile).parent_path();
-  try {
-    options.fromFrame = std::stoi(a.value("--from-frame", "0"));
-  } catch (const std::exception&) {
-    throw UsageError("--from-frame needs a frame number");
-  }
+  if (a.values.count("--from-frame"))
+    options.fromFrame = int(numberOption(a, "--from-frame", 0, 99999, true));
   if (isatty(STDERR_FILENO))
     options.progress = [](const std::string& preset, int f, int frames) {
       std::cerr << "\r" << preset << " frame " << f + 1 << "/" << frames << "\033[K" << std::flush;

@@ -1,5 +1,8 @@
 #include "cli/options.h"
 
+#include <cmath>
+#include <sstream>
+
 namespace taa::cli {
 
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& flagNames,
@@ -27,11 +30,38 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::s
       } else {
         throw UsageError(key + " needs a value\nusage: " + usage);
       }
+      // No option means anything by an empty value ("--out ''" would write into the working
+      // folder, "--max ''" would check nothing).
+      if (out.values[key].empty())
+        throw UsageError(key + " is given an empty value; give one or leave the option out\nusage: " +
+                         usage);
     } else {
       throw UsageError("unknown option " + a + "\nusage: " + usage);
     }
   }
   return out;
+}
+
+double numberOption(const ParsedArgs& a, const std::string& key, double lo, double hi,
+                    bool whole) {
+  const std::string text = a.value(key);
+  size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v))
+    throw UsageError(key + ": '" + text + "' is not a number");
+  if (whole && v != std::floor(v))
+    throw UsageError(key + ": '" + text + "' is not a whole number");
+  if (v < lo || v > hi) {
+    std::ostringstream range;
+    range << "[" << lo << ", " << hi << "]";
+    throw UsageError(key + ": " + text + " is outside " + range.str());
+  }
+  return v;
 }
 
 }  // namespace taa::cli

@@ -39,10 +39,17 @@ struct ParsedArgs {
   }
 };
 
-// `flagNames` take no value; `valueNames` take the next argument (or --key=value); where
-// `valueNames` holds --jobs, -j N and -jN mean --jobs N.
+// `flagNames` take no value; `valueNames` take the next argument (or --key=value), which
+// may not be empty; where `valueNames` holds --jobs, -j N and -jN mean --jobs N.
 // Throws HelpRequested (what(): the usage) for --help or -h, UsageError for anything unknown.
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& flagNames,
                      const std::set<std::string>& valueNames, const std::string& usage);
+
+// The value of the numeric option `key` (which must be present), checked to be a finite
+// number in [lo, hi], whole if `whole`; throws UsageError naming the option and the range.
+// Every numeric option goes through it: a value the code cannot afford (a FLIP kernel a
+// million pixels wide) is refused, not attempted.
+double numberOption(const ParsedArgs& a, const std::string& key, double lo, double hi,
+                    bool whole = false);
 
 }  // namespace taa::cli

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 
 #include "api/device.h"
 #include "case/case_error.h"
@@ -25,6 +26,7 @@
 #include "core/sha256.h"
 #include "golden/bless.h"
 #include "golden/environment.h"
+#include "golden/golden_store.h"
 #include "run/console.h"
 #include "run/ordered_run.h"
 
@@ -34,14 +36,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<fs::path> expand(const std::vector<std::string>& paths) {
+// A folder's *.json files, each inside it after resolving links (a link leading out is
+// refused unread); a file named on the command line is the user's choice and read as named.
+std::vector<fs::path> expand(const std::vector<std::string>& paths,
+                             std::vector<std::string>& problems) {
   std::vector<fs::path> files;
   for (const auto& p : paths) {
-    if (fs::is_directory(p)) {
-      std::vector<fs::path> inDir;
-      for (const auto& e : fs::directory_iterator(p))
-        if (e.path().extension() == ".json") inDir.push_back(e.path());
-      std::sort(inDir.begin(), inDir.end());
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      const auto inDir = inputFilesIn(p, ".json", problems);
       files.insert(files.end(), inDir.begin(), inDir.end());
     } else {
       files.emplace_back(p);
@@ -52,14 +55,16 @@ std::vector<fs::path> expand(const std::vector<std::string>& paths) {
 
 std::pair<int, int> parseShard(const std::string& shard) {
   const auto slash = shard.find('/');
-  try {
-    if (slash != std::string::npos) {
-      const int i = std::stoi(shard.substr(0, slash)), n = std::stoi(shard.substr(slash + 1));
-      if (n >= 1 && i >= 1 && i <= n) return {i, n};
-    }
-  } catch (const std::exception&) {
+  auto whole = [](const std::string& t) {
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
+      return -1;
+    return std::stoi(t);
+  };
+  if (slash != std::string::npos) {
+    const int i = whole(shard.substr(0, slash)), n = whole(shard.substr(slash + 1));
+    if (n >= 1 && i >= 1 && i <= n) return {i, n};
   }
-  throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N, e.g. --shard 2/4");
+  throw UsageError("--shard '" + shard + "': expected I/N with 1 <= I <= N <= 999999, e.g. --shard 2/4");
 }
 
 // "\r[3/99] fence frame 12/24 | open_area frame 3/32" on a terminal: what each worker renders.
@@ -210,7 +215,7 @@ void refuseOutputInGoldens(const fs::path& out, const fs::path& goldensRoot) {
 CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard) {
   CaseBatch batch;
   std::vector<std::string> problems;
-  for (const auto& file : expand(paths)) {
+  for (const auto& file : expand(paths, problems)) {
     try {
       batch.cases.push_back(cases::loadCase(file));
     } catch (const cases::CaseError& e) {
@@ -263,7 +268,8 @@ run::RunResults readResultsFile(const fs::path& results, const std::string& fix)
   try {
     return run::runResultsFromJson(nlohmann::json::parse(text));
   } catch (const nlohmann::json::exception& e) {
-    throw UsageError(results.string() + ": not the results.json of a run (" + e.what() + "); " + fix);
+    throw UsageError(results.string() + ": not the results.json of a run (" +
+                     jsonErrorWithoutContent(e.what()) + "); " + fix);
   } catch (const std::runtime_error& e) {
     throw UsageError(results.string() + ": " + e.what() + "; " + fix);
   }
@@ -309,6 +315,12 @@ std::string throughputLine(const BatchOutcome& outcome, double wallSeconds, cons
 
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
                       const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs) {
+  std::set<fs::path> roots;
+  for (const auto& c : batch.cases)
+    roots.insert(options.run.goldensRoot.empty() ? run::defaultGoldensRoot(c.spec.file)
+                                                 : options.run.goldensRoot);
+  for (const auto& root : roots)
+    for (const auto& note : golden::removeStaleStaging(root)) std::cerr << "note: " << note << "\n";
   BatchOutcome out;
   const size_t count = batch.cases.size();
   const size_t workers = std::max<size_t>(1, std::min(options.jobs ? options.jobs : run::availableCores(), count));

@@ -1,7 +1,6 @@
 #include "compare/compare_files.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,9 +13,9 @@ namespace taa::compare {
 
 namespace {
 
-Image readOrExplain(const std::string& path, const char* role) {
+ReadImage readOrExplain(const std::string& path, const std::string& layer, const char* role) {
   try {
-    return readImage(path);
+    return readImageByName(path, layer);
   } catch (const ImageIoError& e) {
     throw CompareInputError(std::string(role) + " " + e.what());
   }
@@ -70,26 +69,22 @@ std::string metricNameList() {
   return out;
 }
 
-bool isLinearFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".exr";
-}
-
 CompareOutcome compareFiles(const CompareRequest& r) {
-  const bool linear = isLinearFile(r.referencePath);
-  if (linear != isLinearFile(r.testPath)) {
+  ReadImage refRead = readOrExplain(r.referencePath, r.layer, "reference");
+  ReadImage testRead = readOrExplain(r.testPath, r.layer, "test");
+  const bool linear = refRead.linear;
+  if (linear != testRead.linear) {
     throw CompareInputError(
-        r.referencePath + " is " + (linear ? "linear (EXR)" : "display-referred") + " but " +
-        r.testPath + " is " + (linear ? "display-referred" : "linear (EXR)") +
-        "; compare an EXR with an EXR, or the PNGs of both");
+        r.referencePath + " is " + (linear ? "linear (OpenEXR)" : "display-referred (PNG)") +
+        " but " + r.testPath + " is " + (linear ? "display-referred (PNG)" : "linear (OpenEXR)") +
+        " (by their content); compare an EXR with an EXR, or the PNGs of both");
   }
   if (r.hdr && !linear) {
-    throw CompareInputError("--hdr needs linear inputs (EXR), got " + r.referencePath);
+    throw CompareInputError("--hdr needs linear inputs (OpenEXR), but " + r.referencePath +
+                            " is a PNG");
   }
-  Image ref = readOrExplain(r.referencePath, "reference");
-  Image test = readOrExplain(r.testPath, "test");
+  Image ref = std::move(refRead.image);
+  Image test = std::move(testRead.image);
   if (ref.width != test.width || ref.height != test.height) {
     throw CompareInputError(r.referencePath + " is " + shape(ref) + " but " + r.testPath + " is " +
                             shape(test) + "; both images must have the same size");

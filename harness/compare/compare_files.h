@@ -34,6 +34,7 @@ struct CompareRequest {
   double pixelThreshold = 1.0 / 255.0;
   std::vector<Bound> bounds;  // bounded metrics are computed even when not listed in `metrics`
   bool wantHeatmap = false;   // compute FLIP for its map even when no FLIP metric is asked for
+  std::string layer;          // EXR channels LAYER.R, .G, .B, .A; empty: R, G, B, A
 };
 
 struct CompareOutcome {
@@ -53,14 +54,13 @@ const std::vector<std::string>& metricNames();
 bool isMetricName(const std::string& name);
 std::string metricNameList();  // "max_abs, mean_abs, ..."
 
-// True for files read as linear (scene-referred) data: .exr, any letter case.
-bool isLinearFile(const std::string& path);
-
-// Reads both files and measures. Linear inputs get LDR-FLIP of their tonemapped display view
-// (toDisplaySrgb, what the harness's PNGs show) or, with `hdr`, HDR-FLIP; display inputs get
-// LDR-FLIP directly. Images whose channel counts differ are compared on their first three
-// channels when both have at least three. Throws CompareInputError for unreadable files, a linear
-// file against a display one, different sizes, or `hdr` with display inputs.
+// Reads both files (each file's kind by its content: OpenEXR is linear, PNG display-referred;
+// EXR channels by name, readImageByName) and measures. Linear inputs get LDR-FLIP of their
+// tonemapped display view (toDisplaySrgb, what the harness's PNGs show) or, with `hdr`,
+// HDR-FLIP; display inputs get LDR-FLIP directly. Images whose channel counts differ are
+// compared on their first three channels when both have at least three. Throws
+// CompareInputError for unreadable files, a linear file against a display one, different
+// sizes, or `hdr` with display inputs.
 CompareOutcome compareFiles(const CompareRequest& request);
 
 }  // namespace taa::compare

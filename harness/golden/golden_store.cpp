@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include <signal.h>
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -61,22 +63,57 @@ GoldensLock::~GoldensLock() {
 
 namespace {
 
-// Leftovers of a bless that was killed before its exchange: never part of a set.
+// Leftovers of a bless that was killed before its exchange: never part of a set. Called
+// under the folder's lock, so no live bless of this case has one.
 void removeStale(const fs::path& root, const std::string& caseName) {
   const std::string prefix = "." + caseName + ".bless-";
-  for (const auto& entry : fs::directory_iterator(root))
-    if (entry.path().filename().string().rfind(prefix, 0) == 0) fs::remove_all(entry.path());
+  std::error_code ec;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().filename().string().rfind(prefix, 0) == 0) fs::remove_all(it->path(), ec);
+}
+
+// The process id of a staging folder's name (".NAME.bless-PID"), or 0.
+pid_t stagingPid(const std::string& name) {
+  const size_t at = name.rfind(".bless-");
+  if (name.empty() || name[0] != '.' || at == std::string::npos || at == 0) return 0;
+  const std::string digits = name.substr(at + 7);
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
+  return pid_t(std::stol(digits));
 }
 
 }  // namespace
 
+std::vector<std::string> removeStaleStaging(const fs::path& root) {
+  std::vector<std::string> notes;
+  std::error_code ec;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const pid_t pid = stagingPid(name);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    // A live process (or one we may not signal) keeps its folder: it may be blessing now.
+    if (::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    fs::remove_all(it->path(), rm);
+    notes.push_back(rm ? "cannot remove " + it->path().string() + ", a bless staging folder left by process " +
+                             std::to_string(pid) + " (" + rm.message() + "); delete it by hand"
+                       : "removed " + it->path().string() + ", a bless staging folder left by process " +
+                             std::to_string(pid) + ", which has ended (killed during a bless)");
+  }
+  return notes;
+}
+
 void replaceGoldens(const fs::path& root, const Manifest& manifest,
                     const std::vector<std::pair<GoldenFrame, Image>>& frames) {
   createOutputDirectory(root);
+  if (::access(root.c_str(), W_OK) != 0)
+    throw OutputError(root, std::string("the goldens folder is not writable (") + std::strerror(errno) +
+                                "): bless writes the new set beside the old one and swaps them, so it "
+                                "needs write access there; the goldens are unchanged");
   removeStale(root, manifest.caseName);
   const fs::path target = root / manifest.caseName;
   const fs::path staging = root / ("." + manifest.caseName + ".bless-" + std::to_string(getpid()));
-  fs::create_directories(staging);
+  createOutputDirectory(staging);
   try {
     for (const auto& [frame, image] : frames) writeExr(staging / frame.file, image);
     writeFileAtomically(staging / "manifest.json", manifest.toJson().dump(2) + "\n");
@@ -85,16 +122,21 @@ void replaceGoldens(const fs::path& root, const Manifest& manifest,
     fs::remove_all(staging);
     throw;
   }
-  if (fs::exists(target)) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(target, ec))) {
     if (renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {
       const std::string why = std::strerror(errno);
       fs::remove_all(staging);
       throw OutputError(target, "cannot swap in " + staging.string() + ": " + why);
     }
     syncDirectory(root);
-    fs::remove_all(staging);  // now holds the previous set
+    fs::remove_all(staging, ec);  // now holds the previous set
   } else {
-    fs::rename(staging, target);
+    fs::rename(staging, target, ec);
+    if (ec) {
+      fs::remove_all(staging, ec);
+      throw OutputError(target, "cannot move the new set into place: " + ec.message());
+    }
     syncDirectory(root);
   }
 }

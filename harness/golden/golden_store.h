@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -48,5 +49,10 @@ class GoldensLock {
 // when another process may bless into it.
 void replaceGoldens(const std::filesystem::path& root, const Manifest& manifest,
                     const std::vector<std::pair<GoldenFrame, Image>>& frames);
+
+// Removes the staging folders (.NAME.bless-PID) that blesses killed before their exchange
+// left in `root`, of processes that have ended; returns a line for each, to print. A live
+// process's folder is kept. Run at the start of every run and bless.
+std::vector<std::string> removeStaleStaging(const std::filesystem::path& root);
 
 }  // namespace taa::golden

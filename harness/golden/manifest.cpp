@@ -133,7 +133,7 @@ Manifest readManifest(const std::filesystem::path& file) {
   try {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw GoldenError(file.string() + ": not valid JSON (" + e.what() + "); " + hint);
+    throw GoldenError(file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + "); " + hint);
   }
   return Manifest::fromJson(j, file);
 }

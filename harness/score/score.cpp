@@ -11,6 +11,7 @@
 #include "compare/flip.h"
 #include "compare/metrics.h"
 #include "core/input_file.h"
+#include "core/json_guard.h"
 #include "core/output_file.h"
 #include "invariants/flicker_meter.h"
 #include "invariants/invariant_support.h"
@@ -58,7 +59,7 @@ nlohmann::json readCaseJson(const fs::path& file) {
   } catch (const InputFileError& e) {
     throw cases::CaseError({e.what()});
   } catch (const nlohmann::json::exception& e) {
-    throw cases::CaseError({file.string() + ": not valid JSON (" + e.what() + ")"});
+    throw cases::CaseError({file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")"});
   }
 }
 
@@ -202,14 +203,9 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
                               "; name them apart (--name, or the lanes file's keys)"});
     s.lanes.push_back(l);
   }
-  std::vector<fs::path> files;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(o.casesDir, ec))
-    if (e.path().extension() == ".json" && e.is_regular_file()) files.push_back(e.path());
-  if (ec)
-    throw cases::CaseError({o.casesDir.string() + ": cannot list the folder (" + ec.message() +
-                            "); pass --cases DIR"});
-  std::sort(files.begin(), files.end());
+  std::vector<std::string> problems;
+  const std::vector<fs::path> files = inputFilesIn(o.casesDir, ".json", problems);
+  if (!problems.empty()) throw cases::CaseError(problems);
   bool compiled = false;
   for (const auto& file : files) {
     if (o.maxCases > 0 && int(s.cases.size()) >= o.maxCases) break;

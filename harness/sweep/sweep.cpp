@@ -35,7 +35,7 @@ nlohmann::json readJson(const fs::path& file) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw cases::CaseError({file.string() + ": not valid JSON (" + std::string(e.what()) + ")"});
+    throw cases::CaseError({file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")"});
   }
 }
 

@@ -47,19 +47,19 @@ glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Materi
 
 // EXT_meshopt_compression (gltf_meshopt.cpp). Before tinygltf: gives every fallback
 // buffer without a uri an all-zero data URI of its byteLength; returns whether it
-// changed `json`. glbWithJson replaces a GLB's JSON chunk. After tinygltf: decodes every
+// changed `doc`. glbWithJson replaces a GLB's JSON chunk. After tinygltf: decodes every
 // compressed buffer view into its place; throws SceneError naming the view.
-bool fillMeshoptFallbacks(std::string& json);
+bool fillMeshoptFallbacks(nlohmann::json& doc);
 std::vector<uint8_t> glbWithJson(const std::vector<uint8_t>& glb, std::string json);
 void decodeMeshopt(const std::filesystem::path& file, tinygltf::Model& gltf);
 
 // KHR_draco_mesh_compression (gltf_draco.cpp). Before tinygltf: takes the "indices" key
 // out of each compressed primitive whose indices accessor has no bufferView (tinygltf
 // refuses those) and returns every compressed primitive's indices accessor, by (mesh,
-// primitive), -1 for none. After tinygltf: decodes each compressed primitive into new
+// primitive), -1 for none; sets `changed` when it took a key out. After tinygltf: decodes each compressed primitive into new
 // accessors and points the primitive at them; throws SceneError naming the primitive.
 using DracoIndices = std::map<std::pair<int, int>, int>;
-DracoIndices detachDracoIndices(std::string& json);
+DracoIndices detachDracoIndices(nlohmann::json& doc, bool& changed);
 void decodeDraco(const std::filesystem::path& file, tinygltf::Model& gltf,
                  const DracoIndices& indices);
 

@@ -215,14 +215,10 @@ void decodeDracoPrimitive(const fs::path& file, tinygltf::Model& g, tinygltf::Pr
 
 }  // namespace
 
-DracoIndices detachDracoIndices(std::string& json) {
+DracoIndices detachDracoIndices(nlohmann::json& doc, bool& changed) {
   DracoIndices found;
-  if (json.find(kDracoExt) == std::string::npos) return found;
-  nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) return found;
   const auto meshes = doc.find("meshes");
   if (meshes == doc.end() || !meshes->is_array()) return found;
-  bool changed = false;
   for (size_t m = 0; m < meshes->size(); ++m) {
     auto& mesh = (*meshes)[m];
     if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
@@ -242,7 +238,6 @@ DracoIndices detachDracoIndices(std::string& json) {
       }
     }
   }
-  if (changed) json = doc.dump();
   return found;
 }
 

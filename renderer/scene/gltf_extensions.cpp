@@ -63,9 +63,7 @@ const std::vector<std::string>& supportedGltfExtensions() {
   return list;
 }
 
-std::string checkGltfExtensions(const std::filesystem::path& file, const std::string& json) {
-  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) return "";  // checkGltfUris reports bad JSON
+std::string checkGltfExtensions(const std::filesystem::path& file, const nlohmann::json& doc) {
   const auto& supported = supportedGltfExtensions();
   auto isSupported = [&](const std::string& e) {
     return std::find(supported.begin(), supported.end(), e) != supported.end();

@@ -7,6 +7,7 @@
 
 #include "core/input_file.h"
 #include "core/json_guard.h"
+#include "scene/gltf_checks.h"
 #include "scene/gltf_convert.h"
 #include "scene/gltf_images.h"
 #include "scene/scene_error.h"
@@ -21,23 +22,28 @@ namespace fs = std::filesystem;
 // would expand '~' and environment variables in a uri).
 struct Jail {
   fs::path root;                     // canonical folder of the glTF file
-  std::vector<std::string> refused;  // existing files kept out, for the error message
+  std::vector<std::string> refused;  // paths in the folder leading out, for the error message
+  static bool inside(const fs::path& p, const fs::path& folder) {
+    const fs::path rel = p.lexically_relative(folder);
+    return !rel.empty() && *rel.begin() != ".." && !rel.is_absolute();
+  }
   bool contains(const std::string& path) {
     std::error_code ec;
     const fs::path p = fs::weakly_canonical(fs::path(path), ec);
-    if (ec) return false;
-    const fs::path rel = p.lexically_relative(root);
-    if (!rel.empty() && *rel.begin() != ".." && !rel.is_absolute()) return true;
-    // tinygltf also probes the working directory; only a file that is there is news.
-    if (fs::exists(p, ec)) refused.push_back(path + "' resolves to '" + p.string());
+    if (!ec && inside(p, root)) return true;
+    // A path in the folder that resolves outside leads out through a link: refused whether
+    // or not its target exists, and without saying where it points. tinygltf's other probes
+    // (the working directory) are left out silently.
+    if (inside(fs::absolute(fs::path(path), ec).lexically_normal(), root))
+      refused.push_back(path);
     return false;
   }
   // Why loading failed when the cause was a refusal, else "".
   std::string explain() const {
     if (refused.empty()) return "";
     return "'" + refused.front() +
-           "', outside the glTF's folder (through a symbolic link, or tinygltf's fallback to the "
-           "working directory); put the file itself inside the glTF's folder";
+           "' leads outside the glTF's folder (through a symbolic link); put the file itself "
+           "inside the glTF's folder";
   }
 };
 
@@ -98,15 +104,24 @@ Model loadGltf(const fs::path& file, Scene& scene) {
       binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
   if (const std::string problem = jsonStructureProblem(json); !problem.empty())
     throw SceneError(file, problem);
-  checkGltfUris(file, json);
-  const std::string note = checkGltfExtensions(file, json);
-  if (!note.empty() && std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
-    scene.notes.push_back(note);
-  const bool meshopt =
-      json.find("EXT_meshopt_compression") != std::string::npos && fillMeshoptFallbacks(json);
-  const std::string before = json;
-  const DracoIndices dracoIndices = detachDracoIndices(json);
-  if (binary && (meshopt || json != before)) bytes = glbWithJson(bytes, json);
+  DracoIndices dracoIndices;
+  {
+    // The one parse before tinygltf's: every check reads this document, which is gone
+    // before tinygltf builds its own.
+    nlohmann::json doc = parseGltfJson(file, json);
+    checkGltfDocument(file, doc);
+    checkGltfUris(file, doc);
+    const std::string note = checkGltfExtensions(file, doc);
+    if (!note.empty() &&
+        std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
+      scene.notes.push_back(note);
+    bool changed = fillMeshoptFallbacks(doc);
+    dracoIndices = detachDracoIndices(doc, changed);
+    if (changed) {
+      json = doc.dump();
+      if (binary) bytes = glbWithJson(bytes, json);
+    }
+  }
 
   std::error_code ec;
   Jail jail{fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec), {}};

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scene/scene.h"
 
 namespace taa::scene {
@@ -26,7 +28,7 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 // Throws SceneError when a buffers[].uri or images[].uri of the glTF JSON is not a
 // data: URI or a relative path staying inside the file's folder (after percent-decoding,
 // as tinygltf decodes it). The message names `file`, the key and the uri.
-void checkGltfUris(const std::filesystem::path& file, const std::string& json);
+void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc);
 
 // Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
 // read (loadGltf then reports why). For spec-level checks that need to know whether a
@@ -39,6 +41,6 @@ const std::vector<std::string>& supportedGltfExtensions();
 // Throws SceneError naming `file`, the extension and the fix when extensionsRequired
 // lists one that is not supported. Returns a one-line note naming the extensions that
 // extensionsUsed lists but the loader ignores ("" when there are none).
-std::string checkGltfExtensions(const std::filesystem::path& file, const std::string& json);
+std::string checkGltfExtensions(const std::filesystem::path& file, const nlohmann::json& doc);
 
 }  // namespace taa::scene

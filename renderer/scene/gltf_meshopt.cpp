@@ -76,9 +76,7 @@ std::vector<uint8_t> glbWithJson(const std::vector<uint8_t>& glb, std::string js
   return out;
 }
 
-bool fillMeshoptFallbacks(std::string& json) {
-  nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) return false;
+bool fillMeshoptFallbacks(nlohmann::json& doc) {
   const auto buffers = doc.find("buffers");
   if (buffers == doc.end() || !buffers->is_array()) return false;
   bool changed = false;
@@ -89,7 +87,6 @@ bool fillMeshoptFallbacks(std::string& json) {
     b["uri"] = "data:application/octet-stream;base64," + zeros(length->get<size_t>());
     changed = true;
   }
-  if (changed) json = doc.dump();
   return changed;
 }
 

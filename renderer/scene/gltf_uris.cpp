@@ -58,6 +58,11 @@ size_t schemeLength(const std::string& s) {
 std::string uriProblem(const std::string& uri) {
   if (startsWithNoCase(uri, "data:")) return "";
   const std::string path = percentDecode(uri);
+  // A NUL would end the path early at the file system ("a.bin%00.png" opens "a.bin").
+  for (const char c : path)
+    if (static_cast<unsigned char>(c) < 0x20)
+      return "holds a control character (a NUL or %00 would cut the path short); rename the "
+             "file and refer to it without one";
   const size_t scheme = schemeLength(path);
   if (path.find("://") != std::string::npos || scheme > 1)
     return "is an external URI; only files inside the glTF's folder are read. Download the file "
@@ -104,11 +109,7 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
   return std::string(reinterpret_cast<const char*>(bytes.data() + 20), length);
 }
 
-void checkGltfUris(const std::filesystem::path& file, const std::string& json) {
-  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object())
-    throw SceneError(file,
-                     "is not valid glTF JSON; check the file with the Khronos glTF validator");
+void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc) {
   for (const char* key : {"buffers", "images"}) {
     const auto list = doc.find(key);
     if (list == doc.end() || !list->is_array()) continue;
@@ -120,9 +121,11 @@ void checkGltfUris(const std::filesystem::path& file, const std::string& json) {
       const std::string value = uri->get<std::string>();
       const std::string problem = uriProblem(value);
       if (!problem.empty())
-        throw SceneError(file, std::string(key) + "[" + std::to_string(i) + "].uri '" +
-                                   (value.size() > 200 ? value.substr(0, 200) + "..." : value) +
-                                   "' " + problem);
+        throw SceneError(file, std::string(key) + "[" + std::to_string(i) + "].uri " +
+                                   nlohmann::json(value.size() > 200 ? value.substr(0, 200) + "..."
+                                                                     : value)
+                                       .dump(-1, ' ', true) +
+                                   " " + problem);
     }
   }
 }

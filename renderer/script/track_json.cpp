@@ -213,11 +213,11 @@ TrackFile parseJsonTrack(const std::string& text, const std::string& file) {
       line += text[i] == '\n';
     }
     throw TrackError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": not valid JSON (" + e.what() +
+                     ": not valid JSON (" + jsonErrorWithoutContent(e.what()) +
                      "); fix the syntax there (JSON has no NaN or Infinity: those are exporter "
                      "bugs)");
   } catch (const Json::exception& e) {  // e.g. a number overflowing double: 1e999
-    throw TrackError(file + ": not valid JSON (" + e.what() +
+    throw TrackError(file + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) +
                      "); JSON has no NaN or Infinity, those are exporter bugs");
   }
   if (!root.is_object()) throw TrackError(file + ": a track must be a JSON object {...}");

@@ -71,8 +71,8 @@ void fields(V& v, ShaderParam& p) {
           Meta{"the constant's name in the shader (layout(constant_id = N) const T name)",
                "renderer/user/user_interface.cpp"});
   v.field("value", p.value,
-          Meta{"its value: true or false (or 1 or 0) for a bool, a whole number for an int or "
-               "uint, a number for a float",
+          Meta{"its value (required): true or false (or 1 or 0) for a bool, a whole number for an "
+               "int (-2147483648 to 2147483647) or a uint (0 to 4294967295), a number for a float",
                "renderer/user/user_resolve.cpp"});
 }
 

@@ -18,6 +18,8 @@
 #include "core/input_file.h"
 #include "core/output_file.h"
 #include "core/sha256.h"
+#include "user/compile_sandbox.h"
+#include "user/shader_bounds.h"
 #include "user/user_capabilities.h"
 #include "vk/pipeline.h"
 
@@ -27,21 +29,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A user shader and its headers are small; the bound keeps a wrong path from reading a disk image.
-constexpr uint64_t kMaxUserShaderBytes = uint64_t(1) << 20;
-constexpr size_t kMaxIncludeDepth = 32;
 // Bumped when what this file passes to glslang changes, so older cache entries are ignored.
 constexpr const char* kCompilerTag = "taa-user 2 glslang 12 vulkan1.2 spv1.5";
 
-bool isInside(const fs::path& dir, const fs::path& file) {
-  if (dir.empty()) return false;
-  const auto rel = file.lexically_relative(dir);
-  return !rel.empty() && *rel.begin() != "..";
+fs::path absoluteNormal(const fs::path& p) {
+  std::error_code ec;
+  return fs::absolute(p, ec).lexically_normal();
 }
 
 std::string readShaderText(const fs::path& file, const std::string& what) {
   try {
-    return readInputFile(file, kMaxUserShaderBytes);
+    return readInputFile(file, kMaxShaderFileBytes);
   } catch (const InputFileError& e) {
     throw ShaderCompileError(what + ": " + e.what());
   }
@@ -73,37 +71,63 @@ class UserIncluder : public glslang::TShader::Includer {
 
  private:
   IncludeResult* resolve(const char* header, const char* includer, size_t depth, bool local) {
-    if (depth > kMaxIncludeDepth) {
-      problem_ = std::string(includer) + ": includes nest deeper than " +
-                 std::to_string(kMaxIncludeDepth) +
-                 " (a header including itself?); break the cycle";
-      return nullptr;
-    }
+    if (stopped_) return nullptr;  // a bound was reached: glslang's error recovery asks on
+    if (depth > kMaxIncludeDepth)
+      return stop(std::string(includer) + ": includes nest deeper than " +
+                  std::to_string(kMaxIncludeDepth) + " (a header including itself?); break the cycle");
+    if (++count_ > kMaxIncludes)
+      return stop(std::string(includer) + ": resolves more than " + std::to_string(kMaxIncludes) +
+                  " #include directives, counting repeats (a header including itself twice?); "
+                  "guard the header or include it fewer times");
     std::vector<fs::path> candidates;
     if (local) candidates.push_back(fs::path(includer).parent_path() / header);
     if (!headerDir_.empty()) candidates.push_back(headerDir_ / header);
+    const std::string what = std::string(includer) + ": #include \"" + header + "\"";
+    // Whether a path outside the folders exists is not the shader's business: the text of the
+    // path decides first, then its real path; both refusals read the same.
+    const std::string leaves = what + " leads outside the shader's folder; move the header under "
+                               "that folder";
     std::error_code ec;
     for (const auto& c : candidates) {
-      if (!fs::exists(c, ec)) continue;
-      const fs::path real = fs::canonical(c, ec);
-      if (ec) continue;
-      if (!isInside(rootReal(), real) && !isInside(headerReal(), real)) {
-        problem_ = std::string(includer) + ": #include \"" + header + "\" resolves to " +
-                   real.string() + ", outside the shader's folder " + rootReal().string() +
-                   "; move the header under that folder";
-        return nullptr;
+      const fs::path lexical = absoluteNormal(c);
+      if (!allowed(lexical)) return stop(leaves);
+      if (!fs::exists(fs::symlink_status(lexical, ec))) continue;
+      const fs::path real = followLinks(lexical);
+      if (real.empty() || !allowed(real)) return stop(leaves);
+      if (!fs::exists(real, ec)) continue;
+      std::string text;
+      try {
+        text = readShaderText(real, what);
+      } catch (const ShaderCompileError& e) {
+        return stop(e.what());
       }
-      auto* text = new std::string(
-          readShaderText(real, std::string(includer) + ": #include \"" + header + "\""));
+      bytes_ += text.size();
+      if (bytes_ > kMaxIncludedBytes)
+        return stop(what + ": the headers read add up to more than " +
+                    std::to_string(kMaxIncludedBytes >> 20) + " MiB, counting repeats");
+      auto* kept = new std::string(std::move(text));
       files_.push_back(real);
-      return new IncludeResult(real.string(), text->data(), text->size(), text);
+      return new IncludeResult(real.string(), kept->data(), kept->size(), kept);
     }
     // glslang asks the system paths after a failed local lookup: keep the first, sharper reason.
     if (!problem_.empty()) return nullptr;
-    problem_ = std::string(includer) + ": #include \"" + header + "\" not found beside it" +
-               (headerDir_.empty() ? "" : " nor in " + headerDir_.string()) +
+    problem_ = what + " not found beside it" +
+               (headerDir_.empty() ? "" : " nor in the installed headers") +
                "; check the name, or put the header in the shader's folder";
     return nullptr;
+  }
+
+  IncludeResult* stop(const std::string& why) {
+    if (problem_.empty() || !stopped_) problem_ = why;
+    stopped_ = true;
+    return nullptr;
+  }
+
+  // Inside the case's folder or the installed headers, by the path's text or its real path.
+  bool allowed(const fs::path& p) {
+    return isInsideFolder(absoluteNormal(root_), p) || isInsideFolder(rootReal(), p) ||
+           (!headerDir_.empty() && isInsideFolder(absoluteNormal(headerDir_), p)) ||
+           isInsideFolder(headerReal(), p);
   }
 
   const fs::path& rootReal() {
@@ -124,6 +148,9 @@ class UserIncluder : public glslang::TShader::Includer {
   fs::path root_, headerDir_, rootReal_, headerReal_;
   std::vector<fs::path> files_;
   std::string problem_;
+  bool stopped_ = false;
+  size_t count_ = 0;
+  uint64_t bytes_ = 0;
 };
 
 void initGlslangOnce() {
@@ -135,26 +162,58 @@ void initGlslangOnce() {
   (void)done;
 }
 
-// glslang's log, less its "ERROR: " prefixes and the trailing "N compilation errors" line,
-// so each line starts with the user's file and line.
-std::string cleanLog(const std::string& log) {
+// glslang's log, less its "ERROR: " prefixes, the trailing "N compilation errors" line and
+// lines containing `drop`, so each line starts with the user's file and line.
+std::string cleanLog(const std::string& log, const std::string& drop = "") {
   std::istringstream in(log);
   std::string line, out;
   while (std::getline(in, line)) {
     if (line.empty() || line.find("compilation errors.") != std::string::npos) continue;
+    if (!drop.empty() && line.find(drop) != std::string::npos) continue;
     if (line.rfind("ERROR: ", 0) == 0) line = line.substr(7);
     out += (out.empty() ? "" : "\n") + line;
   }
   return out;
 }
 
-// The text is preprocessed first (its #pragma taa_supports lines say what it declares), then
-// parsed and linked. HLSL takes glslang's HLSL front end, the entry point the options name
-// (renamed "main" in the SPIR-V) and spirv-opt's legalization, which Vulkan needs for
-// HLSL's textures passed to functions; GLSL is compiled as it always was.
-std::vector<uint32_t> runGlslang(const fs::path& source, const std::string& text,
-                                 UserIncluder& includer, const CompileOptions& o,
-                                 std::string& preprocessed) {
+struct GlslangOutput {
+  std::vector<uint32_t> spirv;
+  std::vector<fs::path> includes;
+  std::string preprocessed;  // its #pragma taa_supports lines say what the shader declares
+};
+
+void appendU32(std::string& out, uint32_t v) {
+  out.append(reinterpret_cast<const char*>(&v), 4);
+}
+
+void appendString(std::string& out, const std::string& v) {
+  appendU32(out, uint32_t(v.size()));
+  out += v;
+}
+
+uint32_t readU32(const std::string& in, size_t& at) {
+  uint32_t v = 0;
+  if (at + 4 > in.size()) throw ShaderCompileError("the compiler's child process sent a short reply");
+  std::memcpy(&v, in.data() + at, 4);
+  at += 4;
+  return v;
+}
+
+std::string readString(const std::string& in, size_t& at) {
+  const uint32_t len = readU32(in, at);
+  if (at + len > in.size()) throw ShaderCompileError("the compiler's child process sent a short reply");
+  std::string v = in.substr(at, len);
+  at += len;
+  return v;
+}
+
+// The compile itself, in the sandbox's child: preprocess, check the preprocessed text against
+// the bounds, parse, link, SPIR-V. Returns 'S', the included files, the preprocessed text and
+// the words, or 'E' and the message the user sees. HLSL takes glslang's HLSL front end, the
+// entry point the options name (renamed "main" in the SPIR-V) and spirv-opt's legalization,
+// which Vulkan needs for HLSL's textures passed to functions; GLSL is compiled unoptimised.
+std::string glslangInChild(const fs::path& source, const std::string& text, const fs::path& root,
+                           const fs::path& headerDir, const CompileOptions& o) {
   initGlslangOnce();
   const bool hlsl = o.language == ShaderLanguage::Hlsl;
   const std::string name = source.string();
@@ -180,36 +239,92 @@ std::vector<uint32_t> runGlslang(const fs::path& source, const std::string& text
   const auto messages =
       EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : EShMsgDefault));
   const int version = hlsl ? 100 : 450;
-  auto fail = [&](const UserIncluder& inc, const std::string& log) {
-    std::string msg = cleanLog(log);
-    if (!inc.problem().empty()) msg = inc.problem() + (msg.empty() ? "" : "\n" + msg);
-    throw ShaderCompileError(msg + "\n(fix the shader; docs/user-taa.md describes the interface)");
+  auto fail = [](const UserIncluder& includer, const std::string& log) {
+    // After the includer refused, glslang repeats "Could not process include directive" for
+    // every include it still meets: the includer's one reason says it.
+    std::string msg = cleanLog(log, includer.problem().empty() ? "" : "Could not process include");
+    if (!includer.problem().empty()) msg = includer.problem() + (msg.empty() ? "" : "\n" + msg);
+    return "E" + msg + "\n(fix the shader; docs/user-taa.md describes the interface)";
   };
+  std::string preprocessed;
   {
-    UserIncluder pre = includer.fresh();
+    // The preprocessor alone first: what the parser would recurse over is bounded before
+    // the parser sees it.
+    UserIncluder includer(root, headerDir);
     glslang::TShader shader(EShLangCompute);
     configure(shader);
-    if (!shader.preprocess(GetDefaultResources(), version, ENoProfile, false, false, messages,
-                           &preprocessed, pre))
-      fail(pre, shader.getInfoLog());
+    sandboxCpuBudget(kPreprocessCpuSeconds,
+                     "E" + name + ": its preprocessor ran more than " +
+                         std::to_string(kPreprocessCpuSeconds) +
+                         " s of CPU, the bound for macros and includes (a macro that expands "
+                         "itself many times over?); simplify the macros");
+    const bool preprocessedOk = shader.preprocess(GetDefaultResources(), version, ENoProfile, false,
+                                                  false, messages, &preprocessed, includer);
+    sandboxCpuBudget(0, "");
+    if (!preprocessedOk) return fail(includer, shader.getInfoLog());
+    if (preprocessed.size() > kMaxPreprocessedBytes)
+      return "E" + name + ": expands to " + std::to_string(preprocessed.size()) +
+             " bytes after macros and includes, over the bound of " +
+             std::to_string(kMaxPreprocessedBytes >> 20) + " MiB; a macro that expands itself?";
+    if (const std::string why = expressionDepthProblem(preprocessed, name); !why.empty())
+      return "E" + why;
   }
+  UserIncluder includer(root, headerDir);
   glslang::TShader shader(EShLangCompute);
   configure(shader);
   if (!shader.parse(GetDefaultResources(), version, false, messages, includer))
-    fail(includer, shader.getInfoLog());
+    return fail(includer, shader.getInfoLog());
   if (hlsl && shader.getIntermediate()->getNumEntryPoints() == 0)
-    throw ShaderCompileError(name + ": has no function " + o.entry +
-                             " to run (taa.shader_entry, default main); name the entry point, the "
-                             "function with [numthreads(X, Y, 1)]");
+    return "E" + name + ": has no function " + o.entry +
+           " to run (taa.shader_entry, default main); name the entry point, the function with "
+           "[numthreads(X, Y, 1)]";
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(messages)) fail(includer, program.getInfoLog());
+  if (!program.link(messages)) return fail(includer, program.getInfoLog());
   std::vector<unsigned int> words;
   glslang::SpvOptions options;
   options.generateDebugInfo = false;
   options.disableOptimizer = !hlsl;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), words, &options);
-  return {words.begin(), words.end()};
+  std::string out = "S";
+  appendU32(out, uint32_t(includer.files().size()));
+  for (const auto& f : includer.files()) {
+    appendU32(out, uint32_t(f.string().size()));
+    out += f.string();
+  }
+  out.append(reinterpret_cast<const char*>(words.data()), words.size() * 4);
+  return out;
+}
+
+// glslang in a child process under compileLimits(): a shader that would crash it, exhaust
+// memory or never finish is refused naming the bound, and the harness carries on.
+GlslangOutput runGlslang(const fs::path& source, const std::string& text, const fs::path& root,
+                         const fs::path& headerDir) {
+  const SandboxLimits limits = compileLimits();
+  const SandboxOutcome o =
+      runSandboxed([&] { return glslangInChild(source, text, root, headerDir); }, limits);
+  if (o.end == SandboxEnd::Unavailable)
+    throw EnvironmentError("cannot start the shader compiler's child process: " + o.detail);
+  if (o.end != SandboxEnd::Done || o.output.empty())
+    throw ShaderCompileError(
+        source.string() + ": compiling it took " + describeSandboxEnd(o, limits) +
+        ", past the bounds of one shader's compile (" + std::to_string(limits.cpuSeconds) +
+        " s of CPU, " + std::to_string(limits.memoryBytes >> 20) +
+        " MiB); simplify it (macros that expand into huge code, deep recursion of expressions)");
+  if (o.output[0] == 'E') throw ShaderCompileError(o.output.substr(1));
+  GlslangOutput out;
+  size_t at = 1;
+  const uint32_t count = readU32(o.output, at);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t len = readU32(o.output, at);
+    if (at + len > o.output.size())
+      throw ShaderCompileError("the compiler's child process sent a short reply");
+    out.includes.emplace_back(o.output.substr(at, len));
+    at += len;
+  }
+  out.spirv.resize((o.output.size() - at) / 4);
+  std::memcpy(out.spirv.data(), o.output.data() + at, out.spirv.size() * 4);
+  return out;
 }
 
 std::string fileSha(const fs::path& file) {
@@ -261,7 +376,7 @@ bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out,
   if (spvSha.empty()) return false;
   std::string bytes;
   try {
-    bytes = readInputFile(dir / (key + ".spv"), kMaxUserShaderBytes * 16);
+    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16);
   } catch (const InputFileError&) {
     return false;
   }
@@ -346,12 +461,11 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
     out.provenance = provenanceOf(key, "from the cache", false);
     return out;
   }
-  UserIncluder includer(o.root, headerDir);
-  std::string preprocessed;
   out = CompiledShader{};
-  out.spirv = runGlslang(source, text, includer, o, preprocessed);
-  out.includes = includer.files();
-  out.capabilities = declaredCapabilities(preprocessed, source.string());
+  GlslangOutput g = runGlslang(source, text, o.root, headerDir, o);
+  out.spirv = std::move(g.spirv);
+  out.includes = std::move(g.includes);
+  out.capabilities = declaredCapabilities(g.preprocessed, source.string());
   writeCache(cacheDir, key, out);
   out.provenance = provenanceOf(
       key, miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss,

@@ -4,7 +4,11 @@
 #include <map>
 #include <stdexcept>
 
+#include <optional>
+#include <string_view>
+
 #include "user/glsl_compiler.h"
+#include "user/shader_bounds.h"
 #include "vk/spirv_reflect.h"
 
 namespace taa::user {
@@ -19,10 +23,57 @@ static_assert(resolveInputBindingsValid({}, {kUserFrame, kUserOutput, kUserHisto
 
 // The SPIR-V opcodes and decorations read here (SPIR-V specification, section 3).
 constexpr uint32_t kUserOpName = 5, kUserOpTypeBool = 20, kUserOpTypeInt = 21,
-                   kUserOpTypeFloat = 22, kUserOpTypeImage = 25, kUserOpTypePointer = 32,
-                   kUserOpSpecTrue = 48, kUserOpSpecFalse = 49, kUserOpSpec = 50,
-                   kUserOpVariable = 59, kUserOpDecorate = 71;
+                   kUserOpTypeFloat = 22, kUserOpTypeImage = 25, kUserOpTypeSampledImage = 27,
+                   kUserOpTypePointer = 32, kUserOpSpecTrue = 48, kUserOpSpecFalse = 49,
+                   kUserOpSpec = 50, kUserOpVariable = 59, kUserOpDecorate = 71;
 constexpr uint32_t kUserDecoSpecId = 1, kUserDecoBinding = 33;
+constexpr uint32_t kUserDim2D = 1, kUserFormatRgba16f = 2;
+// taa_user.h: "N from 0 to 99".
+constexpr uint32_t kUserMaxConstantId = 99;
+
+// What taa_user.h declares at a binding of set 0, and so what the harness binds there: the
+// inputs' rows of resolve_inputs.h, then its own frame constants, output, histories and the
+// two samplers an HLSL resolve names.
+struct UserSlot {
+  const char* name;
+  bool sampled;           // an image it samples: a sampler2D (GLSL) or a Texture2D (HLSL)
+  VkDescriptorType type;  // otherwise the one descriptor type it declares
+  bool uintSamples;       // usampler2D (the ids); every other image holds floats
+};
+
+std::optional<UserSlot> userSlot(uint32_t binding) {
+  for (const ResolveInputInfo& i : kResolveInputs)
+    if (i.userBinding >= 0 && uint32_t(i.userBinding) == binding)
+      return UserSlot{i.userName, true, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, i.uintTexels};
+  constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                             sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             sampler = VK_DESCRIPTOR_TYPE_SAMPLER;
+  switch (binding) {
+    case kUserFrame:
+      return UserSlot{"taa_frame", false, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, false};
+    case kUserOutput:
+      return UserSlot{"taa_output", false, storage, false};
+    case kUserHistory0:
+      return UserSlot{"taa_history0", true, sampled, false};
+    case kUserHistory0Out:
+      return UserSlot{"taa_history0_out", false, storage, false};
+    case kUserHistory1:
+      return UserSlot{"taa_history1", true, sampled, false};
+    case kUserHistory1Out:
+      return UserSlot{"taa_history1_out", false, storage, false};
+    case kUserPointSampler:
+      return UserSlot{"taa_point_clamp", false, sampler, false};
+    case kUserLinearSampler:
+      return UserSlot{"taa_linear_clamp", false, sampler, false};
+    default:
+      return std::nullopt;
+  }
+}
+
+// sizeof(TaaUserFrame): its members are mat4s and 16-byte vectors (common/user_frame.h).
+#define TAA_USER_FRAME_MEMBER_BYTES(type, name, doc) +(std::string_view(#type) == "mat4" ? 64u : 16u)
+constexpr uint32_t kUserFrameBytes = 0 TAA_USER_FRAME(TAA_USER_FRAME_MEMBER_BYTES);
+#undef TAA_USER_FRAME_MEMBER_BYTES
 
 // SPIR-V image formats (section 3.11) a history target may declare.
 VkFormat userHistoryFormat(uint32_t spirvFormat) {
@@ -77,9 +128,97 @@ const UserParam* UserInterface::param(const std::string& name) const {
   return nullptr;
 }
 
+namespace {
+
+// The bindings and push constants against taa_user.h: whatever else a shader
+// declares, the harness would not bind, and Vulkan leaves the result undefined.
+void checkUserBindings(const vk::ShaderInterface& si, const std::string& name) {
+  auto refuse = [&](const std::string& why) {
+    throw ShaderCompileError(name + " " + why +
+                             "; a resolve may declare only what taa_user.h declares (include it "
+                             "and use its names)");
+  };
+  if (si.pushConstantBytes > 0)
+    refuse("declares a push-constant block (" + std::to_string(si.pushConstantBytes) +
+           " bytes), which taa_user.h does not have; use a specialization constant and "
+           "taa.shader_params");
+  for (const auto& b : si.bindings) {
+    const std::string at = "set " + std::to_string(b.set) + " binding " + std::to_string(b.binding);
+    const std::string what = std::string(vk::descriptorTypeName(b.type)) + " at " + at;
+    if (b.set != 0) refuse("declares a " + what + "; taa_user.h uses set 0 only");
+    const std::optional<UserSlot> slot = userSlot(b.binding);
+    if (!slot) refuse("declares a " + what + ", a binding taa_user.h does not declare");
+    const bool fits = slot->sampled ? b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ||
+                                          b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
+                                    : b.type == slot->type;
+    if (!fits)
+      refuse("declares a " + what + ", where taa_user.h declares " + slot->name + ", " +
+             (slot->sampled ? std::string("an image it samples (sampler2D or Texture2D)")
+                            : std::string("a ") + vk::descriptorTypeName(slot->type)));
+    if (b.count != 1)
+      refuse("declares an array of " + std::to_string(b.count) + " at " + at + ", where taa_user.h declares one " +
+             slot->name);
+    if (b.binding == kUserFrame && b.bytes > kUserFrameBytes)
+      refuse("declares a " + std::to_string(b.bytes) + "-byte uniform block at " + at +
+             ", larger than taa_user.h's TaaUserFrame (" + std::to_string(kUserFrameBytes) +
+             " bytes): it would read past the harness's buffer");
+  }
+}
+
+// The image types behind the bindings: 2D, single-sampled, not arrayed, float samples but for
+// the ids' uint, and taa_output's rgba16f. `defs` maps type ids to their operands.
+void checkUserImages(const std::map<uint32_t, std::vector<uint32_t>>& defs,
+                     const std::map<uint32_t, uint32_t>& types,
+                     const std::vector<std::pair<uint32_t, uint32_t>>& variables,
+                     const std::map<uint32_t, uint32_t>& bindings, const std::string& name) {
+  auto def = [&](uint32_t id) -> const std::vector<uint32_t>& {
+    static const std::vector<uint32_t> none;
+    const auto it = defs.find(id);
+    return it == defs.end() ? none : it->second;
+  };
+  auto typeOf = [&](uint32_t id) {
+    const auto it = types.find(id);
+    return it == types.end() ? 0u : it->second;
+  };
+  for (const auto& [pointer, id] : variables) {
+    const auto b = bindings.find(id);
+    if (b == bindings.end()) continue;
+    const std::optional<UserSlot> slot = userSlot(b->second);
+    const auto& ptr = def(pointer);
+    if (!slot || ptr.size() < 3) continue;
+    uint32_t imageId = ptr[2];
+    if (typeOf(imageId) == kUserOpTypeSampledImage && def(imageId).size() >= 2)
+      imageId = def(imageId)[1];
+    if (typeOf(imageId) != kUserOpTypeImage) continue;
+    const auto& image = def(imageId);
+    if (image.size() < 8) continue;
+    const std::string at = std::string(slot->name) + " (binding " + std::to_string(b->second) + ")";
+    auto refuse = [&](const std::string& why) {
+      throw ShaderCompileError(name + " declares " + at + " " + why +
+                               "; declare it as taa_user.h does (include the header)");
+    };
+    if (image[2] != kUserDim2D || image[4] != 0 || image[5] != 0)
+      refuse("as another image than a single-sampled, non-arrayed 2D one");
+    const auto& sampled = def(image[1]);
+    const bool isUint = typeOf(image[1]) == kUserOpTypeInt && sampled.size() >= 3 && sampled[2] == 0;
+    const bool isFloat = typeOf(image[1]) == kUserOpTypeFloat;
+    if (slot->uintSamples ? !isUint : !isFloat)
+      refuse(std::string("with ") + (isUint ? "uint" : isFloat ? "float" : "int") +
+             " samples, where the harness binds " + (slot->uintSamples ? "uint" : "float") +
+             " data (" + (slot->uintSamples ? "usampler2D" : "sampler2D or image2D") + ")");
+    if (b->second == kUserOutput && image[7] != kUserFormatRgba16f)
+      refuse("with another format than rgba16f, the format of the harness's output image");
+  }
+}
+
+}  // namespace
+
 UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::string& name) {
   // Descriptor types and presence come from the layer every pipeline uses.
   const vk::ShaderInterface si = vk::reflectSpirv(w, name);
+  checkUserBindings(si, name);
+  if (const std::string why = spirvMemoryProblem(w); !why.empty())
+    throw ShaderCompileError(name + ": " + why);
   auto has = [&](uint32_t b) { return si.find(0, b) != nullptr; };
   UserInterface u;
   if (!has(kUserOutput))
@@ -120,7 +259,8 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
     if (opcode == kUserOpDecorate && ops.size() >= 3 && ops[1] == kUserDecoBinding)
       bindings[ops[0]] = ops[2];
     if (opcode == kUserOpTypeBool || opcode == kUserOpTypeInt || opcode == kUserOpTypeFloat ||
-        opcode == kUserOpTypeImage || opcode == kUserOpTypePointer) {
+        opcode == kUserOpTypeImage || opcode == kUserOpTypeSampledImage ||
+        opcode == kUserOpTypePointer) {
       types[ops[0]] = opcode;
       defs[ops[0]] = ops;
     }
@@ -133,6 +273,8 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
     i += count;
   }
 
+  checkUserImages(defs, types, variables, bindings, name);
+
   for (const uint32_t id : specConstants) {
     const auto sid = specIds.find(id);
     if (sid == specIds.end()) continue;  // a constant derived from others, not settable
@@ -141,6 +283,10 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
       throw ShaderCompileError(
           name + ": specialization constant " + std::to_string(sid->second) +
           " has no name; declare it as `layout(constant_id = N) const T name = ...;`");
+    if (sid->second > kUserMaxConstantId)
+      throw ShaderCompileError(name + ": specialization constant " + n->second + " has constant_id " +
+                               std::to_string(sid->second) + "; taa_user.h allows 0 to " +
+                               std::to_string(kUserMaxConstantId));
     const auto& ops = defs[id];
     UserParam p;
     p.name = n->second;

@@ -182,13 +182,19 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
   return out;
 }
 
-vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u) {
-  vk::SpecConstants c;
+std::map<uint32_t, uint32_t> userSpecValues(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  std::map<uint32_t, uint32_t> out;
   for (const auto& sp : taa.shader_params)
     if (const user::UserParam* p = u.param(sp.name)) {
       uint32_t bits = 0;
-      if (userParamBits(p->type, sp.value, bits).empty()) c.set(p->specId, bits);
+      if (userParamBits(p->type, sp.value, bits).empty()) out[p->specId] = bits;
     }
+  return out;
+}
+
+vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  vk::SpecConstants c;
+  for (const auto& [id, bits] : userSpecValues(taa, u)) c.set(id, bits);
   return c;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "passes/resolve_stage.h"
@@ -37,6 +38,9 @@ user::ShaderLanguage userShaderLanguage(const spec::TaaSpec& taa);
 // taa.shader_params checked against the declaration: one message per problem (unknown name,
 // wrong type, set twice), each naming the key, empty when all are valid.
 std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user::UserInterface& u);
+
+// taa.shader_params as SpecId -> the constant's 32 bits (valid entries only).
+std::map<uint32_t, uint32_t> userSpecValues(const spec::TaaSpec& taa, const user::UserInterface& u);
 
 // The specialization constants taa.shader_params gives (validated beforehand).
 vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u);

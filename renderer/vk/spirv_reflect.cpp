@@ -67,8 +67,12 @@ struct Module {
   }
 };
 
-// Byte size of a type inside a push-constant block (std430 offsets come from the
-// Offset decorations; sizes of members from their types and strides).
+uint32_t saturated(uint64_t v) {
+  return v > UINT32_MAX ? UINT32_MAX : uint32_t(v);
+}
+
+// Byte size of a type inside a push-constant or buffer block (offsets come from the Offset
+// decorations; sizes of members from their types and strides), saturating at 2^32 - 1.
 uint32_t typeBytes(const Module& m, uint32_t typeId, uint32_t matrixStride = 0) {
   const Instruction& t = m.def(typeId);
   switch (t.opcode) {
@@ -78,10 +82,11 @@ uint32_t typeBytes(const Module& m, uint32_t typeId, uint32_t matrixStride = 0) 
     case op::TypeFloat:
       return m.operand(t, 1) / 8;
     case op::TypeVector:
-      return m.operand(t, 2) * typeBytes(m, m.operand(t, 1));
+      return saturated(uint64_t(m.operand(t, 2)) * typeBytes(m, m.operand(t, 1)));
     case op::TypeMatrix: {
       const uint32_t columns = m.operand(t, 2);
-      return columns * (matrixStride ? matrixStride : typeBytes(m, m.operand(t, 1)));
+      return saturated(uint64_t(columns) *
+                       (matrixStride ? matrixStride : typeBytes(m, m.operand(t, 1))));
     }
     case op::TypeArray: {
       const uint32_t length = m.constantValue(m.operand(t, 2));
@@ -89,7 +94,7 @@ uint32_t typeBytes(const Module& m, uint32_t typeId, uint32_t matrixStride = 0) 
       const uint32_t stride = d != m.decorations.end() && d->second.arrayStride
                                   ? d->second.arrayStride
                                   : typeBytes(m, m.operand(t, 1));
-      return length * stride;
+      return saturated(uint64_t(length) * stride);
     }
     case op::TypeStruct: {
       const auto offsets = m.memberOffsets.find(typeId);
@@ -104,12 +109,14 @@ uint32_t typeBytes(const Module& m, uint32_t typeId, uint32_t matrixStride = 0) 
             strides != m.memberMatrixStrides.end() && member < strides->second.size()
                 ? strides->second[member]
                 : 0;
-        end = std::max(end, offset + typeBytes(m, t.operands[k], stride));
+        end = std::max(end, saturated(uint64_t(offset) + typeBytes(m, t.operands[k], stride)));
       }
       return end;
     }
+    case op::TypeRuntimeArray:
+      return 0;  // a buffer's unsized last member: its size is the buffer's
     default:
-      m.fail("push-constant member of unsupported type (opcode " + std::to_string(t.opcode) + ")");
+      m.fail("block member of unsupported type (opcode " + std::to_string(t.opcode) + ")");
   }
 }
 
@@ -156,6 +163,7 @@ ReflectedBinding bindingOf(const Module& m, uint32_t pointee, uint32_t storage) 
         b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       else if (storage == kStorageUniform && block)
         b.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+      if (b.type != VK_DESCRIPTOR_TYPE_MAX_ENUM) b.bytes = typeBytes(m, typeId);
       break;
     default:
       break;

@@ -30,6 +30,7 @@ struct ReflectedBinding {
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
   uint32_t count = 1;  // array elements
   VkShaderStageFlags stages = 0;
+  uint32_t bytes = 0;  // uniform and storage buffers: the block's size (saturates at 2^32 - 1)
 };
 
 struct ShaderInterface {

@@ -85,7 +85,9 @@ TEST(CaseHostile, ReferencedFilesCannotLeaveTheFolderThroughLinks) {
   const std::string p1 =
       problems([&] { parseCase(track + R"(passwd.csv"}})", dir / "case/c.json"); });
   EXPECT_TRUE(has(p1, "c.json: camera.track: "));
-  EXPECT_TRUE(has(p1, "resolves to '/etc/passwd', outside"));
+  EXPECT_TRUE(has(p1, "leads outside"));
+  // Where the link points is not said (issue 26): only that it leaves the folder.
+  EXPECT_EQ(p1.find("/etc/passwd"), std::string::npos) << p1;
   EXPECT_EQ(p1.find("root:"), std::string::npos) << "the refused file's content is echoed:\n" << p1;
   EXPECT_TRUE(has(problems([&] { parseCase(track + R"(fifo.csv"}})", dir / "case/c.json"); }),
                   "fifo.csv: is a FIFO"));

@@ -12,6 +12,9 @@
 
 #include "case/case_error.h"
 #include "case/case_loader.h"
+#include "core/exr_codec.h"
+#include "core/image_io.h"
+#include "core/png_codec.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
@@ -59,6 +62,22 @@ inline void readGltf(const std::string& bytes) {
     s.models.push_back(scene::loadGltf(file, s));
     scene::poseModel(s, 0, 0.5);
   } catch (const scene::SceneError&) {
+  }
+}
+
+// The image codecs as `compare` and the golden reader use them: OpenEXR (channels by
+// name, then in the golden reader's order) or PNG, by the first bytes.
+inline void readImageBytes(const std::string& bytes) {
+  try {
+    if (exr::hasExrMagic(bytes)) {
+      const std::string layer;
+      (void)exr::decode(bytes, kMaxImageSamples, &layer);
+      (void)exr::decode(bytes, kMaxImageSamples);
+    } else {
+      (void)png::decode(bytes, kMaxImageSamples);
+    }
+  } catch (const exr::ExrError&) {
+  } catch (const png::PngError&) {
   }
 }
 

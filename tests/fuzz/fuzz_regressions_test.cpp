@@ -42,6 +42,9 @@ TEST(FuzzRegressions, TrackCorpus) {
 TEST(FuzzRegressions, GltfCorpus) {
   replay("gltf", &readGltf);
 }
+TEST(FuzzRegressions, ImageCorpus) {
+  replay("image", &readImageBytes);
+}
 
 }  // namespace
 }  // namespace taa::fuzz

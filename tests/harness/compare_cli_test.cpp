@@ -139,10 +139,50 @@ TEST_F(CompareCli, BadInputIsExitTwoWithTheReason) {
   expectBad(a + " " + a + " --metrics flip_mean,sharpness", "unknown metric 'sharpness'");
   expectBad(a + " " + a + " --max flip_mean", "METRIC=VALUE");
   expectBad(a + " " + a + " --max flip_mean=lots", "not a number");
-  expectBad(a + " " + a + " --flip-ppd -3", "--flip-ppd must be a positive number");
-  expectBad(a + " " + a + " --threads 0", "--threads must be");
+  // Every numeric option is range-checked before any work: a FLIP kernel for 1e6 pixels
+  // per degree ran until killed, 1e9 ended in bad_alloc.
+  expectBad(a + " " + a + " --flip-ppd -3", "--flip-ppd: -3 is outside [0.01, 1000]");
+  expectBad(a + " " + a + " --flip-ppd 1000000", "--flip-ppd: 1000000 is outside");
+  expectBad(a + " " + a + " --flip-ppd 1e9", "--flip-ppd: 1e9 is outside");
+  expectBad(a + " " + a + " --flip-ppd nan", "--flip-ppd: 'nan' is not a number");
+  expectBad(a + " " + a + " --threads 0", "--threads: 0 is outside");
+  expectBad(a + " " + a + " --threads 2.5", "--threads: '2.5' is not a whole number");
+  expectBad(a + " " + a + " --pixel-threshold -1", "--pixel-threshold: -1 is outside");
+  expectBad(a + " " + a + " --max ''", "--max");
+  expectBad(a + " " + a + " --layer ''", "--layer");
   writePng(path("small.png"), picture(32, 40, 1, 0.0f));
   expectBad(a + " " + path("small.png"), "same size");
+}
+
+TEST_F(CompareCli, FilesAreToldApartByContentAndExrChannelsByName) {
+  const fs::path corpus = fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/image";
+  const std::string bgr = (corpus / "exr_bgr.exr").string();
+  // R 0.75, G 0.5, B 0.25 written by OpenEXR in its own channel order equals the hand-made
+  // file stored B, G, R; an EXR named .png is still an EXR.
+  Image rgb(4, 4, 3);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      rgb.at(x, y, 0) = 0.75f;
+      rgb.at(x, y, 1) = 0.5f;
+      rgb.at(x, y, 2) = 0.25f;
+    }
+  writeExr(path("rgb.exr"), rgb);
+  for (const char* other : {"exr_bgr.exr", "exr_named_as.png"}) {
+    const auto r = compare(path("rgb.exr") + " " + (corpus / other).string() +
+                           " --metrics max_abs --max max_abs=0");
+    EXPECT_EQ(r.exitCode, 0) << other << "\n" << r.output;
+  }
+  auto refused = [&](const std::string& args, const std::string& says) {
+    const auto r = compare(args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << args << "\n" << r.output;
+  };
+  refused(bgr + " " + (corpus / "exr_layered.exr").string(), "choose a layer (diffuse)");
+  refused(bgr + " " + (corpus / "exr_xyz.exr").string(), "has no R channel");
+  refused(bgr + " " + bgr + " --layer diffuse", "has no diffuse.R channel");
+  const std::string layered = (corpus / "exr_layered.exr").string();
+  const auto same = compare(layered + " " + layered + " --layer diffuse --max max_abs=0");
+  EXPECT_EQ(same.exitCode, 0) << same.output;
 }
 
 }  // namespace

@@ -209,9 +209,9 @@ TEST(GltfHostile, TextureSourceAndSamplerOutOfRange) {
   Scene ok;
   EXPECT_NO_THROW(loadGltf(writeTextured(dir, png, view), ok));
   EXPECT_TRUE(refused(writeTextured(dir, png, view, R"({"source": 7})"),
-                      "textures[0].source 7 refers to a missing image"));
+                      "textures[0].source is 7, but images has 1 entry, index 0"));
   EXPECT_TRUE(refused(writeTextured(dir, png, view, R"({"source": 0, "sampler": 3})"),
-                      "textures[0].sampler 3 refers to a missing sampler"));
+                      "textures[0].sampler is 3, but there are no samplers"));
 }
 
 TEST(GltfHostile, DeepNodeChainLoadsWithoutRecursion) {

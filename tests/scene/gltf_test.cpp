@@ -3,6 +3,7 @@
 #include <fstream>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scene/gltf_checks.h"
 #include "scene/gltf_convert.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_error.h"
@@ -194,15 +195,16 @@ TEST(GltfRefuse, EachInputClassNamesFileAndUri) {
 
 TEST(GltfRefuse, UriRules) {
   const std::filesystem::path f = "x.gltf";
-  EXPECT_NO_THROW(
-      checkGltfUris(f, R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
-  EXPECT_NO_THROW(checkGltfUris(f, R"({"images":[{"uri":"textures/a%20b.png"}],"buffers":[{}]})"));
+  auto check = [&](const std::string& json) { checkGltfUris(f, parseGltfJson(f, json)); };
+  EXPECT_NO_THROW(check(R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
+  EXPECT_NO_THROW(check(R"({"images":[{"uri":"textures/a%20b.png"}],"buffers":[{}]})"));
   for (const char* bad : {"HTTPS://x/y.bin", "ftp:x", "C:/x.bin", "..\\\\x.bin", "a/../../b.bin",
-                          "%2e%2e/b.bin", "\\\\\\\\server\\\\share\\\\b.bin"}) {
+                          "%2e%2e/b.bin", "\\\\\\\\server\\\\share\\\\b.bin", "a.bin%00.png",
+                          "a%0a.bin"}) {
     const std::string json = std::string(R"({"images":[{"uri":")") + bad + R"("}]})";
-    EXPECT_THROW(checkGltfUris(f, json), SceneError) << bad;
+    EXPECT_THROW(check(json), SceneError) << bad;
   }
-  EXPECT_THROW(checkGltfUris(f, "{not json"), SceneError);
+  EXPECT_THROW(check("{not json"), SceneError);
 }
 
 TEST(GltfRefuse, SymlinkOutOfTheFolderIsRefusedByTheFileJail) {

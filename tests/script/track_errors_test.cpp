@@ -42,8 +42,7 @@ TEST(TrackErrors, NanAndInfinity) {
   // JSON has no NaN or Infinity; what exporters write instead is a syntax error there.
   EXPECT_TRUE(
       contains(jsonError(R"({"t": 0, "position": [0, 1e999, 0], "orientation": [0, 0, 0, 1]})"),
-               "t.json: not valid JSON ([json.exception.out_of_range.406] number "
-               "overflow parsing '1e999')"));
+               "t.json: not valid JSON (number overflow)"));
   EXPECT_TRUE(contains(jsonError(R"({"t": 0,
       "position": [0, NaN, 0], "orientation": [0, 0, 0, 1]})"),
                        "t.json:2:"));

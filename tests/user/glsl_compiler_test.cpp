@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/shader_folder.h"
 #include "user/user_interface.h"
 #include "user/user_resolve.h"
 #include "vk/spirv_reflect.h"
@@ -17,23 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class GlslCompilerTest : public ::testing::Test {
+class GlslCompilerTest : public test::ShaderFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(TAA_TEST_OUT) / "glsl_compiler" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "src");
-    options_.root = dir_ / "src";
-    options_.headerDir = user::userHeaderDir();  // the generated header, as a user has it
-    options_.cacheDir = dir_ / "cache";
-  }
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / "src" / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p;
-  }
   std::string compileError(const fs::path& file) {
     try {
       compileComputeShader(file, options_);
@@ -43,8 +29,6 @@ class GlslCompilerTest : public ::testing::Test {
     ADD_FAILURE() << file << " compiled";
     return {};
   }
-  fs::path dir_;
-  CompileOptions options_;
 };
 
 const char* kPassThrough = R"(#version 450

@@ -17,7 +17,7 @@ fs::path corpusFile(const std::string& name) {
   return fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/image" / name;
 }
 
-std::string refusal(const fs::path& file, const std::string& layer = "") {
+std::string imageRefusal(const fs::path& file, const std::string& layer = "") {
   try {
     (void)readImageByName(file, layer);
   } catch (const ImageIoError& e) {
@@ -39,7 +39,7 @@ TEST(ImageHostile, LengthFieldsPastTheBytesPresentAreRefusedBeforeDecoding) {
   };
   for (const auto& [name, says] : cases) {
     SCOPED_TRACE(name);
-    const std::string why = refusal(corpusFile(name));
+    const std::string why = imageRefusal(corpusFile(name));
     EXPECT_NE(why.find(name), std::string::npos) << why;
     EXPECT_NE(why.find(says), std::string::npos) << why;
     // The golden reader goes through the same checks.
@@ -57,17 +57,17 @@ TEST(ImageHostile, ExrChannelsAreChosenByNameNotByPosition) {
   EXPECT_EQ(bgr.image.at(1, 2, 2), 0.25f);
 
   // A layer's channels are only read when the layer is named.
-  EXPECT_NE(refusal(corpusFile("exr_layered.exr")).find("choose a layer (diffuse) with --layer"),
+  EXPECT_NE(imageRefusal(corpusFile("exr_layered.exr")).find("choose a layer (diffuse) with --layer"),
             std::string::npos);
   const ReadImage layer = readImageByName(corpusFile("exr_layered.exr"), "diffuse");
   ASSERT_EQ(layer.image.channels, 3);
   EXPECT_EQ(layer.image.at(0, 0, 0), 0.75f);
   EXPECT_EQ(layer.image.at(0, 0, 2), 0.25f);
-  EXPECT_NE(refusal(corpusFile("exr_bgr.exr"), "specular").find("has no specular.R channel"),
+  EXPECT_NE(imageRefusal(corpusFile("exr_bgr.exr"), "specular").find("has no specular.R channel"),
             std::string::npos);
 
   // X, Y, Z are not colours: refused, naming what the file has.
-  EXPECT_NE(refusal(corpusFile("exr_xyz.exr")).find("has no R channel (its channels: X, Y, Z)"),
+  EXPECT_NE(imageRefusal(corpusFile("exr_xyz.exr")).find("has no R channel (its channels: X, Y, Z)"),
             std::string::npos);
 }
 

@@ -20,5 +20,6 @@ int cmdSweep(const Args& args);
 int cmdScore(const Args& args);
 int cmdBake(const Args& args);
 int cmdCompare(const Args& args);
+int cmdCoverage(const Args& args);
 
 }  // namespace taa::cli

@@ -18,7 +18,9 @@ ROOT = ops.repo_root()
 # Unit tests per mutated folder: the suites of the matching tests/ folder (run first: cheap).
 UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
                   "harness/golden": ["tests/golden", "tests/harness"],
-                  "harness/invariants": ["tests/invariants"]}
+                  "harness/invariants": ["tests/invariants"],
+                  "harness/run": ["tests/harness", "tests/golden"],
+                  "harness/case": ["tests/case", "tests/audit"]}
 VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 

@@ -6,8 +6,6 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
-#include "core/input_file.h"
-#include "core/json_guard.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
@@ -25,22 +23,8 @@ const char* kBlessUsage =
     "  prints what changed against the old goldens, then replaces goldens/NAME/ atomically.";
 
 std::vector<std::string> failedCases(const fs::path& results) {
-  std::string text;
-  try {
-    text = readInputFile(results, kMaxTrackFileBytes);
-  } catch (const InputFileError& e) {
-    throw UsageError(std::string(e.what()) + "; pass the results.json of a previous run");
-  }
-  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
-    throw UsageError(results.string() + ": " + problem);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError(results.string() + ": not valid JSON (" + e.what() + ")");
-  }
   std::vector<std::string> files;
-  for (const auto& c : run::runResultsFromJson(j).cases)
+  for (const auto& c : readResultsFile(results, "pass the results.json of a previous run").cases)
     if (c.status != run::CaseStatus::Pass && c.status != run::CaseStatus::Error)
       files.push_back(c.file);
   return files;

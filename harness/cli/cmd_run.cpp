@@ -1,7 +1,9 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "case/case_loader.h"
 #include "cli/commands.h"
@@ -11,6 +13,7 @@
 #include "compare/metric_table.h"
 #include "compare/tolerance.h"
 #include "core/output_file.h"
+#include "golden/bless.h"
 #include "report/html_report.h"
 #include "report/junit.h"
 #include "run/console.h"
@@ -24,6 +27,7 @@ std::string runUsage() {
   return "taa-harness run CASE... [--out DIR] [--goldens DIR] [-j N] [--shard I/N] [--device NAME] "
          "[--validate]\n"
          "                        [--metric NAME --above X] [--fail-fast] [--no-reference-cache]\n"
+         "                        [--verdict-from RESULTS]\n"
          "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants "
          "and\n"
          "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
@@ -31,6 +35,9 @@ std::string runUsage() {
          "  core); the console lines and every output stay in case order, the same for any N.\n"
          "  A reference frame several cases (or the frames of a still scene) share is rendered once;\n"
          "  --no-reference-cache renders every one (the results are the same).\n"
+         "  --verdict-from RESULTS takes the cases' lines and verdict from RESULTS (an earlier run of\n"
+         "  this commit that holds every one of them, as ctest's shard runs do) instead of rendering;\n"
+         "  without such a file the cases run.\n"
          "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices;\n"
          "  `taa-harness merge` joins the shards' outputs.\n"
          "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
@@ -62,12 +69,39 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
     }
   return bad ? kRegression : kPass;
 }
+// --verdict-from RESULTS: when RESULTS (a run of the same commit, e.g. the shard ctest ran
+// earlier in the same session) holds every case of the batch from the same files with the same
+// inputs (case, scene and track bytes), their lines and verdict come from it instead of a
+// render. Empty when it does not: then the cases run.
+std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from) {
+  std::error_code ec;
+  if (!fs::is_regular_file(from, ec)) return std::nullopt;
+  const run::RunResults earlier = readResultsFile(from, "pass the results.json of an earlier run");
+  if (earlier.commit != golden::rendererCommit()) return std::nullopt;
+  std::vector<const run::CaseResult*> found;
+  for (const auto& c : batch.cases) {
+    const auto it = std::find_if(earlier.cases.begin(), earlier.cases.end(), [&](const auto& r) {
+      return r.name == c.spec.name && r.file == c.spec.file.string() && r.caseSha256 == c.sha256;
+    });
+    if (it == earlier.cases.end()) return std::nullopt;
+    found.push_back(&*it);
+  }
+  bool failed = false;
+  for (const auto* c : found) {
+    run::printCase(std::cout, *c);
+    failed |= run::caseFailed(*c);
+  }
+  std::cout << "verdict: from " << from.string() << " (a run of this commit; its report: "
+            << (from.parent_path() / "report.html").string() << ")\n";
+  return failed ? kRegression : kPass;
+}
 }  // namespace
 
 int cmdRun(const Args& args) {
   const auto a =
       parseArgs(args, {"--validate", "--fail-fast", "--no-reference-cache"},
-                {"--out", "--goldens", "--shard", "--device", "--metric", "--above", "--jobs"}, runUsage());
+                {"--out", "--goldens", "--shard", "--device", "--metric", "--above", "--jobs",
+                 "--verdict-from"}, runUsage());
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + runUsage());
   if (a.values.count("--metric") != a.values.count("--above"))
     throw UsageError(std::string("--metric and --above go together\nusage: ") + runUsage());
@@ -83,9 +117,11 @@ int cmdRun(const Args& args) {
   CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
   const fs::path out = a.value("--out", "out");
   for (const auto& c : batch.cases)
-    refuseOutputInGoldens(out, a.has("--goldens") ? fs::path(a.value("--goldens"))
+    refuseOutputInGoldens(out, a.values.count("--goldens") ? fs::path(a.value("--goldens"))
                                                   : run::defaultGoldensRoot(c.spec.file));
   createOutputDirectory(out);
+  if (a.values.count("--verdict-from"))
+    if (const auto verdict = earlierVerdict(batch, a.value("--verdict-from"))) return *verdict;
   const auto start = std::chrono::steady_clock::now();
   const CpuTimes cpuBefore = cpuTimes();
   BatchOptions options;

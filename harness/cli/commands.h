@@ -21,5 +21,6 @@ int cmdScore(const Args& args);
 int cmdBake(const Args& args);
 int cmdCompare(const Args& args);
 int cmdCoverage(const Args& args);
+int cmdMerge(const Args& args);
 
 }  // namespace taa::cli

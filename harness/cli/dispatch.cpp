@@ -31,6 +31,7 @@ const std::map<std::string, Command>& commands() {
       {"score", {cmdScore, "scorecard of your own resolve shader over the case library next to the built-in one"}},
       {"techniques", {cmdTechniques, "list every setting (--json for type, range, default, shader; --markdown for the docs table)"}},
       {"render", {cmdRender, "render a case headlessly: EXR + PNG per requested frame, sha256 per frame"}},
+      {"merge", {cmdMerge, "join the outputs of run --shard I/N into one results.json, junit.xml and report"}},
       {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},
       {"bless", {cmdBless, "write a case's goldens (atomic) with the reason, after its invariants pass"}},
       {"bake", {cmdBake, "write a case's camera and mover poses per frame as a track (replays bit for bit)"}},

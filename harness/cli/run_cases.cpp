@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <mutex>
 
@@ -16,9 +17,13 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/image_io.h"
+#include "core/input_file.h"
+#include "core/json_guard.h"
 #include "core/output_file.h"
+#include "core/sha256.h"
 #include "device.h"
 #include "device_error.h"
+#include "golden/bless.h"
 #include "golden/environment.h"
 #include "run/console.h"
 #include "run/ordered_run.h"
@@ -118,6 +123,7 @@ CaseSlot runOne(Device& device, const cases::LoadedCase& loaded, const run::RunO
   auto failWith = [&](const std::string& message) {
     result.name = loaded.spec.name;
     result.file = loaded.spec.file.string();
+    result.caseSha256 = loaded.sha256;
     result.status = run::CaseStatus::Error;
     result.message = message;
   };
@@ -155,6 +161,36 @@ CaseSlot runOne(Device& device, const cases::LoadedCase& loaded, const run::RunO
   return slot;
 }
 
+// Where a worker writes a case's images until the case's turn in case order comes: a case
+// that --fail-fast drops after it started (with -j N) then leaves nothing in OUT, as with -j 1.
+constexpr const char* kStagingFolder = ".taa-harness-in-progress";
+
+// Moves every file under `from` to the same place under `to`, replacing a file there (as a
+// case's writes into OUT/NAME/ replace an earlier run's), then removes `from`.
+void moveInto(const fs::path& from, const fs::path& to) {
+  if (!fs::exists(from)) return;
+  fs::create_directories(to);
+  for (const auto& e : fs::directory_iterator(from)) {
+    const fs::path target = to / e.path().filename();
+    if (e.is_directory() && !fs::is_symlink(e.path())) {
+      moveInto(e.path(), target);
+    } else {
+      if (fs::is_directory(target)) fs::remove_all(target);
+      fs::rename(e.path(), target);
+    }
+  }
+  fs::remove(from);
+}
+
+// Removes the staging folder however the batch ends (a stop, an exception).
+struct StagingFolder {
+  fs::path path;
+  ~StagingFolder() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
 }  // namespace
 
 bool runningInCi() {
@@ -191,16 +227,56 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
       problems.insert(problems.end(), e.problems().begin(), e.problems().end());
     }
   }
+  std::map<std::string, std::string> files;  // name -> the first file of that name
+  for (const auto& c : batch.cases) {
+    const auto [it, fresh] = files.emplace(c.spec.name, c.spec.file.string());
+    if (!fresh)
+      problems.push_back(c.spec.file.string() + ": case " + c.spec.name + " is also " + it->second +
+                         ": both would write their outputs to OUT/" + c.spec.name +
+                         "/; rename one file or run them separately");
+  }
   if (!problems.empty()) throw cases::CaseError(problems);
   if (batch.cases.empty()) throw UsageError("no case files found in the given paths");
+  Sha256 suite;
+  for (const auto& c : batch.cases) {
+    batch.suite.cases.push_back(c.spec.name);
+    for (const std::string* part : {&c.spec.name, &c.sha256}) suite.update(part->c_str(), part->size() + 1);
+  }
+  const auto digest = suite.finish();
+  batch.suite.sha256 = toHex(digest.data(), digest.size());
   if (!shard.empty()) {
     const auto [i, n] = parseShard(shard);
     CaseBatch mine;
+    mine.suite = batch.suite;
+    mine.suite.shardIndex = i;
+    mine.suite.shardCount = n;
     for (size_t k = 0; k < batch.cases.size(); ++k)
       if (int(k % size_t(n)) == i - 1) mine.cases.push_back(std::move(batch.cases[k]));
+    if (mine.cases.empty())
+      throw UsageError("--shard " + shard + ": shard " + std::to_string(i) + " of " + std::to_string(n) +
+                       " holds no case (the suite has " + std::to_string(batch.cases.size()) +
+                       "); use at most that many shards");
     return mine;
   }
   return batch;
+}
+
+run::RunResults readResultsFile(const fs::path& results, const std::string& fix) {
+  std::string text;
+  try {
+    text = readInputFile(results, kMaxTrackFileBytes);
+  } catch (const InputFileError& e) {
+    throw UsageError(std::string(e.what()) + "; " + fix);
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw UsageError(results.string() + ": " + problem);
+  try {
+    return run::runResultsFromJson(nlohmann::json::parse(text));
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(results.string() + ": not the results.json of a run (" + e.what() + "); " + fix);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(results.string() + ": " + e.what() + "; " + fix);
+  }
 }
 
 size_t parseJobs(const std::string& value) {
@@ -257,15 +333,23 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   out.results.device = devices[0]->identity().name;
   out.environment = golden::currentEnvironment(devices[0]->identity());
   out.results.fingerprint = out.environment.fingerprint();
+  out.results.commit = golden::rendererCommit();
+  out.results.suite = batch.suite;
   out.workers = workers;
   TerminalProgress progress(workers, count);
   ReferenceCache references;
   std::vector<CaseSlot> slots(count);
   bool regression = false, badInput = false;
+  StagingFolder staging;
+  if (!options.run.outDir.empty()) {
+    staging.path = options.run.outDir / kStagingFolder;
+    fs::remove_all(staging.path);  // a run killed before its end
+  }
   run::runOrdered(
       count, workers,
       [&](size_t w, size_t k) {
         run::RunOptions ro = options.run;
+        if (!staging.path.empty()) ro.outDir = staging.path;
         if (options.shareReferences) ro.references = &references;
         ro.progress = progress.forCase(w, batch.cases[k].spec.name);
         slots[k] = runOne(*devices[w], batch.cases[k], ro, keepOutputs);
@@ -276,11 +360,13 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
         regression |= slot.regression;
         badInput |= slot.badInput;
         progress.clear();
+        if (!staging.path.empty())
+          moveInto(staging.path / slot.result.name, options.run.outDir / slot.result.name);
         if (onCase) onCase(slot.result);
         if (keepOutputs) out.outputs[slot.result.name] = std::move(slot.outputs);
         out.results.cases.push_back(std::move(slot.result));
         if (options.failFast && (regression || badInput)) {
-          out.notRun = count - k - 1;
+          out.notRun = out.results.notRun = count - k - 1;
           return false;
         }
         return true;

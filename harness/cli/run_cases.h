@@ -17,10 +17,12 @@ namespace taa::cli {
 
 struct CaseBatch {
   std::vector<cases::LoadedCase> cases;
+  run::SuiteInfo suite;  // every case given, before --shard kept this share
 };
 
 // Loads every file (directories expand to their *.json), reports every problem of
 // every file together (CaseError, exit 2), then keeps shard I of N ("I/N", 1-based).
+// Two cases of one name are refused: both would write OUT/NAME/.
 CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& shard);
 
 // Whether CI=true (or 1, yes) is set: a case without goldens then fails instead of skipping.
@@ -56,6 +58,10 @@ struct BatchOutcome {
   size_t referencesRendered = 0, referencesReused = 0;
   std::map<std::string, std::map<int, Image>> outputs;  // when keepOutputs
 };
+
+// A results.json `run` wrote, read as an input (bounded, checked); UsageError (exit 2) naming
+// the file, with `fix` appended, when it cannot be read or is not results JSON.
+run::RunResults readResultsFile(const std::filesystem::path& results, const std::string& fix);
 
 // --jobs N (also -j N): at least 1; absent: 0, one worker per core.
 size_t parseJobs(const std::string& value);

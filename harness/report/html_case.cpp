@@ -109,9 +109,12 @@ std::string invariantsTable(const run::CaseResult& c) {
          (inv.passed ? "st-pass\">PASS" : "st-fail\">FAIL") + "</span></td><td class=\"mono\">" +
          escapeMarkup(inv.name) + "</td><td>" + escapeMarkup(inv.detail) +
          "</td><td class=\"mono\">";
-    for (size_t i = 0; i < inv.values.size(); ++i)
-      s += (i ? "<br>" : "") + escapeMarkup(inv.values[i].first) + " = " +
-           num(inv.values[i].second, 6);
+    // By name, as results.json keeps them: a report written from results read back (merge)
+    // lists them as the run's own report does.
+    auto values = inv.values;
+    std::sort(values.begin(), values.end());
+    for (size_t i = 0; i < values.size(); ++i)
+      s += (i ? "<br>" : "") + escapeMarkup(values[i].first) + " = " + num(values[i].second, 6);
     s += "</td></tr>\n";
   }
   return s + "</table>\n";

@@ -112,6 +112,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   CaseResult result;
   result.name = spec.name;
   result.file = spec.file.string();
+  result.caseSha256 = loaded.sha256;
   result.description = spec.description;
   result.status = CaseStatus::Pass;
   const auto env = golden::currentEnvironment(device.identity());

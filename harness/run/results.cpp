@@ -74,10 +74,19 @@ ImageMetrics metricsFrom(const nlohmann::json& j) {
 }  // namespace
 
 nlohmann::json toJson(const RunResults& r) {
-  nlohmann::json out = {{"device", r.device}, {"fingerprint", r.fingerprint}, {"cases", nlohmann::json::array()}};
+  nlohmann::json out = {{"device", r.device},
+                        {"fingerprint", r.fingerprint},
+                        {"commit", r.commit},
+                        {"suite",
+                         {{"cases", r.suite.cases},
+                          {"sha256", r.suite.sha256},
+                          {"shard", {r.suite.shardIndex, r.suite.shardCount}}}},
+                        {"not_run", r.notRun},
+                        {"cases", nlohmann::json::array()}};
   for (const auto& c : r.cases) {
     nlohmann::json jc = {{"name", c.name},
                          {"file", c.file},
+                         {"case_sha256", c.caseSha256},
                          {"description", c.description},
                          {"status", toString(c.status)},
                          {"message", c.message},
@@ -147,10 +156,23 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
   RunResults r;
   r.device = j.value("device", "");
   r.fingerprint = j.value("fingerprint", "");
+  r.commit = j.value("commit", "");
+  r.notRun = j.value("not_run", size_t(0));
+  if (j.contains("suite") && j["suite"].is_object()) {
+    const auto& js = j["suite"];
+    r.suite.cases = js.value("cases", std::vector<std::string>{});
+    r.suite.sha256 = js.value("sha256", "");
+    const auto shard = js.value("shard", std::vector<int>{1, 1});
+    if (shard.size() == 2) {
+      r.suite.shardIndex = shard[0];
+      r.suite.shardCount = shard[1];
+    }
+  }
   for (const auto& jc : j.value("cases", nlohmann::json::array())) {
     CaseResult c;
     c.name = jc.value("name", "");
     c.file = jc.value("file", "");
+    c.caseSha256 = jc.value("case_sha256", "");
     c.description = jc.value("description", "");
     c.status = fromString<CaseStatus>(jc.value("status", "error"), {CaseStatus::Pass, CaseStatus::Fail, CaseStatus::Stale,
                                                                      CaseStatus::NoGolden, CaseStatus::Error});

@@ -85,6 +85,7 @@ struct PassTiming {
 struct CaseResult {
   std::string name;
   std::string file;
+  std::string caseSha256;     // of the case's inputs (cases::LoadedCase::sha256)
   std::string description;
   CaseStatus status = CaseStatus::Error;
   std::string message;        // error text, or the stale/no-golden explanation
@@ -117,9 +118,21 @@ struct CaseResult {
   int framesRendered = 0;             // every replay's frames (repeat, report.ab); not in JSON
 };
 
+// The cases a run was asked for before --shard kept its share: what `merge` checks shards
+// against (the same suite, every shard present once).
+struct SuiteInfo {
+  std::vector<std::string> cases;  // every case name, in case order
+  std::string sha256;              // of every case's name and inputs (files, scenes, tracks)
+  int shardIndex = 1;              // --shard I/N; 1/1 without
+  int shardCount = 1;
+};
+
 struct RunResults {
   std::string device;
   std::string fingerprint;
+  std::string commit;  // the harness's source commit (golden::rendererCommit)
+  SuiteInfo suite;
+  size_t notRun = 0;   // cases --fail-fast left out after the first failure
   std::vector<CaseResult> cases;
 };
 

@@ -1,0 +1,30 @@
+// Joining the outputs of `run --shard I/N` into the results of one run: the cases of every
+// shard in case order, as the unsharded run would have listed them. Shards must come from one
+// commit, one environment and one case set, each present once and run to the end.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "run/results.h"
+
+namespace taa::run {
+
+// Why shards cannot be merged, naming the shard folders and the fix.
+class MergeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ShardOutput {
+  std::filesystem::path dir;  // the shard's --out folder
+  RunResults results;         // its results.json
+};
+
+// The shards' cases in case order, with the suite's record of an unsharded run (shard 1/1).
+// Throws MergeError when the shards differ in commit, environment or case set, when a shard
+// is given twice, stopped early (--fail-fast) or missing.
+RunResults mergeShards(const std::vector<ShardOutput>& shards);
+
+}  // namespace taa::run

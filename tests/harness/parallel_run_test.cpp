@@ -1,0 +1,241 @@
+// `run -j N` and `merge`: whatever the worker count or the sharding, every output that is not a
+// timing is the same bytes as one worker's unsharded run: console lines, results.json, JUnit,
+// the report and the images.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "harness/cli_fixture.h"
+#include "report/html_report.h"
+#include "run/results.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+using test::HarnessCli;
+
+// Repo cases of different kinds: a reference two of them share (clamp_rgb and
+// velocity_longest3x3), a still scene, a cut, report.ab, TSCMAA stereo, MSAA-free fast ones.
+const char* kRepoCases[] = {"clamp_rgb", "jitter_legacy2", "velocity_longest3x3", "camera_cut",
+                            "alpha_low_static", "report_ab_zoom", "tscmaa_stereo", "history_bilinear"};
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// What a run wrote, less what measures time: per-case seconds, GPU milliseconds and the pass
+// timings (JSON), the JUnit time attributes, and the console's summary times and run line.
+struct RunOutput {
+  std::string console, results, junit, report;
+  std::vector<std::pair<std::string, std::string>> images;  // relative path, bytes
+};
+
+nlohmann::json withoutTimings(nlohmann::json j) {
+  for (auto& c : j["cases"])
+    for (const char* k : {"seconds", "frame_ms", "timings"}) c.erase(k);
+  return j;
+}
+
+RunOutput readRun(const fs::path& dir, const std::string& console) {
+  RunOutput o;
+  std::istringstream lines(console);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("run: ", 0) == 0 || line.rfind("merge: ", 0) == 0 || line.rfind("report: ", 0) == 0)
+      continue;
+    o.console += std::regex_replace(line, std::regex("; [0-9.]+ s"), "; T s") + "\n";
+  }
+  const auto results = nlohmann::json::parse(readFile(dir / "results.json"));
+  o.results = withoutTimings(results).dump(1);
+  o.junit = std::regex_replace(readFile(dir / "junit.xml"), std::regex(" time=\"[0-9.]+\""), "");
+  // The report is a function of the results: the written one is the results' rendering, and
+  // with the timings zeroed two runs' renderings must agree.
+  auto r = run::runResultsFromJson(results);
+  EXPECT_EQ(readFile(dir / "report.html"), report::renderHtmlReport(r, dir)) << dir;
+  for (auto& c : r.cases) {
+    c.seconds = 0.0;
+    c.frameMs.clear();
+    c.timings.clear();
+  }
+  o.report = report::renderHtmlReport(r, dir);
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const auto rel = fs::relative(e.path(), dir).string();
+    if (e.is_regular_file() && rel.find('/') != std::string::npos)
+      o.images.emplace_back(rel, readFile(e.path()));
+  }
+  std::sort(o.images.begin(), o.images.end());
+  return o;
+}
+
+void expectSame(const RunOutput& a, const RunOutput& b, const std::string& what) {
+  EXPECT_EQ(a.console, b.console) << what;
+  EXPECT_EQ(a.results, b.results) << what;
+  EXPECT_EQ(a.junit, b.junit) << what;
+  EXPECT_EQ(a.report, b.report) << what;
+  ASSERT_EQ(a.images.size(), b.images.size()) << what;
+  for (size_t i = 0; i < a.images.size(); ++i) {
+    EXPECT_EQ(a.images[i].first, b.images[i].first) << what;
+    EXPECT_TRUE(a.images[i].second == b.images[i].second) << what << ": " << a.images[i].first;
+  }
+}
+
+class ParallelRun : public HarnessCli {
+ protected:
+  std::string repoCases() const {
+    std::string s;
+    for (const char* c : kRepoCases) s += fs::path(TAA_SOURCE_DIR).append("cases").append(std::string(c) + ".json").string() + " ";
+    return s + "--goldens " + (fs::path(TAA_SOURCE_DIR) / "goldens").string() + " ";
+  }
+  RunOutput runInto(const std::string& name, const std::string& args, int expectExit = 0) {
+    const auto r = harness("run " + args + " --out " + (root_ / name).string());
+    EXPECT_EQ(r.exitCode, expectExit) << r.output;
+    return readRun(root_ / name, r.output);
+  }
+};
+
+TEST_F(ParallelRun, EveryOutputIsTheSameForAnyWorkerCount) {
+  const RunOutput one = runInto("j1", repoCases() + "-j 1");
+  EXPECT_NE(one.console.find("PASS clamp_rgb invariant no_ghosting"), std::string::npos) << one.console;
+  expectSame(one, runInto("j3", repoCases() + "-j3"), "-j 3 against -j 1");
+  // The reference cache changes what is rendered, never a result.
+  expectSame(one, runInto("nocache", repoCases() + "-j 2 --no-reference-cache"), "without the reference cache");
+}
+
+TEST_F(ParallelRun, FailFastStopsAtTheSameCaseForAnyWorkerCount) {
+  // a_small passes, b_strict fails (energy with epsilon 0); c_small, d_small and the fixture's
+  // small come after it in case order, and with four workers some of them have started.
+  writeCase("a_small", test::kSmallCase);
+  writeCase("b_strict", R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 0}}})");
+  writeCase("c_small", test::kSmallCase);
+  writeCase("d_small", test::kSmallCase);
+  const std::string cases = (root_ / "cases").string() + " --fail-fast ";
+  const RunOutput one = runInto("ff1", cases + "-j 1", 1);
+  const auto listed = nlohmann::json::parse(one.results);
+  ASSERT_EQ(listed["cases"].size(), 2u);  // a_small, b_strict, then stop
+  EXPECT_EQ(listed["cases"][1]["name"], "b_strict");
+  EXPECT_EQ(listed["not_run"], 3);
+  expectSame(one, runInto("ff4", cases + "-j 4", 1), "--fail-fast -j 4 against -j 1");
+}
+
+TEST_F(ParallelRun, BadJobCountsAreRefused) {
+  for (const char* bad : {"0", "x", "2x", "-1"}) {
+    const auto r = run("small", std::string("--jobs ") + bad);
+    EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.output;
+    EXPECT_NE(r.output.find("--jobs"), std::string::npos) << r.output;
+  }
+}
+
+// ctest's case.NAME after its shard (tests/CMakeLists.txt): the verdict is the shard's only
+// when the shard ran this commit on the same case inputs; otherwise the case renders.
+TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
+  writeCase("b_strict", R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 0}}})");
+  const auto shard = harness("run " + (root_ / "cases").string() + " -j 2 --out " + (root_ / "shard").string());
+  ASSERT_EQ(shard.exitCode, 1) << shard.output;
+  const std::string from = " --verdict-from " + (root_ / "shard" / "results.json").string();
+  auto lineOf = [](const std::string& output, const std::string& name) {
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);)
+      if (line.find(" " + name) != std::string::npos && line.rfind("run: ", 0) != 0) return line;
+    return std::string();
+  };
+  for (const auto& [name, exitCode] : {std::pair<std::string, int>{"small", 0}, {"b_strict", 1}}) {
+    const auto r = run(name, from);
+    EXPECT_EQ(r.exitCode, exitCode) << r.output;
+    EXPECT_NE(r.output.find("verdict: from"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("run: "), std::string::npos) << r.output;  // nothing rendered
+    EXPECT_EQ(lineOf(r.output, name), lineOf(shard.output, name)) << r.output;
+  }
+  auto rendered = [&](const std::string& name, const std::string& why) {
+    const auto r = run(name, from);
+    EXPECT_EQ(r.output.find("verdict: from"), std::string::npos) << why << "\n" << r.output;
+    EXPECT_NE(r.output.find("run: "), std::string::npos) << why << "\n" << r.output;
+    return r;
+  };
+  // The case a shard never ran, and the same name with other inputs, render.
+  writeCase("e_other", test::kSmallCase);
+  rendered("e_other", "a case the earlier run did not hold");
+  writeCase("b_strict", R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"]}})");
+  EXPECT_EQ(rendered("b_strict", "the case file changed since").exitCode, 0);
+  // Another commit's results, or none, render too; a file that is not results is refused.
+  const fs::path results = root_ / "shard" / "results.json";
+  auto j = nlohmann::json::parse(readFile(results));
+  j["commit"] = "0123456789abcdef";
+  std::ofstream(results) << j.dump(1);
+  rendered("small", "an earlier run of another commit");
+  fs::remove(results);
+  rendered("small", "no earlier run");
+  std::ofstream(results) << "[1, 2";
+  const auto bad = run("small", from);
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("results.json"), std::string::npos) << bad.output;
+}
+
+class Merge : public ParallelRun {
+ protected:
+  test::ProcessResult merge(const std::string& dirs) {
+    return harness("merge " + dirs + " --out " + (root_ / "merged").string());
+  }
+  std::string shard(int i) const { return (root_ / ("shard" + std::to_string(i))).string(); }
+  void runShards() {
+    for (int i = 1; i <= 3; ++i)
+      runInto("shard" + std::to_string(i), repoCases() + "--shard " + std::to_string(i) + "/3");
+  }
+  void editResults(int i, const std::function<void(nlohmann::json&)>& edit) {
+    const fs::path p = fs::path(shard(i)) / "results.json";
+    auto j = nlohmann::json::parse(readFile(p));
+    edit(j);
+    std::ofstream(p) << j.dump(1);
+  }
+};
+
+TEST_F(Merge, ThreeShardsMergeIntoTheUnshardedRun) {
+  const RunOutput whole = runInto("whole", repoCases() + "-j 2");
+  runShards();
+  const auto r = merge(shard(2) + " " + shard(3) + " " + shard(1));  // any order
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  expectSame(whole, readRun(root_ / "merged", r.output), "three shards merged");
+}
+
+TEST_F(Merge, RefusesShardsThatDoNotMakeOneRun) {
+  runShards();
+  auto refused = [&](const std::string& dirs, const std::string& why) {
+    const auto r = merge(dirs);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+  };
+  refused(shard(1) + " " + shard(3), "shard 2/3 is missing (its cases: jitter_legacy2, alpha_low_static, history_bilinear)");
+  refused(shard(1) + " " + shard(2) + " " + shard(2) + " " + shard(3), "are both shard 2/3");
+  refused((root_ / "nowhere").string(), "nowhere/results.json");
+  // A shard of another case set: the same cases less one.
+  harness("run " + repoCases() + " --shard 2/3 --out " + (root_ / "other").string() + " " +
+          (fs::path(TAA_SOURCE_DIR) / "cases" / "fxaa_only.json").string());
+  refused(shard(1) + " " + (root_ / "other").string() + " " + shard(3), "ran another case set");
+  editResults(2, [](auto& j) { j["commit"] = "0123456789abcdef"; });
+  refused(shard(1) + " " + shard(2) + " " + shard(3), "was run at commit 0123456789abcdef");
+  editResults(2, [&](auto& j) {
+    j["commit"] = nlohmann::json::parse(readFile(fs::path(shard(1)) / "results.json"))["commit"];
+    j["fingerprint"] = "llvmpipe (LLVM 15.0.6, 128 bits) | Mesa | vulkan 1.3 | override:sse4.1";
+  });
+  refused(shard(1) + " " + shard(2) + " " + shard(3), "merge shards of one driver and CPU level");
+  editResults(2, [&](auto& j) {
+    j["fingerprint"] = nlohmann::json::parse(readFile(fs::path(shard(1)) / "results.json"))["fingerprint"];
+    j["not_run"] = 1;
+  });
+  refused(shard(1) + " " + shard(2) + " " + shard(3), "stopped at its first failure (--fail-fast)");
+  EXPECT_FALSE(fs::exists(root_ / "merged" / "results.json"));  // nothing written when refused
+}
+
+}  // namespace
+}  // namespace taa

@@ -78,7 +78,8 @@ def main():
     p.add_argument("--seed", type=int, default=12, help="sample seed (default 12)")
     p.add_argument("--harness-share", type=float, default=0.3,
                    help="share of the sample from the harness's comparison code (default 0.3)")
-    p.add_argument("--jobs", type=int, default=1, help="parallel `run` shards per mutant")
+    p.add_argument("--jobs", type=int, default=2,
+                   help="workers of each mutant's `taa-harness run -j N` (default 2)")
     p.add_argument("--cases", default=str(ROOT / "cases"), help="case folder (default cases/)")
     p.add_argument("--out", default=str(ROOT / "out" / "mutate"), help="report folder")
     p.add_argument("--fresh-baseline", action="store_true", help="rerun the unmutated suite")

@@ -16,7 +16,9 @@ from pathlib import Path
 SHADER_GLOBS = ["shaders/**/*.comp", "shaders/**/*.glsl", "shaders/**/*.frag",
                 "shaders/**/*.vert", "shaders/common/shared.h"]
 HARNESS_GLOBS = ["harness/compare/metrics.cpp", "harness/compare/tolerance.cpp",
-                 "harness/compare/flip*.cpp", "harness/golden/*.cpp", "harness/invariants/*.cpp"]
+                 "harness/compare/flip*.cpp", "harness/golden/*.cpp", "harness/invariants/*.cpp",
+                 "harness/run/golden_check.cpp", "harness/run/invariant_run.cpp",
+                 "harness/case/case_validate.cpp", "harness/case/validate_*.cpp"]
 
 # Binary operators are matched with a space on each side (clang-format's layout), which
 # keeps templates (vector<int>), shifts, arrows and unary minus out.

@@ -7,6 +7,7 @@ import os
 import re
 import shutil
 import signal
+import sys
 import subprocess
 import time
 from pathlib import Path
@@ -17,7 +18,9 @@ ROOT = ops.repo_root()
 # Unit tests per mutated folder: the suites of the matching tests/ folder (run first: cheap).
 UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
                   "harness/golden": ["tests/golden", "tests/harness"],
-                  "harness/invariants": ["tests/invariants"]}
+                  "harness/invariants": ["tests/invariants"],
+                  "harness/run": ["tests/harness", "tests/golden"],
+                  "harness/case": ["tests/case", "tests/audit"]}
 VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 
@@ -67,13 +70,12 @@ def strip_volatile(value):
 
 def case_outputs(run_dir):
     """name -> the case's results without timings and with the output folder written as <out>
-    (frame hashes, status, metrics, invariants), from every shard of one run."""
-    out = {}
-    for f in sorted(run_dir.glob("shard*/results.json")):
-        text = re.sub(re.escape(str(run_dir)) + r"/shard\d+", "<out>", f.read_text())
-        for c in json.loads(text).get("cases", []):
-            out[c["name"]] = strip_volatile(c)
-    return out
+    (frame hashes, status, metrics, invariants), from one run's results.json."""
+    f = run_dir / "results.json"
+    if not f.exists():
+        return {}
+    text = f.read_text().replace(str(run_dir), "<out>")
+    return {c["name"]: strip_volatile(c) for c in json.loads(text).get("cases", [])}
 
 
 class Runner:
@@ -92,44 +94,33 @@ class Runner:
                                   stderr=subprocess.STDOUT).returncode == 0
 
     def run_cases(self, ordered, out_dir, fail_fast, timeout):
-        """Runs the cases in --jobs shards; with fail_fast the first failing shard stops all."""
+        """Runs the cases in one `taa-harness run -j N` (N = --jobs): N workers, each on its
+        own device, the results in case order; with fail_fast the first failing case stops
+        the run."""
         shutil.rmtree(out_dir, ignore_errors=True)
+        out_dir.mkdir(parents=True)
         jobs = max(1, min(self.args.jobs, len(ordered)))
-        procs = []
-        for j in range(jobs):
-            shard_dir = out_dir / f"shard{j}"
-            shard_dir.mkdir(parents=True)
-            cmd = [str(self.harness), "run", *map(str, ordered[j::jobs]), "--out", str(shard_dir)]
-            if fail_fast:
-                cmd.append("--fail-fast")
-            log_f = open(shard_dir / "run.log", "w")
-            procs.append((subprocess.Popen(cmd, stdout=log_f, stderr=subprocess.STDOUT,
-                                           env=self.env, start_new_session=True), log_f))
-        deadline, codes = time.monotonic() + timeout, [None] * jobs
-        try:
-            while any(c is None for c in codes):
-                for j, (p, _) in enumerate(procs):
-                    if codes[j] is None:
-                        codes[j] = p.poll()
-                if fail_fast and any(c not in (None, 0) for c in codes):
-                    break
-                if time.monotonic() > deadline:
-                    return "timeout", out_dir
-                time.sleep(0.5)
-        finally:
-            for p, log_f in procs:
-                if p.poll() is None:
-                    os.killpg(p.pid, signal.SIGTERM)
-                    p.wait()
-                log_f.close()
-        bad = [c for c in codes if c not in (None, 0)]
-        return (bad[0] if bad else 0), out_dir
+        cmd = [str(self.harness), "run", *map(str, ordered), "-j", str(jobs), "--out", str(out_dir)]
+        if fail_fast:
+            cmd.append("--fail-fast")
+        with open(out_dir / "run.log", "w") as log_f:
+            proc = subprocess.Popen(cmd, stdout=log_f, stderr=subprocess.STDOUT, env=self.env,
+                                    start_new_session=True)
+            try:
+                rc = proc.wait(timeout=timeout)
+            except subprocess.TimeoutExpired:
+                return "timeout", out_dir
+            finally:
+                if proc.poll() is None:
+                    os.killpg(proc.pid, signal.SIGTERM)
+                    proc.wait()
+        return rc, out_dir
 
     def baseline(self):
         """The unmutated suite's outputs, and its cases ordered fastest first (so that
         fail-fast meets a cheap failing case early)."""
         base_dir = self.out / "baseline"
-        results = sorted(base_dir.glob("shard*/results.json"))
+        results = sorted(base_dir.glob("results.json"))
         if not results or self.args.fresh_baseline:
             log("baseline: building and running the unmutated suite")
             if not self.ninja(["taa-harness"], self.out / "baseline-build.log"):
@@ -139,7 +130,7 @@ class Runner:
             (self.out / "baseline-seconds").write_text(f"{time.monotonic() - start:.1f}\n")
             if rc != 0:
                 sys.exit(f"mutate: the unmutated suite fails (exit {rc}, see {base_dir}): fix that first")
-            results = sorted(base_dir.glob("shard*/results.json"))
+            results = sorted(base_dir.glob("results.json"))
         outputs = case_outputs(base_dir)
         seconds = {}
         for f in results:
@@ -246,12 +237,8 @@ class Runner:
         if rc == "timeout":
             return "caught", "the suite timed out (a hang)"
         if rc != 0:
-            first = ""
-            for log_file in sorted(run_dir.glob("shard*/run.log")):
-                for line in log_file.read_text().splitlines():
-                    if line.startswith(("FAIL ", "ERROR ")):
-                        first = line[:160]
-                        break
+            first = next((line[:160] for line in (run_dir / "run.log").read_text().splitlines()
+                          if line.startswith(("FAIL ", "ERROR "))), "")
             return "caught", f"run exit {rc}" + (f": {first}" if first else "")
         if mutant.kind == "shader" and self.tests.exists():
             # The cases passed: the GPU unit tests of the mutated pass get their say (they

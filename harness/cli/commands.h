@@ -20,6 +20,7 @@ int cmdSweep(const Args& args);
 int cmdScore(const Args& args);
 int cmdBake(const Args& args);
 int cmdCompare(const Args& args);
+int cmdCoverage(const Args& args);
 int cmdMerge(const Args& args);
 
 }  // namespace taa::cli

@@ -29,6 +29,7 @@ const std::map<std::string, Command>& commands() {
       {"run", {cmdRun, "render cases, compare with goldens, run invariants; results.json, junit.xml, report.html"}},
       {"bless", {cmdBless, "write a case's goldens (atomic) with the reason, after its invariants pass"}},
       {"bake", {cmdBake, "write a case's camera and mover poses per frame as a track (replays bit for bit)"}},
+      {"coverage", {cmdCoverage, "which taa.* setting values and resolve shader branches the cases reach, and the holes"}},
       {"compare", {cmdCompare, "metrics (max abs, RMSE, PSNR, FLIP, HDR-FLIP) of two image files; bounds give exit 1"}},
 
   };

@@ -147,6 +147,54 @@ TEST_F(Verdicts, ARealChangeBeforeACutIsCaughtThoughTheStoredFramesMatch) {
   EXPECT_EQ(results()["cases"][0]["status"], "stale");  // the case file changed: bless if intended
 }
 
+// The last rendered frame is hashed and checked like every other, also when output.frames
+// does not store it: only the sequence guards it then, by hash here and by signature on
+// another CPU level.
+TEST_F(Verdicts, AChangedLastFrameFailsThoughNoStoredFrameCoversIt) {
+  const std::string tail = R"({
+    "scene": {"builtin": "checkerboard"}, "render": {"width": 64, "height": 36},
+    "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
+    "script": {"frames": 6}, "output": {"frames": [2]})";
+  writeCase("tail", tail + "}");
+  ASSERT_EQ(bless("tail").exitCode, 0);
+  writeCase("tail", tail + R"(, "inject": {"frames": [5], "value": "inf",
+      "pixels": [[10, 10], [11, 10], [12, 10], [13, 10], [10, 11], [11, 11], [12, 11], [13, 11]]}})");
+  auto r = run("tail");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("PASS tail frame 2 golden exact"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("FAIL tail frame 5 sequence: frame 5 is the first whose pixels differ"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(results()["cases"][0]["first_difference"]["frame"], 5);
+  r = run("tail", "", "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(
+      r.output.find(
+          "FAIL tail frame 5 sequence: frame 5 is the first whose signature is out of tolerance"),
+      std::string::npos)
+      << r.output;
+}
+
+// A frame added to output.frames after the bless has no golden: the case fails (it is not a
+// pass with a stale note) until someone looks at the frame and blesses it.
+TEST_F(Verdicts, AFrameAddedToOutputFramesWithoutBlessingItFails) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  std::string added = kSmallCase;
+  added.replace(added.find("[2, 5]"), 6, "[2, 3, 5]");
+  writeCase("small", added);
+  const auto r = run("small");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("frame 3 is checked but was never blessed"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("PASS small frame 5 golden exact"), std::string::npos) << r.output;
+  const auto res = results()["cases"][0];
+  EXPECT_NE(res["status"], "pass");
+  ASSERT_EQ(res["frames"].size(), 3u);
+  EXPECT_EQ(res["frames"][1]["frame"], 3);
+  EXPECT_EQ(res["frames"][1]["status"], "missing_golden");
+  EXPECT_NE(junit().find("failures=\"1\""), std::string::npos);
+}
+
 TEST_F(Verdicts, OnAnotherCpuLevelEveryFrameIsCheckedBySignature) {
   const std::string sse = "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1";
   const std::string cut = R"({

@@ -1,0 +1,103 @@
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "case/coverage.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/options.h"
+#include "cli/run_cases.h"
+
+namespace taa::cli {
+
+namespace {
+
+const char* kCoverageUsage =
+    "taa-harness coverage CASE|DIR... [--results FILE] [--json] [--fail-on-holes]\n"
+    "  for every value of every taa.* setting (the settings table), the cases in which it is in\n"
+    "  force; with --results (a results.json of `taa-harness run` over the same cases), also\n"
+    "  every value of every specialization constant of taa_resolve.comp, from each case's\n"
+    "  trace of the constants in force. Values no case reaches are listed last as holes.\n"
+    "  --fail-on-holes: exit 1 when there is one.";
+
+std::map<std::string, std::vector<std::string>> runLogs(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw UsageError("--results " + file + ": cannot be read; run `taa-harness run CASES --out DIR` and pass DIR/results.json");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError("--results " + file + ": not valid JSON (" + e.what() + ")");
+  }
+  std::map<std::string, std::vector<std::string>> logs;
+  if (!j.contains("cases") || !j["cases"].is_array())
+    throw UsageError("--results " + file + ": no \"cases\" list; pass the results.json that `run` writes");
+  for (const auto& c : j["cases"])
+    if (c.contains("name") && c.contains("log") && c["log"].is_array())
+      logs[c["name"].get<std::string>()] = c["log"].get<std::vector<std::string>>();
+  return logs;
+}
+
+size_t printSection(const std::string& title, const std::vector<cases::CoverageRow>& rows) {
+  std::cout << title << "\n";
+  size_t holes = 0;
+  for (const auto& r : rows) {
+    std::string label = r.key + "=" + r.value;
+    std::cout << "  " << label << std::string(label.size() < 44 ? 44 - label.size() : 1, ' ')
+              << r.cases.size() << " ";
+    for (size_t i = 0; i < r.cases.size() && i < 4; ++i) std::cout << (i ? ", " : "") << r.cases[i];
+    if (r.cases.size() > 4) std::cout << ", ...";
+    std::cout << "\n";
+    holes += r.cases.empty();
+  }
+  return holes;
+}
+
+nlohmann::json rowsJson(const std::vector<cases::CoverageRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows) out.push_back({{"key", r.key}, {"value", r.value}, {"cases", r.cases}});
+  return out;
+}
+
+}  // namespace
+
+int cmdCoverage(const Args& args) {
+  const auto a = parseArgs(args, {"--json", "--fail-on-holes"}, {"--results"}, kCoverageUsage);
+  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kCoverageUsage);
+  const CaseBatch batch = loadBatch(a.positional, "");
+  std::vector<spec::CheckedCase> specs;
+  for (const auto& c : batch.cases) specs.push_back(c.spec);
+  const auto settings = cases::settingValueCoverage(specs);
+  std::vector<cases::CoverageRow> branches;
+  if (a.values.count("--results")) {
+    auto logs = runLogs(a.value("--results"));
+    std::map<std::string, std::vector<std::string>> ours;  // the run's cases among the given ones
+    for (const auto& s : specs)
+      if (logs.count(s.name)) ours[s.name] = std::move(logs[s.name]);
+    branches = cases::resolveBranchCoverage(ours);
+  }
+  std::vector<std::string> holes;
+  for (const auto& r : settings)
+    if (r.cases.empty()) holes.push_back(r.key + "=" + r.value);
+  for (const auto& r : branches)
+    if (r.cases.empty()) holes.push_back(r.key + "=" + r.value);
+  if (a.has("--json")) {
+    nlohmann::json j = {{"cases", specs.size()}, {"settings", rowsJson(settings)}, {"holes", holes}};
+    if (a.values.count("--results")) j["resolve_constants"] = rowsJson(branches);
+    std::cout << j.dump(1) << "\n";
+  } else {
+    printSection("taa.* setting values in force (" + std::to_string(specs.size()) + " cases):", settings);
+    if (a.values.count("--results"))
+      printSection("taa_resolve.comp specialization constants in force (traced in " +
+                       a.value("--results") + "):",
+                   branches);
+    else
+      std::cout << "(shader branches: pass --results DIR/results.json of a `taa-harness run` over these cases)\n";
+    std::cout << "holes: " << holes.size() << (holes.empty() ? "" : ":");
+    for (const auto& h : holes) std::cout << " " << h;
+    std::cout << "\n";
+  }
+  return a.has("--fail-on-holes") && !holes.empty() ? kRegression : kPass;
+}
+
+}  // namespace taa::cli

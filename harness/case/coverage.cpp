@@ -47,9 +47,9 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
   Table table;
   enumValues(table, "taa.mode", TaaMode{});
   table.value("taa.shader", "set");
-#define COV_ROWS_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define COV_ROWS_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   enumValues(table, "taa." #key, type{});
-#define COV_ROWS_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define COV_ROWS_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   table.value("taa." #key, "true");                                      \
   table.value("taa." #key, "false");
 #define COV_ROWS_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
@@ -60,8 +60,8 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
     table.value(ramp, "default");
     table.value(ramp, "other");
   }
-#define COV_MOVING_ROWS_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define COV_MOVING_ROWS_B(key, def, id, name, modes, rule, text, doc, impl)
+#define COV_MOVING_ROWS_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define COV_MOVING_ROWS_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define COV_MOVING_ROWS_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   table.value("taa.moving." #key, "blended");
   TAA_SETTINGS(COV_MOVING_ROWS_E, COV_MOVING_ROWS_B, COV_MOVING_ROWS_F)
@@ -77,9 +77,9 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
     // A setting counts where its mode takes it and its rule holds (the rules validation
     // applies to a key the case sets, here applied to every value in force).
 #define COV_IN_FORCE(modes, rule) ((modes & bit) != 0 && rule(e))
-#define COV_REACH_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define COV_REACH_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   if (COV_IN_FORCE(modes, rule)) table.reach("taa." #key, enumToString(e.key), n);
-#define COV_REACH_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define COV_REACH_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   if (COV_IN_FORCE(modes, rule)) table.reach("taa." #key, e.key ? "true" : "false", n);
 #define COV_REACH_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   if (COV_IN_FORCE(modes, rule)) table.reach("taa." #key, e.key == def ? "default" : "other", n);
@@ -90,8 +90,8 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
     table.reach("taa.moving.to_px", m.to_px == movingDefaults.to_px ? "default" : "other", n);
     table.reach("taa.moving.depth", m.depth == movingDefaults.depth ? "default" : "other", n);
     // The loader copies the still value into every float taa.moving leaves out.
-#define COV_REACH_MOVING_E(key, type, values, def, id, name, modes, rule, text, doc, impl)
-#define COV_REACH_MOVING_B(key, def, id, name, modes, rule, text, doc, impl)
+#define COV_REACH_MOVING_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl)
+#define COV_REACH_MOVING_B(key, def, id, name, modes, reads, rule, text, doc, impl)
 #define COV_REACH_MOVING_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl) \
   if (COV_IN_FORCE(modes, rule) && m.key != e.key) table.reach("taa.moving." #key, "blended", n);
     TAA_SETTINGS(COV_REACH_MOVING_E, COV_REACH_MOVING_B, COV_REACH_MOVING_F)
@@ -119,9 +119,9 @@ std::vector<Constant> resolveConstants() {
       {TAA_SPEC_UPSAMPLE, "kUpsample", kBoolValues},
       {TAA_SPEC_DEBUG, "kDebug", {TAA_DEBUG_OUTPUT_VALUES(COV_GLSL_VALUE)}},
       {TAA_SPEC_REJECT_MASK, "kRejectMask", kBoolValues}};
-#define COV_CONST_E(key, type, values, def, id, name, modes, rule, text, doc, impl) \
+#define COV_CONST_E(key, type, values, def, id, name, modes, reads, rule, text, doc, impl) \
   out.push_back({id, #name, {values(COV_GLSL_VALUE)}});
-#define COV_CONST_B(key, def, id, name, modes, rule, text, doc, impl) \
+#define COV_CONST_B(key, def, id, name, modes, reads, rule, text, doc, impl) \
   out.push_back({id, #name, kBoolValues});
 #define COV_CONST_F(key, def, lo, hi, slot, name, modes, rule, text, doc, impl)
   TAA_SETTINGS(COV_CONST_E, COV_CONST_B, COV_CONST_F)

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "common/shared.h"
+#include "spec/taa_spec.h"
 #include "spec/taa_modes.h"
 
 namespace taa::cases {

@@ -43,7 +43,7 @@ struct BatchOptions {
   // Cases rendered at once (`run -j N`), each worker on its own device; 0: one per core.
   // Every output is in case order and the same for any count.
   size_t jobs = 0;
-  // Reference frames rendered once per run and shared (passes/reference_cache.h); off: every
+  // Reference frames rendered once per run and shared (api/reference_cache.h); off: every
   // case renders its own (`run --no-reference-cache`, to rule the cache out).
   bool shareReferences = true;
 };

@@ -12,7 +12,7 @@
 #include "api/device.h"
 #include "case/case_loader.h"
 #include "core/image.h"
-#include "passes/reference_cache.h"
+#include "api/reference_cache.h"
 #include "run/results.h"
 
 namespace taa::run {

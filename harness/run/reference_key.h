@@ -1,5 +1,5 @@
 // What a case gives the reference pass, as one string: the part of a reference frame's cache
-// key (passes/reference_cache.h) that comes from the case file. The renderer adds each frame's
+// key (api/reference_cache.h) that comes from the case file. The renderer adds each frame's
 // own inputs (uniforms, draws, shadow cascades), so settings that reach the reference only
 // through the frame state (camera, script, jitter) are left out here; so are the settings the
 // reference pass never reads (the resolve, post passes, checks, the report).

@@ -20,7 +20,7 @@ struct RenderOptions {
   // checked. Sets FrameRecord::color and colorSha256 for every frame; aux buffers, captures
   // and the reference still come only with readImages.
   bool hashEveryFrame = false;
-  // Reference frames shared across the renderers of a run (passes/reference_cache.h), used
+  // Reference frames shared across the renderers of a run (api/reference_cache.h), used
   // when both are set: `referenceKey` names everything the case gives the reference pass
   // (the harness's run::referenceKey), the renderer adds each frame's own inputs.
   ReferenceCache* referenceCache = nullptr;

@@ -18,7 +18,7 @@
 #include "passes/inject.h"
 #include "passes/post_filter.h"
 #include "passes/reference.h"
-#include "passes/reference_cache.h"
+#include "api/reference_cache.h"
 #include "passes/shadow.h"
 #include "passes/still_image.h"
 #include "script/frame_state.h"

@@ -1,4 +1,4 @@
-// Reference frames shared across a run (passes/reference_cache.h, run/reference_key.h): a
+// Reference frames shared across a run (api/reference_cache.h, run/reference_key.h): a
 // shared reference must be the one a render of the case would read back. The key misses when
 // anything the reference pass reads changes, and every setting the key leaves out is shown,
 // by rendering, not to move the reference bits.
@@ -11,7 +11,7 @@
 
 #include "case/case_error.h"
 #include "case/case_loader.h"
-#include "passes/reference_cache.h"
+#include "api/reference_cache.h"
 #include "run/reference_key.h"
 #include "support/gpu.h"
 #include "support/settings_audit.h"

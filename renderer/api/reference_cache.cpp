@@ -1,4 +1,4 @@
-#include "passes/reference_cache.h"
+#include "api/reference_cache.h"
 
 namespace taa {
 

@@ -3,6 +3,8 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <glm/mat3x3.hpp>
 #include <map>

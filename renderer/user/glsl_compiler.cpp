@@ -288,10 +288,8 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), words, &options);
   std::string out = "S";
   appendU32(out, uint32_t(includer.files().size()));
-  for (const auto& f : includer.files()) {
-    appendU32(out, uint32_t(f.string().size()));
-    out += f.string();
-  }
+  for (const auto& f : includer.files()) appendString(out, f.string());
+  appendString(out, preprocessed);
   out.append(reinterpret_cast<const char*>(words.data()), words.size() * 4);
   return out;
 }
@@ -299,10 +297,10 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
 // glslang in a child process under compileLimits(): a shader that would crash it, exhaust
 // memory or never finish is refused naming the bound, and the harness carries on.
 GlslangOutput runGlslang(const fs::path& source, const std::string& text, const fs::path& root,
-                         const fs::path& headerDir) {
+                         const fs::path& headerDir, const CompileOptions& options) {
   const SandboxLimits limits = compileLimits();
-  const SandboxOutcome o =
-      runSandboxed([&] { return glslangInChild(source, text, root, headerDir); }, limits);
+  const SandboxOutcome o = runSandboxed(
+      [&] { return glslangInChild(source, text, root, headerDir, options); }, limits);
   if (o.end == SandboxEnd::Unavailable)
     throw EnvironmentError("cannot start the shader compiler's child process: " + o.detail);
   if (o.end != SandboxEnd::Done || o.output.empty())
@@ -315,13 +313,8 @@ GlslangOutput runGlslang(const fs::path& source, const std::string& text, const 
   GlslangOutput out;
   size_t at = 1;
   const uint32_t count = readU32(o.output, at);
-  for (uint32_t i = 0; i < count; ++i) {
-    const uint32_t len = readU32(o.output, at);
-    if (at + len > o.output.size())
-      throw ShaderCompileError("the compiler's child process sent a short reply");
-    out.includes.emplace_back(o.output.substr(at, len));
-    at += len;
-  }
+  for (uint32_t i = 0; i < count; ++i) out.includes.emplace_back(readString(o.output, at));
+  out.preprocessed = readString(o.output, at);
   out.spirv.resize((o.output.size() - at) / 4);
   std::memcpy(out.spirv.data(), o.output.data() + at, out.spirv.size() * 4);
   return out;

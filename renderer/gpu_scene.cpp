@@ -13,6 +13,37 @@ namespace taa {
 namespace {
 // More levels than any texture can have: the sampler must not cap the mip chain.
 constexpr float kMaxLod = 16.0f;
+
+VkSamplerAddressMode addressMode(scene::Wrap w) {
+  switch (w) {
+    case scene::Wrap::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case scene::Wrap::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case scene::Wrap::Repeat:
+      break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFilter filter(scene::Filter f) {
+  return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+}
+
+// glTF's sampler as Vulkan's: wrapS is u, wrapT is v; a minFilter without mipmaps samples
+// level 0 alone (maxLod 0), whatever the footprint.
+VkSamplerCreateInfo samplerInfo(const scene::TextureSampler& s) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter(s.mag);
+  info.minFilter = filter(s.min);
+  info.mipmapMode = s.mip == scene::MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+                                                      : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = addressMode(s.wrapS);
+  info.addressModeV = addressMode(s.wrapT);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.maxLod = s.mip == scene::MipFilter::None ? 0.0f : kMaxLod;
+  return info;
+}
 }  // namespace
 
 GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
@@ -25,10 +56,11 @@ GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true),
       deformedPrev_(ctx, std::max<size_t>(1, deformedVertexCount(scene)) * sizeof(glm::vec4),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
-      deformedCapacity_(deformedVertexCount(scene)),
-      repeat_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, kMaxLod, true),
-      clamp_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, kMaxLod, true) {
+      deformedCapacity_(deformedVertexCount(scene)) {
+  samplers_.emplace(scene::TextureSampler{}.key(), vk::Sampler(ctx, samplerInfo({})));
   for (const auto& t : scene.textures) {
+    if (!samplers_.count(t.sampler.key()))
+      samplers_.emplace(t.sampler.key(), vk::Sampler(ctx, samplerInfo(t.sampler)));
     vk::ImageDesc d;
     d.name = "texture";
     d.width = uint32_t(t.levels[0].width);
@@ -73,14 +105,18 @@ VkImageView GpuScene::normalView(int material) const {
   return t >= 0 ? textures_[t].view() : white_.view();
 }
 
+VkSampler GpuScene::samplerOf(int texture) const {
+  const int key = texture >= 0 ? scene_.textures[size_t(texture)].sampler.key()
+                               : scene::TextureSampler{}.key();
+  return samplers_.at(key).handle();
+}
+
 VkSampler GpuScene::normalSampler(int material) const {
-  const int t = scene_.materials[material].normalTexture;
-  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
+  return samplerOf(scene_.materials[material].normalTexture);
 }
 
 VkSampler GpuScene::sampler(int material) const {
-  const int t = scene_.materials[material].baseColorTexture;
-  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
+  return samplerOf(scene_.materials[material].baseColorTexture);
 }
 
 }  // namespace taa

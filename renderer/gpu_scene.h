@@ -1,6 +1,7 @@
 // The scene's geometry and textures on the device, uploaded once per run.
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include "scene/scene.h"
@@ -44,8 +45,9 @@ class GpuScene {
   size_t deformedCapacity_ = 0;
   std::vector<vk::Image> textures_;
   vk::Image white_;
-  vk::Sampler repeat_;
-  vk::Sampler clamp_;
+  // One sampler per distinct TextureSampler::key() the textures use, and the default.
+  std::map<int, vk::Sampler> samplers_;
+  VkSampler samplerOf(int texture) const;
   size_t textureBytes_ = 0;
 };
 

@@ -117,6 +117,7 @@ vec3 traceSample(vec2 pixel) {
     afterTri = h.tri;
     TraceMaterial m = materials[triangles[h.tri].material];
     Surface s = surfaceAt(h, r, rx, ry);
+    if (m.doubleSided == 0u && !s.front) continue;  // the raster culls it: the ray passes
     vec4 base = baseColor(m, s, h.tri);
     float testedAlpha = base.a;
     if (kLod0Alpha && m.alphaCutoff >= 0.0)  // render.lod0_alpha_test, as the raster

@@ -51,15 +51,63 @@ int Converter::texture(int index, const std::string& what, bool linear) {
       rgba[i] = uint8_t((uint32_t(v) * 255u + 32767u) / 65535u);
     }
   }
-  bool repeat = true;
-  if (t.sampler >= 0) {
-    const tinygltf::Sampler& sm = g_.samplers[size_t(t.sampler)];
-    // One wrap mode per texture: clamp only when both axes clamp; mirrored repeat repeats.
-    repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
-               sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
-  }
-  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), repeat, linear));
+  const TextureSampler sampler =
+      t.sampler >= 0 ? gltfSampler(t.sampler) : TextureSampler{};
+  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), sampler, linear));
   return textures_[key] = int(s_.textures.size()) - 1;
+}
+
+// glTF's sampler enums (WebGL's values) as ours; anything else is refused by name.
+TextureSampler Converter::gltfSampler(int index) const {
+  const tinygltf::Sampler& sm = g_.samplers[size_t(index)];
+  const std::string name = "samplers[" + std::to_string(index) + "]";
+  auto wrap = [&](int mode, const char* key) {
+    switch (mode) {
+      case TINYGLTF_TEXTURE_WRAP_REPEAT:
+        return Wrap::Repeat;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+        return Wrap::ClampToEdge;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+        return Wrap::MirroredRepeat;
+      default:
+        fail(name + "." + key + " is " + std::to_string(mode) +
+             ", not 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
+    }
+  };
+  TextureSampler out;
+  out.wrapS = wrap(sm.wrapS, "wrapS");
+  out.wrapT = wrap(sm.wrapT, "wrapT");
+  if (sm.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST)
+    out.mag = Filter::Nearest;
+  else if (sm.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR && sm.magFilter != -1)
+    fail(name + ".magFilter is " + std::to_string(sm.magFilter) +
+         ", not 9728 (NEAREST) or 9729 (LINEAR)");
+  switch (sm.minFilter) {
+    case -1:  // undefined: the viewer's choice, trilinear here
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      out.min = Filter::Nearest;
+      out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      out.min = Filter::Nearest;
+      out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      out.min = Filter::Nearest;
+      break;
+    default:
+      fail(name + ".minFilter is " + std::to_string(sm.minFilter) +
+           ", not one of glTF's six (9728, 9729, 9984, 9985, 9986, 9987)");
+  }
+  return out;
 }
 
 // The UVs are shared (the base colour's KHR_texture_transform is baked into them), so a

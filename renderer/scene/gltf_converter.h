@@ -33,6 +33,7 @@ class Converter {
   }
   // `linear`: data rather than colour (a normal map), cached apart from a colour use.
   int texture(int index, const std::string& what, bool linear = false);
+  TextureSampler gltfSampler(int index) const;
   int material(int index);
   void normalTexture(int index, const tinygltf::Material& gm, const std::string& name, Material& m);
   int mesh(int index);

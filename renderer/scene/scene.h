@@ -23,6 +23,21 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 48);
 
+// How a texture is sampled: a glTF sampler. Without one glTF repeats on both axes and
+// leaves the filters to the viewer; ours are then linear with linear mip blending.
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class Filter { Linear, Nearest };
+enum class MipFilter { Linear, Nearest, None };  // None: only level 0 (minFilter NEAREST / LINEAR)
+struct TextureSampler {
+  Wrap wrapS = Wrap::Repeat;  // along u
+  Wrap wrapT = Wrap::Repeat;  // along v
+  Filter mag = Filter::Linear;
+  Filter min = Filter::Linear;
+  MipFilter mip = MipFilter::Linear;
+  // One small integer per distinct sampler (the GPU scene keeps one VkSampler each).
+  int key() const { return ((int(wrapS) * 3 + int(wrapT)) * 2 + int(mag)) * 6 + int(min) * 3 + int(mip); }
+};
+
 // RGBA8 texels, sRGB-encoded colour with linear alpha; levels[0] is full size,
 // each further level half the size (rounded down, at least 1) down to 1x1.
 struct Texture {
@@ -32,7 +47,7 @@ struct Texture {
     std::vector<uint8_t> rgba;
   };
   std::vector<Level> levels;
-  bool repeat = true;  // wrap mode; false clamps to edge
+  TextureSampler sampler;
   // Data, not colour (normal maps): uploaded as UNORM, mips average the stored values.
   bool linear = false;
 };

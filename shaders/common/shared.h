@@ -288,7 +288,7 @@ TAA_BLOCK(TraceMaterial) {
   float alphaCutoff;  // < 0: no alpha test
   uint texture;       // slot in the texture array
   uint blend;         // 1: alpha-blended ("over", composited front to back along the ray)
-  uint pad;
+  uint doubleSided;   // 0: rays pass through the back faces, as the raster culls them
   vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: 0
 };
 

@@ -13,6 +13,7 @@ struct Surface {
   vec2 uv;
   vec2 dUvDx, dUvDy;
   vec4 color;  // interpolated vertex colour (meaningful where the mesh has COLOR_0)
+  bool front;  // the ray meets the triangle's front face
 };
 
 vec2 interpolateUv(TraceShading s, float b1, float b2) {
@@ -46,8 +47,8 @@ Surface surfaceAt(Hit h, CameraRay r, CameraRay rx, CameraRay ry) {
   vec3 n = normalize(s.n0.xyz * w + s.n1.xyz * h.u + s.n2.xyz * h.v);
   // Front faces wind counter-clockwise on screen (the raster's VK_FRONT_FACE_COUNTER_CLOCKWISE
   // under a Y-flipped projection), so their geometric normal faces the ray.
-  bool front = dot(cross(tri.v1 - tri.v0, tri.v2 - tri.v0), r.dir) < 0.0;
-  f.normal = front ? n : -n;
+  f.front = dot(cross(tri.v1 - tri.v0, tri.v2 - tri.v0), r.dir) < 0.0;
+  f.normal = f.front ? n : -n;
   f.uv = interpolateUv(s, h.u, h.v);
   f.color = s.c0 * w + s.c1 * h.u + s.c2 * h.v;
   vec2 bx = planeBarycentrics(tri, rx.origin, rx.dir);

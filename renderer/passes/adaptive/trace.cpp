@@ -90,6 +90,7 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
     t.alphaCutoff = src.alphaMode == scene::AlphaMode::Mask ? src.alphaCutoff : -1.0f;
     t.texture = it->second;
     t.blend = src.alphaMode == scene::AlphaMode::Blend ? 1u : 0u;
+    t.doubleSided = src.doubleSided ? 1u : 0u;
     t.emissive = glm::vec4(src.emissive, 0.0f);
     materials.push_back(t);
   }

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "common/shared.h"
 #include "draw_list.h"
 #include "vk/context.h"
 #include "vk/transfer.h"
@@ -45,6 +46,17 @@ VkSamplerCreateInfo samplerInfo(const scene::TextureSampler& s) {
   return info;
 }
 }  // namespace
+
+uint32_t materialMaps(const scene::Material& m) {
+  uint32_t bits = 0;
+  if (m.baseColorTexture >= 0 && m.baseColorUv == 1) bits |= MATERIAL_BASE_UV1;
+  if (m.normalTexture >= 0 && m.normalUv == 1) bits |= MATERIAL_NORMAL_UV1;
+  if (m.emissiveTexture >= 0) bits |= MATERIAL_EMISSIVE_MAP | (m.emissiveUv == 1 ? MATERIAL_EMISSIVE_UV1 : 0u);
+  if (m.occlusionTexture >= 0)
+    bits |= MATERIAL_OCCLUSION_MAP | (m.occlusionUv == 1 ? MATERIAL_OCCLUSION_UV1 : 0u);
+  if (m.unlit) bits |= MATERIAL_UNLIT;
+  return bits;
+}
 
 GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
     : scene_(scene),
@@ -95,28 +107,30 @@ void GpuScene::uploadDeformed(const std::vector<scene::Vertex>& vertices,
   std::memcpy(deformedPrev_.mapped(), prevPositions.data(), prevPositions.size() * sizeof(glm::vec4));
 }
 
-VkImageView GpuScene::textureView(int material) const {
-  const int t = scene_.materials[material].baseColorTexture;
-  return t >= 0 ? textures_[t].view() : white_.view();
+VkImageView GpuScene::mapView(int texture) const {
+  return texture >= 0 ? textures_[size_t(texture)].view() : white_.view();
 }
 
-VkImageView GpuScene::normalView(int material) const {
-  const int t = scene_.materials[material].normalTexture;
-  return t >= 0 ? textures_[t].view() : white_.view();
-}
-
-VkSampler GpuScene::samplerOf(int texture) const {
+VkSampler GpuScene::mapSampler(int texture) const {
   const int key = texture >= 0 ? scene_.textures[size_t(texture)].sampler.key()
                                : scene::TextureSampler{}.key();
   return samplers_.at(key).handle();
 }
 
-VkSampler GpuScene::normalSampler(int material) const {
-  return samplerOf(scene_.materials[material].normalTexture);
+VkImageView GpuScene::textureView(int material) const {
+  return mapView(scene_.materials[size_t(material)].baseColorTexture);
 }
 
 VkSampler GpuScene::sampler(int material) const {
-  return samplerOf(scene_.materials[material].baseColorTexture);
+  return mapSampler(scene_.materials[size_t(material)].baseColorTexture);
+}
+
+VkImageView GpuScene::normalView(int material) const {
+  return mapView(scene_.materials[size_t(material)].normalTexture);
+}
+
+VkSampler GpuScene::normalSampler(int material) const {
+  return mapSampler(scene_.materials[size_t(material)].normalTexture);
 }
 
 }  // namespace taa

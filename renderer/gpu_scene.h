@@ -10,6 +10,10 @@
 
 namespace taa {
 
+// The MATERIAL_* bits (shaders/common/shared.h) of a material: which textures beyond the
+// base colour its draws and traced hits sample, from which UV set, and whether it is unlit.
+uint32_t materialMaps(const scene::Material& m);
+
 namespace vk {
 class Context;
 }
@@ -34,6 +38,9 @@ class GpuScene {
   // The material's normal map (white, never read, when it has none) and its sampler.
   VkImageView normalView(int material) const;
   VkSampler normalSampler(int material) const;
+  // Any scene texture by index (-1: the 1x1 white texture) and its sampler.
+  VkImageView mapView(int texture) const;
+  VkSampler mapSampler(int texture) const;
   size_t textureBytes() const { return textureBytes_; }
 
  private:
@@ -47,7 +54,6 @@ class GpuScene {
   vk::Image white_;
   // One sampler per distinct TextureSampler::key() the textures use, and the default.
   std::map<int, vk::Sampler> samplers_;
-  VkSampler samplerOf(int texture) const;
   size_t textureBytes_ = 0;
 };
 

@@ -232,7 +232,11 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
           .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0,
                          VK_WHOLE_SIZE)
           .sampled(GBUF_BINDING_NORMAL_MAP, scene_.normalView(prim.material),
-                   scene_.normalSampler(prim.material));
+                   scene_.normalSampler(prim.material))
+          .sampled(GBUF_BINDING_EMISSIVE_MAP, scene_.mapView(material.emissiveTexture),
+                   scene_.mapSampler(material.emissiveTexture))
+          .sampled(GBUF_BINDING_OCCLUSION_MAP, scene_.mapView(material.occlusionTexture),
+                   scene_.mapSampler(material.occlusionTexture));
       if (config_.shadowAtlas)
         b.sampled(GBUF_BINDING_SHADOW, config_.shadowAtlas->view(), config_.shadowSampler);
       b.push(ctx_, cmd, pipeline);
@@ -247,6 +251,8 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
     push.emissive = glm::vec4(material.emissive, material.normalTexture >= 0
                                                      ? config_.normalStrength * material.normalScale
                                                      : 0.0f);
+    push.maps = materialMaps(material);
+    push.occlusionStrength = material.occlusionStrength;
     pipeline.pushConstants(cmd, &push, sizeof(push));
     vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                      draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);

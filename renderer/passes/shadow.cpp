@@ -113,6 +113,7 @@ void ShadowPass::record(VkCommandBuffer cmd, const ShadowCascades& c, const Draw
       push.alphaCutoff =
           material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
       push.baseColor = material.baseColorFactor;
+      push.maps = materialMaps(material);
       casters_.pushConstants(cmd, &push, sizeof(push));
       vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                        draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);

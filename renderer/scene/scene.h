@@ -20,8 +20,9 @@ struct Vertex {
   glm::vec3 normal;
   glm::vec2 uv;
   glm::vec4 color{1.0f};  // linear RGBA (glTF COLOR_0), multiplies the base colour
+  glm::vec2 uv1{0.0f};    // glTF TEXCOORD_1, for the textures of a material that name it
 };
-static_assert(sizeof(Vertex) == 48);
+static_assert(sizeof(Vertex) == 56);
 
 // How a texture is sampled: a glTF sampler. Without one glTF repeats on both axes and
 // leaves the filters to the viewer; ours are then linear with linear mip blending.
@@ -67,6 +68,18 @@ struct Material {
   // its scale; -1: none.
   int normalTexture = -1;
   float normalScale = 1.0f;
+  // glTF emissiveTexture: its sRGB colour multiplies `emissive` (-1: none, emission is
+  // uniform). Meaningful only where `emissive` is not zero.
+  int emissiveTexture = -1;
+  // glTF occlusionTexture (linear, red channel) and its strength: the ambient term is
+  // multiplied by 1 + strength * (red - 1). -1: none.
+  int occlusionTexture = -1;
+  float occlusionStrength = 1.0f;
+  // KHR_materials_unlit: the surface shows its base colour (times vertex colour), no
+  // lighting, shadows, emission, occlusion or normal map.
+  bool unlit = false;
+  // Which UV set (0: Vertex::uv, 1: Vertex::uv1) each texture samples (glTF texCoord).
+  int baseColorUv = 0, normalUv = 0, emissiveUv = 0, occlusionUv = 0;
 };
 
 // A run of indices drawn with one material.

@@ -12,12 +12,18 @@ struct Surface {
   vec3 normal;  // unit, facing the ray (the raster flips back faces' normals too)
   vec2 uv;
   vec2 dUvDx, dUvDy;
+  vec2 uv1;  // TEXCOORD_1 and its derivatives, for the textures that sample it
+  vec2 dUv1Dx, dUv1Dy;
   vec4 color;  // interpolated vertex colour (meaningful where the mesh has COLOR_0)
   bool front;  // the ray meets the triangle's front face
 };
 
 vec2 interpolateUv(TraceShading s, float b1, float b2) {
   return s.uv01.xy * (1.0 - b1 - b2) + s.uv01.zw * b1 + s.uv2.xy * b2;
+}
+
+vec2 interpolateUv1(TraceShading s, float b1, float b2) {
+  return s.uv1_01.xy * (1.0 - b1 - b2) + s.uv1_01.zw * b1 + s.uv1_2.xy * b2;
 }
 
 // Barycentrics (of v1, v2) where the line o + t d meets the triangle's plane,
@@ -55,6 +61,9 @@ Surface surfaceAt(Hit h, CameraRay r, CameraRay rx, CameraRay ry) {
   vec2 by = planeBarycentrics(tri, ry.origin, ry.dir);
   f.dUvDx = interpolateUv(s, bx.x, bx.y) - f.uv;
   f.dUvDy = interpolateUv(s, by.x, by.y) - f.uv;
+  f.uv1 = interpolateUv1(s, h.u, h.v);
+  f.dUv1Dx = interpolateUv1(s, bx.x, bx.y) - f.uv1;
+  f.dUv1Dy = interpolateUv1(s, by.x, by.y) - f.uv1;
   return f;
 }
 

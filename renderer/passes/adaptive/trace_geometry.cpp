@@ -43,6 +43,8 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
         s.c0 = v[0]->color;
         s.c1 = v[1]->color;
         s.c2 = v[2]->color;
+        s.uv1_01 = glm::vec4(v[0]->uv1, v[1]->uv1);
+        s.uv1_2 = glm::vec4(v[2]->uv1, 0.0f, 0.0f);
         shading->push_back(s);
       }
       if (materials) materials->push_back(uint32_t(prim.material));

@@ -42,6 +42,7 @@ class Converter {
   int mesh(int index);
   void addNode(int root, Model& model);
   void addOneNode(int index, int parent, Model& model);
+  void instances(int index, const tinygltf::Node& gn, Node& n);
   void addAnimation(const tinygltf::Animation& a, size_t index, Model& model);
 
   const std::filesystem::path& file_;

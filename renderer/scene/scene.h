@@ -124,6 +124,9 @@ struct Node {
   int camera = -1;  // index into the same Model's cameras, -1 = none
   int skin = -1;    // index into the same Model's skins, -1 = none
   std::vector<float> weights;  // morph weights overriding the mesh's; empty: the mesh's
+  // EXT_mesh_gpu_instancing: the mesh is drawn once per transform, each applied before the
+  // node's own (world * instance); empty: drawn once.
+  std::vector<glm::mat4> instances;
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 scale{1.0f};
@@ -171,7 +174,7 @@ struct Model {
   std::vector<Camera> cameras;
   std::vector<Skin> skins;
   // Indices of the animations that play together, in this order (a later channel on the
-  // same node and path wins); empty: every animation in file order. A case may pick some.
+  // same node and path wins); empty: defaultAnimations(). A case may pick some.
   std::vector<int> playing;
 };
 
@@ -207,7 +210,7 @@ std::vector<Vertex> deformVertices(const Scene& scene, const MeshDraw& draw);
 
 // Evaluates a model's node hierarchy at `time` seconds into its playing animations,
 // each looping over its own duration, returning every mesh-bearing node in node
-// order. Pure function.
+// order (an instanced node once per instance, in instance order). Pure function.
 std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time);
 
 // World transform of every node at `time` seconds into the model's playing
@@ -218,7 +221,25 @@ std::vector<glm::mat4> nodeWorldTransforms(const Model& model, double time);
 // changes with time).
 bool modelAnimates(const Model& model);
 
-// Object-space bounds of a model at rest (time 0), for framing a camera.
+// What plays when a case picks no animations: the first, and every later one that drives
+// no (node, property) an animation already chosen drives. Independent clips (one box
+// spinning, another rising) play together; alternatives of one rig (Walk, Run, Idle) do
+// not overwrite each other: the first plays, as a glTF viewer shows it.
+std::vector<int> defaultAnimations(const Model& model);
+
+// The animations that play (Model::playing, else the default).
+std::vector<int> playingAnimations(const Model& model);
+
+// One run-log line naming what plays and what is left out, "" for a model without
+// animations.
+std::string describeAnimations(const Model& model);
+
+// Object-space bounds of a model posed at each of `times` (seconds into its playing
+// animations, looped as the renderer plays them): skinned and morphed meshes by their
+// deformed vertices, rigid ones by their transformed boxes. For framing a camera.
+void modelBounds(const Scene& scene, int model, const std::vector<double>& times, glm::vec3& lo,
+                 glm::vec3& hi);
+// The same at time 0 alone.
 void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi);
 
 }  // namespace taa::scene

@@ -31,8 +31,10 @@ VkFilter filter(scene::Filter f) {
   return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
 }
 
-// glTF's sampler as Vulkan's: wrapS is u, wrapT is v; a minFilter without mipmaps samples
-// level 0 alone (maxLod 0), whatever the footprint.
+// glTF's sampler as Vulkan's: wrapS is u, wrapT is v. A minFilter without mipmaps samples
+// level 0 alone: maxLod 0.25 with nearest mip selection rounds every footprint to level 0,
+// while a minified lookup still gets minFilter (Vulkan picks magFilter for a level of detail
+// at or below 0, so maxLod 0 would magnify everything).
 VkSamplerCreateInfo samplerInfo(const scene::TextureSampler& s) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter(s.mag);
@@ -42,7 +44,7 @@ VkSamplerCreateInfo samplerInfo(const scene::TextureSampler& s) {
   info.addressModeU = addressMode(s.wrapS);
   info.addressModeV = addressMode(s.wrapT);
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  info.maxLod = s.mip == scene::MipFilter::None ? 0.0f : kMaxLod;
+  info.maxLod = s.mip == scene::MipFilter::None ? 0.25f : kMaxLod;
   return info;
 }
 }  // namespace

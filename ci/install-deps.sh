@@ -34,6 +34,10 @@ packages=(
   libmeshoptimizer-dev
   # glTF KHR_draco_mesh_compression decoding (and encoding in its tests).
   libdraco-dev
+  # gltfpack and Draco's tools write the compressed and quantised variants of outside models
+  # (cases/scenes/make_variants.sh); building and testing do not run them.
+  gltfpack
+  draco
   googletest
   libgtest-dev
   libbenchmark-dev

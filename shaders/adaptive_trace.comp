@@ -95,8 +95,16 @@ vec4 sampleTextureLod0(uint slot, vec2 uv) {
   return vec4(1.0);
 }
 
+// A map's lookup on the UV set its MATERIAL_*_UV1 bit names.
+vec4 sampleMap(TraceMaterial m, uint slot, uint uv1Bit, Surface s) {
+  return (m.maps & uv1Bit) != 0u ? sampleTexture(slot, s.uv1, s.dUv1Dx, s.dUv1Dy)
+                                 : sampleTexture(slot, s.uv, s.dUvDx, s.dUvDy);
+}
+
+vec2 baseUv(TraceMaterial m, Surface s) { return (m.maps & MATERIAL_BASE_UV1) != 0u ? s.uv1 : s.uv; }
+
 vec4 baseColor(TraceMaterial m, Surface s, uint tri) {
-  vec4 base = m.baseColor * sampleTexture(m.texture, s.uv, s.dUvDx, s.dUvDy);
+  vec4 base = m.baseColor * sampleMap(m, m.texture, MATERIAL_BASE_UV1, s);
   // As the raster: only meshes with COLOR_0 (an interpolated white is not exactly 1).
   if (shading[tri].uv2.z != 0.0) base *= s.color;
   return base;
@@ -117,13 +125,26 @@ vec3 traceSample(vec2 pixel) {
     afterTri = h.tri;
     TraceMaterial m = materials[triangles[h.tri].material];
     Surface s = surfaceAt(h, r, rx, ry);
+    if (m.doubleSided == 0u && !s.front) continue;  // the raster culls it: the ray passes
     vec4 base = baseColor(m, s, h.tri);
     float testedAlpha = base.a;
     if (kLod0Alpha && m.alphaCutoff >= 0.0)  // render.lod0_alpha_test, as the raster
-      testedAlpha = m.baseColor.a * sampleTextureLod0(m.texture, s.uv).a * (shading[h.tri].uv2.z != 0.0 ? s.color.a : 1.0);
+      testedAlpha = m.baseColor.a * sampleTextureLod0(m.texture, baseUv(m, s)).a * (shading[h.tri].uv2.z != 0.0 ? s.color.a : 1.0);
     if (m.alphaCutoff >= 0.0 && testedAlpha < m.alphaCutoff) continue;  // the raster's discard
-    vec3 c = shadeBlinnPhong(base.rgb, s.normal, s.position, frame);
-    if (m.emissive.rgb != vec3(0.0)) c += m.emissive.rgb;
+    vec3 c;
+    if ((m.maps & MATERIAL_UNLIT) != 0u) {
+      c = base.rgb;  // KHR_materials_unlit, as gbuffer.frag
+    } else {
+      float occlusion = 1.0;
+      if ((m.maps & MATERIAL_OCCLUSION_MAP) != 0u)
+        occlusion = occlusionFactor(sampleMap(m, m.occlusionTexture, MATERIAL_OCCLUSION_UV1, s).r, m.emissive.w);
+      c = occlusion != 1.0 ? shadeBlinnPhongOccluded(base.rgb, s.normal, s.position, frame, 1.0, occlusion)
+                           : shadeBlinnPhong(base.rgb, s.normal, s.position, frame);
+      vec3 emission = m.emissive.rgb;
+      if ((m.maps & MATERIAL_EMISSIVE_MAP) != 0u)
+        emission *= sampleMap(m, m.emissiveTexture, MATERIAL_EMISSIVE_UV1, s).rgb;
+      if (emission != vec3(0.0)) c += emission;
+    }
     if (m.blend == 0u) return sum + transmit * c;
     sum += transmit * base.a * c;
     transmit *= 1.0 - base.a;

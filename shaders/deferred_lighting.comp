@@ -22,10 +22,12 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.renderSize.xy)))) return;
   vec4 albedo = texelFetch(albedoTex, p, 0);
-  if (albedo.a == 0.0) {
+  // Sky (alpha 0) and unlit surfaces (alpha < 0, KHR_materials_unlit) show their colour.
+  if (albedo.a <= 0.0) {
     imageStore(colorOut, p, vec4(albedo.rgb, 1.0));
     return;
   }
+  float occlusion = 2.0 - albedo.a;  // gbuffer.frag's encoding: 1 without an occlusion texture
   // Reconstruct the world position from the jittered depth sample: the pixel centre
   // shows the un-jittered position (centre - jitter).
   float depth = texelFetch(depthTex, p, 0).r;
@@ -34,9 +36,12 @@ void main() {
   vec3 n = normalize(texelFetch(normalTex, p, 0).xyz);
 #if defined(VARIANT_MASK) && (VARIANT_MASK & GBUF_OUTPUT_SHADOW) != 0
   vec3 pos = world.xyz / world.w;
-  vec3 c = shadeBlinnPhongShadowed(albedo.rgb, n, pos, frame, shadowVisibility(shadowAtlas, frame, pos, n));
+  float visibility = shadowVisibility(shadowAtlas, frame, pos, n);
+  vec3 c = occlusion != 1.0 ? shadeBlinnPhongOccluded(albedo.rgb, n, pos, frame, visibility, occlusion)
+                            : shadeBlinnPhongShadowed(albedo.rgb, n, pos, frame, visibility);
 #else
-  vec3 c = shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame);
+  vec3 c = occlusion != 1.0 ? shadeBlinnPhongOccluded(albedo.rgb, n, world.xyz / world.w, frame, 1.0, occlusion)
+                            : shadeBlinnPhong(albedo.rgb, n, world.xyz / world.w, frame);
 #endif
   vec3 emitted = imageLoad(colorOut, p).rgb;
   if (emitted != vec3(0.0)) c += emitted;

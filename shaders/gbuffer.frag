@@ -10,6 +10,8 @@ layout(constant_id = GBUF_SPEC_LOD0_ALPHA) const bool kLod0Alpha = false;
 
 layout(set = 0, binding = GBUF_BINDING_TEXTURE) uniform sampler2D baseColorTexture;
 layout(set = 0, binding = GBUF_BINDING_NORMAL_MAP) uniform sampler2D normalTexture;
+layout(set = 0, binding = GBUF_BINDING_EMISSIVE_MAP) uniform sampler2D emissiveTexture;
+layout(set = 0, binding = GBUF_BINDING_OCCLUSION_MAP) uniform sampler2D occlusionTexture;
 #if (VARIANT_MASK & GBUF_OUTPUT_SHADOW) != 0
 #include "common/shadow.glsl"
 layout(set = 0, binding = GBUF_BINDING_SHADOW) uniform sampler2DShadow shadowAtlas;
@@ -21,6 +23,7 @@ layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inCurClip;
 layout(location = 4) in vec4 inPrevClip;
 layout(location = 5) in vec4 inColor;  // glTF COLOR_0, white elsewhere
+layout(location = 6) in vec2 inUv1;    // glTF TEXCOORD_1
 
 layout(location = GBUF_OUT_COLOR) out vec4 outColor;
 #if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
@@ -36,31 +39,48 @@ layout(location = GBUF_OUT_IDS) out uint outIds;
 layout(location = GBUF_OUT_ALBEDO) out vec4 outAlbedo;
 #endif
 
+// The UV set a texture samples (MATERIAL_*_UV1 bits of the draw).
+vec2 uvSet(uint bit) { return (draw.maps & bit) != 0u ? inUv1 : inUv; }
+
+vec4 sampleMap(sampler2D t, vec2 uv) {
+  return kLod0 ? textureLod(t, uv, 0.0) : texture(t, uv, draw.lodBias);
+}
+
 void main() {
-  // Normal-mapped materials only (a push constant, so uniform control flow): derivatives
-  // taken before any discard, while the whole quad still runs.
+  // Every lookup comes before the alpha test's discard, and only the material's own maps
+  // are sampled (push constants, so uniform control flow): derivatives taken while the
+  // whole quad still runs.
   vec3 dpdx = vec3(0.0), dpdy = vec3(0.0), mapped = vec3(0.5, 0.5, 1.0);
   vec2 duvdx = vec2(0.0), duvdy = vec2(0.0);
   if (draw.emissive.w != 0.0) {
+    vec2 normalUv = uvSet(MATERIAL_NORMAL_UV1);
     dpdx = dFdx(inWorldPos);
     dpdy = dFdy(inWorldPos);
-    duvdx = dFdx(inUv);
-    duvdy = dFdy(inUv);
-    mapped = kLod0 ? textureLod(normalTexture, inUv, 0.0).rgb : texture(normalTexture, inUv, draw.lodBias).rgb;
+    duvdx = dFdx(normalUv);
+    duvdy = dFdy(normalUv);
+    mapped = sampleMap(normalTexture, normalUv).rgb;
   }
-  vec4 base = draw.baseColor *
-              (kLod0 ? textureLod(baseColorTexture, inUv, 0.0) : texture(baseColorTexture, inUv, draw.lodBias));
+  vec3 emission = draw.emissive.rgb;
+  if ((draw.maps & MATERIAL_EMISSIVE_MAP) != 0u)
+    emission *= sampleMap(emissiveTexture, uvSet(MATERIAL_EMISSIVE_UV1)).rgb;
+  float occlusion = 1.0;
+  if ((draw.maps & MATERIAL_OCCLUSION_MAP) != 0u)
+    occlusion = occlusionFactor(sampleMap(occlusionTexture, uvSet(MATERIAL_OCCLUSION_UV1)).r,
+                                draw.occlusionStrength);
+  vec2 baseUv = uvSet(MATERIAL_BASE_UV1);
+  vec4 base = draw.baseColor * sampleMap(baseColorTexture, baseUv);
   // Only meshes with COLOR_0: an interpolated constant white is not exactly 1.
   bool vertexColors = instances[draw.instance].ids.w != 0u;
   if (vertexColors) base *= inColor;
   float testedAlpha = base.a;
   if (kLod0Alpha && draw.alphaCutoff >= 0.0)
-    testedAlpha = draw.baseColor.a * textureLod(baseColorTexture, inUv, 0.0).a * (vertexColors ? inColor.a : 1.0);
+    testedAlpha = draw.baseColor.a * textureLod(baseColorTexture, baseUv, 0.0).a * (vertexColors ? inColor.a : 1.0);
   if (draw.alphaCutoff >= 0.0 && testedAlpha < draw.alphaCutoff) discard;
 
+  bool unlit = (draw.maps & MATERIAL_UNLIT) != 0u;
   vec3 n = normalize(inNormal);
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces light their back face too
-  if (draw.emissive.w != 0.0) n = perturbNormal(n, dpdx, dpdy, duvdx, duvdy, mapped, draw.emissive.w);
+  if (draw.emissive.w != 0.0 && !unlit) n = perturbNormal(n, dpdx, dpdy, duvdx, duvdy, mapped, draw.emissive.w);
 
 #if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
   // Screen motion in pixels from last frame to this one, both un-jittered:
@@ -77,17 +97,28 @@ void main() {
   outIds = (inst.ids.y != 0u ? IDS_MOVER_BIT : 0u) | ((inst.ids.x & 0x7fffu) << 16) | (draw.material & 0xffffu);
 #endif
 #if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0
-  outAlbedo = vec4(base.rgb, 1.0);
+  // Alpha tells the deferred pass how to shade: 0 is the sky, negative unlit, and otherwise
+  // 2 - occlusion (1 without an occlusion texture).
+  outAlbedo = vec4(base.rgb, unlit ? -1.0 : 2.0 - occlusion);
 #endif
   // Emission is added only where there is some, so every other pixel stays bit for bit
   // what it was. The deferred path leaves it in the colour target for the lighting pass.
+  vec3 shaded;
+  if (unlit) {
+    shaded = base.rgb;
+    emission = vec3(0.0);
+  } else if (kDeferred) {
+    shaded = vec3(0.0);
+  } else {
 #if (VARIANT_MASK & GBUF_OUTPUT_SHADOW) != 0
-  vec3 shaded = kDeferred ? vec3(0.0)
-                          : shadeBlinnPhongShadowed(base.rgb, n, inWorldPos, frame,
-                                                    shadowVisibility(shadowAtlas, frame, inWorldPos, n));
+    float visibility = shadowVisibility(shadowAtlas, frame, inWorldPos, n);
+    shaded = occlusion != 1.0 ? shadeBlinnPhongOccluded(base.rgb, n, inWorldPos, frame, visibility, occlusion)
+                              : shadeBlinnPhongShadowed(base.rgb, n, inWorldPos, frame, visibility);
 #else
-  vec3 shaded = shadeBlinnPhong(base.rgb, n, inWorldPos, frame);
+    shaded = occlusion != 1.0 ? shadeBlinnPhongOccluded(base.rgb, n, inWorldPos, frame, 1.0, occlusion)
+                              : shadeBlinnPhong(base.rgb, n, inWorldPos, frame);
 #endif
-  if (draw.emissive.rgb != vec3(0.0)) shaded += draw.emissive.rgb;
-  outColor = kDeferred ? vec4(draw.emissive.rgb, 0.0) : vec4(shaded, base.a);
+  }
+  if (emission != vec3(0.0)) shaded += emission;
+  outColor = kDeferred ? vec4(emission, 0.0) : vec4(shaded, base.a);
 }

@@ -6,6 +6,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inColor;
+layout(location = 4) in vec2 inUv1;
 
 // Skinned and morphed vertices: where each was at frame - 1 (same space as inPosition),
 // indexed like the deformed vertex buffer they are drawn from.
@@ -17,6 +18,7 @@ layout(location = 2) out vec2 outUv;
 layout(location = 3) out vec4 outCurClip;   // un-jittered, for velocity
 layout(location = 4) out vec4 outPrevClip;
 layout(location = 5) out vec4 outColor;
+layout(location = 6) out vec2 outUv1;
 
 void main() {
   InstanceData inst = instances[draw.instance];
@@ -26,6 +28,7 @@ void main() {
   outWorldPos = world.xyz;
   outNormal = mat3(inst.normalMatrix) * inNormal;
   outUv = inUv;
+  outUv1 = inUv1;
   outColor = inColor;
   outCurClip = frame.viewProjNoJitter * world;
   outPrevClip = frame.prevViewProjNoJitter * prevWorld;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
@@ -11,6 +12,8 @@
 #include "core/output_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
+#include "scene/scene_error.h"
+#include "spec/case_spec.h"
 
 namespace taa::cli {
 
@@ -60,8 +63,20 @@ int cmdNewCase(const Args& args) {
 
   scene::Scene scene;
   scene.models.push_back(scene::loadGltf(scenePath, scene));
+  // Posed at every frame the case plays and over one loop of its longest playing animation
+  // (the default fps, speed and offset), so a skinned, morphed or animated figure stays in
+  // view throughout, however many frames a user later gives it; at most 600 poses.
+  const int fps = spec::TimingSpec{}.fps;
+  double loop = 0.0;
+  for (const int anim : scene::playingAnimations(scene.models[0]))
+    loop = std::max(loop, double(scene.models[0].animations[size_t(anim)].duration));
+  const int poses = std::min(600, std::max(frames, int(std::ceil(loop * fps)) + 1));
+  std::vector<double> times;
+  for (int i = 0; i < poses; ++i) times.push_back(double(i) / fps);
   glm::vec3 lo, hi;
-  scene::modelBounds(scene, 0, lo, hi);
+  scene::modelBounds(scene, 0, times, lo, hi);
+  if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+    throw scene::SceneError(scenePath, "its posed bounds are not finite; check its transforms");
   const glm::vec3 centre = (lo + hi) * 0.5f;
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
   // Far enough that the bounding sphere fits the 60-degree vertical field of view,

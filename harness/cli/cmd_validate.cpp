@@ -1,27 +1,48 @@
 #include <iostream>
 
+#include "case/case_error.h"
 #include "case/case_loader.h"
 #include "case/settings_table.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "scene/build_scene.h"
+#include "scene/scene_error.h"
+#include "script/track.h"
 
 namespace taa::cli {
 
+// Everything render reads before it needs a device: the case, its tracks and user shader
+// (loadCase), its scene, movers and debug image with their checks (buildScene). Each file's
+// problems are reported and the next file is still checked.
 int cmdValidate(const Args& args) {
   static const char* kUsage = "taa-harness validate [--print] CASE...";
   const auto a = parseArgs(args, {"--print"}, {}, kUsage);
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kUsage);
   const bool print = a.has("--print");
-  const std::vector<std::string>& files = a.positional;
-  for (const auto& f : files) {
-    const auto loaded = cases::loadCase(f);
-    if (print)
-      std::cout << cases::resolvedJson(loaded.spec).dump(2) << "\n";
-    else
-      std::cout << f << ": ok\n";
+  int bad = 0;
+  for (const auto& f : a.positional) {
+    try {
+      const auto loaded = cases::loadCase(f);
+      scene::buildScene(loaded.spec);
+      if (print)
+        std::cout << cases::resolvedJson(loaded.spec).dump(2) << "\n";
+      else
+        std::cout << f << ": ok\n";
+    } catch (const cases::CaseError& e) {
+      for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
+      ++bad;
+    } catch (const scene::SceneError& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      ++bad;
+    } catch (const script::TrackError& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      ++bad;
+    }
   }
-  return kPass;
+  if (bad > 0 && a.positional.size() > 1)
+    std::cerr << bad << " of " << a.positional.size() << " case files have problems\n";
+  return bad > 0 ? kBadInput : kPass;
 }
 
 int cmdTechniques(const Args& args) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/matrix.hpp>
 
 namespace taa {
 
@@ -44,7 +45,7 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
         for (const scene::Vertex& v : b) out.deformedPrev.emplace_back(v.position, 1.0f);
       }
       for (int p = 0; p < int(mesh.primitives.size()); ++p) {
-        Draw d{instance, now[i].mesh, p, -1};
+        Draw d{instance, now[i].mesh, p, -1, glm::determinant(glm::mat3(inst.model)) < 0.0f};
         if (deformed)
           d.deformedVertex =
               deformedBase + mesh.primitives[p].vertexOffset - int32_t(mesh.firstVertex);

@@ -19,6 +19,9 @@ struct Draw {
   // Deformed (skinned or morphed) draws read DrawList::deformed, from this vertex on
   // for the primitive's first vertex; -1: the scene's own vertices.
   int32_t deformedVertex = -1;
+  // The instance's transform has a negative determinant: glTF then winds its front faces
+  // clockwise, so the raster's front face and the tracer's triangle order flip with it.
+  bool mirrored = false;
 };
 
 struct DrawList {

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "common/shared.h"
 #include "frame/draw_list.h"
 #include "vk/context.h"
 #include "vk/transfer.h"
@@ -13,7 +14,51 @@ namespace taa {
 namespace {
 // More levels than any texture can have: the sampler must not cap the mip chain.
 constexpr float kMaxLod = 16.0f;
+
+VkSamplerAddressMode addressMode(scene::Wrap w) {
+  switch (w) {
+    case scene::Wrap::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case scene::Wrap::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case scene::Wrap::Repeat:
+      break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFilter filter(scene::Filter f) {
+  return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+}
+
+// glTF's sampler as Vulkan's: wrapS is u, wrapT is v. A minFilter without mipmaps samples
+// level 0 alone: maxLod 0.25 with nearest mip selection rounds every footprint to level 0,
+// while a minified lookup still gets minFilter (Vulkan picks magFilter for a level of detail
+// at or below 0, so maxLod 0 would magnify everything).
+VkSamplerCreateInfo samplerInfo(const scene::TextureSampler& s) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter(s.mag);
+  info.minFilter = filter(s.min);
+  info.mipmapMode = s.mip == scene::MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+                                                      : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = addressMode(s.wrapS);
+  info.addressModeV = addressMode(s.wrapT);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.maxLod = s.mip == scene::MipFilter::None ? 0.25f : kMaxLod;
+  return info;
+}
 }  // namespace
+
+uint32_t materialMaps(const scene::Material& m) {
+  uint32_t bits = 0;
+  if (m.baseColorTexture >= 0 && m.baseColorUv == 1) bits |= MATERIAL_BASE_UV1;
+  if (m.normalTexture >= 0 && m.normalUv == 1) bits |= MATERIAL_NORMAL_UV1;
+  if (m.emissiveTexture >= 0) bits |= MATERIAL_EMISSIVE_MAP | (m.emissiveUv == 1 ? MATERIAL_EMISSIVE_UV1 : 0u);
+  if (m.occlusionTexture >= 0)
+    bits |= MATERIAL_OCCLUSION_MAP | (m.occlusionUv == 1 ? MATERIAL_OCCLUSION_UV1 : 0u);
+  if (m.unlit) bits |= MATERIAL_UNLIT;
+  return bits;
+}
 
 GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
     : scene_(scene),
@@ -25,10 +70,11 @@ GpuScene::GpuScene(vk::Context& ctx, const scene::Scene& scene)
                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true),
       deformedPrev_(ctx, std::max<size_t>(1, deformedVertexCount(scene)) * sizeof(glm::vec4),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
-      deformedCapacity_(deformedVertexCount(scene)),
-      repeat_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, kMaxLod, true),
-      clamp_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, kMaxLod, true) {
+      deformedCapacity_(deformedVertexCount(scene)) {
+  samplers_.emplace(scene::TextureSampler{}.key(), vk::Sampler(ctx, samplerInfo({})));
   for (const auto& t : scene.textures) {
+    if (!samplers_.count(t.sampler.key()))
+      samplers_.emplace(t.sampler.key(), vk::Sampler(ctx, samplerInfo(t.sampler)));
     vk::ImageDesc d;
     d.name = "texture";
     d.width = uint32_t(t.levels[0].width);
@@ -63,24 +109,30 @@ void GpuScene::uploadDeformed(const std::vector<scene::Vertex>& vertices,
   std::memcpy(deformedPrev_.mapped(), prevPositions.data(), prevPositions.size() * sizeof(glm::vec4));
 }
 
+VkImageView GpuScene::mapView(int texture) const {
+  return texture >= 0 ? textures_[size_t(texture)].view() : white_.view();
+}
+
+VkSampler GpuScene::mapSampler(int texture) const {
+  const int key = texture >= 0 ? scene_.textures[size_t(texture)].sampler.key()
+                               : scene::TextureSampler{}.key();
+  return samplers_.at(key).handle();
+}
+
 VkImageView GpuScene::textureView(int material) const {
-  const int t = scene_.materials[material].baseColorTexture;
-  return t >= 0 ? textures_[t].view() : white_.view();
-}
-
-VkImageView GpuScene::normalView(int material) const {
-  const int t = scene_.materials[material].normalTexture;
-  return t >= 0 ? textures_[t].view() : white_.view();
-}
-
-VkSampler GpuScene::normalSampler(int material) const {
-  const int t = scene_.materials[material].normalTexture;
-  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
+  return mapView(scene_.materials[size_t(material)].baseColorTexture);
 }
 
 VkSampler GpuScene::sampler(int material) const {
-  const int t = scene_.materials[material].baseColorTexture;
-  return (t < 0 || scene_.textures[t].repeat) ? repeat_.handle() : clamp_.handle();
+  return mapSampler(scene_.materials[size_t(material)].baseColorTexture);
+}
+
+VkImageView GpuScene::normalView(int material) const {
+  return mapView(scene_.materials[size_t(material)].normalTexture);
+}
+
+VkSampler GpuScene::normalSampler(int material) const {
+  return mapSampler(scene_.materials[size_t(material)].normalTexture);
 }
 
 }  // namespace taa

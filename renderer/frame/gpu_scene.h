@@ -1,6 +1,7 @@
 // The scene's geometry and textures on the device, uploaded once per run.
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include "scene/scene.h"
@@ -8,6 +9,10 @@
 #include "vk/resources.h"
 
 namespace taa {
+
+// The MATERIAL_* bits (shaders/common/shared.h) of a material: which textures beyond the
+// base colour its draws and traced hits sample, from which UV set, and whether it is unlit.
+uint32_t materialMaps(const scene::Material& m);
 
 namespace vk {
 class Context;
@@ -33,6 +38,9 @@ class GpuScene {
   // The material's normal map (white, never read, when it has none) and its sampler.
   VkImageView normalView(int material) const;
   VkSampler normalSampler(int material) const;
+  // Any scene texture by index (-1: the 1x1 white texture) and its sampler.
+  VkImageView mapView(int texture) const;
+  VkSampler mapSampler(int texture) const;
   size_t textureBytes() const { return textureBytes_; }
 
  private:
@@ -44,8 +52,8 @@ class GpuScene {
   size_t deformedCapacity_ = 0;
   std::vector<vk::Image> textures_;
   vk::Image white_;
-  vk::Sampler repeat_;
-  vk::Sampler clamp_;
+  // One sampler per distinct TextureSampler::key() the textures use, and the default.
+  std::map<int, vk::Sampler> samplers_;
   size_t textureBytes_ = 0;
 };
 

@@ -167,6 +167,9 @@ struct Renderer::State {
         readback(c) {
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
+    for (const auto& model : sc.models)
+      if (const std::string line = scene::describeAnimations(model); !line.empty())
+        log.push_back("scene animations: " + line);
     if (debugChannels)
       debugChannelsOut = makePostImage(c, "debug_channels", {s.render.width, s.render.height});
     if (still)

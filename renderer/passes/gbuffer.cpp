@@ -4,6 +4,7 @@
 
 #include "api/device_error.h"
 #include "common/shared.h"
+#include "passes/draw_faces.h"
 #include "passes/shadow.h"
 #include "spec/case_spec.h"
 #include "vk/barrier.h"
@@ -167,9 +168,9 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
       .set(GBUF_SPEC_LOD0_ALPHA, config.lod0AlphaTest);
   d.colorFormats = colorFormats(config);
   d.depthFormat = kDepth;
-  // Back faces stay: foliage cards, fences and glTF double-sided materials are
-  // seen from both sides, and the shader flips their normals.
-  d.cullMode = VK_CULL_MODE_NONE;
+  // Per draw (DrawFaces): single-sided materials lose their back faces, double-sided ones
+  // (foliage cards, glTF doubleSided) keep them and the shader flips their normals.
+  d.dynamicFaces = true;
   d.samples = config.samples;
   opaque_ = vk::createGraphicsPipeline(ctx, "gbuffer", d);
 
@@ -188,6 +189,8 @@ GBufferPass::GBufferPass(vk::Context& ctx, const GpuScene& scene, const GBufferC
   s.vertexShader = "sky.vert";
   s.fragmentShader = variant("sky.frag", config);
   s.vertexInput = false;
+  s.dynamicFaces = false;
+  s.cullMode = VK_CULL_MODE_NONE;  // one full-screen triangle
   s.depthWrite = false;
   s.depthCompare = VK_COMPARE_OP_EQUAL;  // only where no geometry moved depth off the far plane
   sky_ = vk::createGraphicsPipeline(ctx, "sky", s);
@@ -210,9 +213,11 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
   vkCmdBindIndexBuffer(cmd, scene_.indices(), 0, VK_INDEX_TYPE_UINT32);
   const auto& cpu = scene_.cpu();
   int boundMaterial = -1;
+  DrawFaces faces;
   for (const auto& draw : draws) {
     const auto& prim = cpu.meshes[draw.mesh].primitives[draw.primitive];
     const auto& material = cpu.materials[prim.material];
+    faces.apply(cmd, material.doubleSided, draw.mirrored);
     const int buffer = draw.deformedVertex >= 0 ? 1 : 0;
     if (buffer != boundBuffer) {
       vkCmdBindVertexBuffers(cmd, 0, 1, &buffers[buffer], &offset);
@@ -227,7 +232,11 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
           .storageBuffer(GBUF_BINDING_PREV_POSITIONS, scene_.deformedPrevPositions(), 0,
                          VK_WHOLE_SIZE)
           .sampled(GBUF_BINDING_NORMAL_MAP, scene_.normalView(prim.material),
-                   scene_.normalSampler(prim.material));
+                   scene_.normalSampler(prim.material))
+          .sampled(GBUF_BINDING_EMISSIVE_MAP, scene_.mapView(material.emissiveTexture),
+                   scene_.mapSampler(material.emissiveTexture))
+          .sampled(GBUF_BINDING_OCCLUSION_MAP, scene_.mapView(material.occlusionTexture),
+                   scene_.mapSampler(material.occlusionTexture));
       if (config_.shadowAtlas)
         b.sampled(GBUF_BINDING_SHADOW, config_.shadowAtlas->view(), config_.shadowSampler);
       b.push(ctx_, cmd, pipeline);
@@ -242,6 +251,8 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
     push.emissive = glm::vec4(material.emissive, material.normalTexture >= 0
                                                      ? config_.normalStrength * material.normalScale
                                                      : 0.0f);
+    push.maps = materialMaps(material);
+    push.occlusionStrength = material.occlusionStrength;
     pipeline.pushConstants(cmd, &push, sizeof(push));
     vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                      draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);

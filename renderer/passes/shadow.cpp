@@ -3,6 +3,7 @@
 #include <glm/vec4.hpp>
 
 #include "common/shared.h"
+#include "passes/draw_faces.h"
 #include "vk/barrier.h"
 #include "vk/context.h"
 
@@ -38,7 +39,9 @@ ShadowPass::ShadowPass(vk::Context& ctx, const GpuScene& scene, int cascades, bo
   g.fragmentShader = "shadow_depth.frag";
   g.depthFormat = VK_FORMAT_D32_SFLOAT;
   g.depthCompare = VK_COMPARE_OP_LESS;  // 0 at the light's side of the scene
-  g.cullMode = VK_CULL_MODE_NONE;       // cards and double-sided surfaces cast from both sides
+  // Per draw (DrawFaces), as the G-buffer: a single-sided surface casts only from its front
+  // (towards the light), a double-sided one (cards) from both sides.
+  g.dynamicFaces = true;
   g.spec.set(GBUF_SPEC_LOD0_ALPHA, lod0Alpha);
   casters_ = vk::createGraphicsPipeline(ctx, "shadow_casters", g);
 
@@ -86,9 +89,11 @@ void ShadowPass::record(VkCommandBuffer cmd, const ShadowCascades& c, const Draw
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     int boundBuffer = -1;
     int boundMaterial = -1;
+    DrawFaces faces;
     for (const Draw& draw : draws.opaque) {
       const auto& prim = cpu.meshes[size_t(draw.mesh)].primitives[size_t(draw.primitive)];
       const auto& material = cpu.materials[size_t(prim.material)];
+      faces.apply(cmd, material.doubleSided, draw.mirrored);
       const int buffer = draw.deformedVertex >= 0 ? 1 : 0;
       if (buffer != boundBuffer) {
         vkCmdBindVertexBuffers(cmd, 0, 1, &buffers[buffer], &offset);
@@ -108,6 +113,7 @@ void ShadowPass::record(VkCommandBuffer cmd, const ShadowCascades& c, const Draw
       push.alphaCutoff =
           material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
       push.baseColor = material.baseColorFactor;
+      push.maps = materialMaps(material);
       casters_.pushConstants(cmd, &push, sizeof(push));
       vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
                        draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <set>
+#include <string>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -93,13 +95,6 @@ std::vector<float> sampleWeights(const AnimChannel& ch, float t) {
   return out;
 }
 
-std::vector<int> playingAnimations(const Model& m) {
-  if (!m.playing.empty()) return m.playing;
-  std::vector<int> all(m.animations.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
-  return all;
-}
-
 // Node-local TRS after the playing animations are sampled; `loop` wraps each
 // animation's time into its own duration.
 std::vector<Node> animatedNodes(const Model& m, double time, bool loop) {
@@ -152,6 +147,45 @@ std::vector<glm::mat4> worldTransforms(const std::vector<Node>& nodes) {
 
 }  // namespace
 
+std::vector<int> defaultAnimations(const Model& m) {
+  std::set<std::pair<int, AnimPath>> driven;
+  std::vector<int> out;
+  for (size_t a = 0; a < m.animations.size(); ++a) {
+    const auto& channels = m.animations[a].channels;
+    const bool clash = std::any_of(channels.begin(), channels.end(), [&](const AnimChannel& c) {
+      return driven.count({c.node, c.path}) > 0;
+    });
+    if (clash) continue;
+    for (const AnimChannel& c : channels) driven.insert({c.node, c.path});
+    out.push_back(int(a));
+  }
+  return out;
+}
+
+std::vector<int> playingAnimations(const Model& m) {
+  return m.playing.empty() ? defaultAnimations(m) : m.playing;
+}
+
+std::string describeAnimations(const Model& m) {
+  if (m.animations.empty()) return "";
+  const std::vector<int> playing = playingAnimations(m);
+  auto name = [&](int a) {
+    return std::to_string(a) + " '" + m.animations[size_t(a)].name + "'";
+  };
+  std::string plays, left;
+  for (const int a : playing) plays += (plays.empty() ? "" : ", ") + name(a);
+  for (int a = 0; a < int(m.animations.size()); ++a)
+    if (std::find(playing.begin(), playing.end(), a) == playing.end())
+      left += (left.empty() ? "" : ", ") + name(a);
+  std::string line = m.name + " plays " + (plays.empty() ? "no animation" : plays);
+  if (!left.empty())
+    line += m.playing.empty()
+                ? "; not " + left + ", which drive what an earlier one drives (pick with "
+                                    "scene.animations or movers[].animations)"
+                : "; not " + left + " (not picked by the case)";
+  return line;
+}
+
 std::vector<glm::mat4> nodeWorldTransforms(const Model& m, double time) {
   return worldTransforms(animatedNodes(m, time, false));
 }
@@ -183,26 +217,44 @@ std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time) {
         d.joints.push_back(world[size_t(skin.joints[j])] * skin.inverseBind[j]);
       d.transform = glm::mat4(1.0f);
     }
-    draws.push_back(std::move(d));
+    for (const glm::mat4& instance : n.instances) {
+      MeshDraw copy = d;
+      copy.transform = world[i] * instance;
+      draws.push_back(std::move(copy));
+    }
+    if (n.instances.empty()) draws.push_back(std::move(d));
   }
   return draws;
 }
 
-void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi) {
+void modelBounds(const Scene& scene, int model, const std::vector<double>& times, glm::vec3& lo,
+                 glm::vec3& hi) {
   bool any = false;
   lo = hi = glm::vec3(0.0f);
-  for (const MeshDraw& d : poseModel(scene, model, 0.0)) {
-    const Mesh& mesh = scene.meshes[size_t(d.mesh)];
-    for (int c = 0; c < 8; ++c) {
-      const glm::vec3 corner((c & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
-                             (c & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
-                             (c & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
-      const glm::vec3 p(d.transform * glm::vec4(corner, 1.0f));
-      lo = any ? glm::min(lo, p) : p;
-      hi = any ? glm::max(hi, p) : p;
-      any = true;
+  auto add = [&](const glm::vec3& p) {
+    lo = any ? glm::min(lo, p) : p;
+    hi = any ? glm::max(hi, p) : p;
+    any = true;
+  };
+  for (const double t : times)
+    for (const MeshDraw& d : poseModel(scene, model, t)) {
+      const Mesh& mesh = scene.meshes[size_t(d.mesh)];
+      if (d.deformed()) {  // the joints and weights move vertices beyond the rest bounds
+        for (const Vertex& v : deformVertices(scene, d))
+          add(glm::vec3(d.transform * glm::vec4(v.position, 1.0f)));
+        continue;
+      }
+      for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
+                               (c & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
+                               (c & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
+        add(glm::vec3(d.transform * glm::vec4(corner, 1.0f)));
+      }
     }
-  }
+}
+
+void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi) {
+  modelBounds(scene, model, {0.0}, lo, hi);
 }
 
 }  // namespace taa::scene

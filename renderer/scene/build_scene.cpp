@@ -8,6 +8,8 @@
 #include "scene/procedural.h"
 #include "scene/scene_error.h"
 #include "scene/textures.h"
+#include "scene/trace_textures.h"
+#include "common/shared.h"
 
 namespace taa::scene {
 namespace {
@@ -109,6 +111,19 @@ void checkNormalStrength(const spec::CaseSpec& spec, const Scene& scene) {
         "normal maps; set material.normal_strength to 0 or taa.mode to another mode");
 }
 
+// The tracer's shader indexes a fixed array of textures (scene/trace_textures.h).
+void checkTraceTextures(const spec::CaseSpec& spec, const Scene& scene) {
+  if (spec.taa.mode != spec::TaaMode::Adaptive) return;
+  const size_t used = traceTextureSlots(scene).textures.size();
+  if (used > TRACE_MAX_TEXTURES)
+    throw SceneError(spec.file, "taa.mode: adaptive ray tracing binds at most " +
+                                    std::to_string(TRACE_MAX_TEXTURES) +
+                                    " textures and the scene's materials use " +
+                                    std::to_string(used) +
+                                    " (base colour, emissive and occlusion maps); use a scene "
+                                    "with fewer textures or another taa.mode");
+}
+
 // render.lod0 acts on textured materials, render.lod0_alpha_test on alpha-tested ones.
 void checkLodMatching(const spec::CaseSpec& spec, const Scene& scene) {
   const auto any = [&](auto pred) {
@@ -177,6 +192,7 @@ Scene buildScene(const spec::CaseSpec& spec) {
   checkAlphaOverride(spec, scene);
   applyAlphaOverride(scene, spec.material.alpha_mode, spec.material.alpha_cutoff);
   checkNormalStrength(spec, scene);
+  checkTraceTextures(spec, scene);
   checkLodMatching(spec, scene);
   if (!spec.debug.image.empty()) scene.still = loadStillImage(spec);
   return scene;

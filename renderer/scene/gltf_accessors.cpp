@@ -110,6 +110,74 @@ AccessorSpan checkSpan(const fs::path& file, const tinygltf::Model& model,
   return span;
 }
 
+uint32_t readIndex(const uint8_t* p, int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    default: {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+  }
+}
+
+// A sparse accessor's substitutions (glTF 2.0, 3.6.2.3): `count` strictly increasing
+// element indices and as many replacement elements, read with the same bounds checks as
+// any accessor. `set(element, valuesBase, valuesStride)` writes one replacement.
+template <class Set>
+void applySparse(const fs::path& file, const tinygltf::Model& model, const tinygltf::Accessor& a,
+                 const std::string& name, int comps, Set set) {
+  const auto& sp = a.sparse;
+  if (sp.count <= 0 || size_t(sp.count) > a.count)
+    fail(file, name + " is sparse with sparse.count " + std::to_string(sp.count) +
+                   ", which must be between 1 and its count " + std::to_string(a.count) +
+                   "; the file is corrupt, re-export it");
+  const int it = sp.indices.componentType;
+  if (it != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && it != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      it != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    fail(file, name + " sparse.indices.componentType " + std::to_string(it) +
+                   " is not an unsigned byte, short or int; the file is corrupt, re-export it");
+  if (sp.indices.bufferView < 0 || sp.values.bufferView < 0)
+    fail(file, name + " is sparse without a bufferView for its indices or values; the file is "
+                      "corrupt, re-export it");
+  tinygltf::Accessor indices;
+  indices.bufferView = sp.indices.bufferView;
+  indices.byteOffset = size_t(std::max(sp.indices.byteOffset, 0));
+  indices.componentType = it;
+  indices.count = size_t(sp.count);
+  indices.type = TINYGLTF_TYPE_SCALAR;
+  tinygltf::Accessor values = a;
+  values.bufferView = sp.values.bufferView;
+  values.byteOffset = size_t(std::max(sp.values.byteOffset, 0));
+  values.count = size_t(sp.count);
+  values.sparse.isSparse = false;
+  // Sparse data is tightly packed whatever the view's byteStride says.
+  const AccessorSpan is = checkSpan(file, model, indices, name + " sparse.indices", 1);
+  const AccessorSpan vs = checkSpan(file, model, values, name + " sparse.values", comps);
+  const size_t isize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(it)));
+  const size_t vsize =
+      size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType))) * size_t(comps);
+  if (is.stride != isize || vs.stride != vsize)
+    fail(file, name + " sparse indices or values sit in a bufferView with a byteStride; sparse "
+                      "data is tightly packed, the file is corrupt, re-export it");
+  int64_t last = -1;
+  for (size_t k = 0; k < is.count; ++k) {
+    const uint32_t e = readIndex(is.base + k * isize, it);
+    if (int64_t(e) <= last || e >= a.count)
+      fail(file, name + " sparse.indices[" + std::to_string(k) + "] is " + std::to_string(e) +
+                     "; they must strictly increase and stay below its count " +
+                     std::to_string(a.count) + ", the file is corrupt, re-export it");
+    last = e;
+    set(size_t(e), vs.base + k * vsize);
+  }
+}
+
 }  // namespace
 
 std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model& model, int index,
@@ -122,18 +190,17 @@ std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model&
   if (comps != want)
     fail(file,
          name + " has " + std::to_string(comps) + " components, expected " + std::to_string(want));
-  if (a.sparse.isSparse)
-    fail(file, name + " is sparse, which is not supported; re-export without sparse accessors");
   const AccessorSpan span = checkSpan(file, model, a, name, comps);
   std::vector<float> out(span.count * size_t(comps), 0.0f);
-  if (!span.base) return out;  // no buffer view: all zeros, as the spec defines
   const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-  const uint8_t* base = span.base;
-  const size_t stride = span.stride;
-  for (size_t i = 0; i < span.count; ++i)
+  auto element = [&](size_t i, const uint8_t* p) {
     for (int c = 0; c < comps; ++c)
       out[i * size_t(comps) + size_t(c)] =
-          component(base + i * stride + size_t(c) * size_t(csize), a.componentType, a.normalized);
+          component(p + size_t(c) * size_t(csize), a.componentType, a.normalized);
+  };
+  // No buffer view: all zeros, as the spec defines (then the sparse values alone count).
+  for (size_t i = 0; span.base && i < span.count; ++i) element(i, span.base + i * span.stride);
+  if (a.sparse.isSparse) applySparse(file, model, a, name, comps, element);
   return out;
 }
 
@@ -149,13 +216,17 @@ std::vector<uint32_t> readGltfIndices(const fs::path& file, const tinygltf::Mode
   const std::vector<float> f = readGltfAccessor(file, model, index, what + " indices", 1);
   // Floats hold integers exactly only up to 2^24; read 32-bit indices directly.
   std::vector<uint32_t> out(f.size());
-  if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && a.bufferView >= 0) {
-    // readGltfAccessor has checked the view, the buffer and the bounds already.
-    const AccessorSpan span = checkSpan(file, model, a, what + " indices", 1);
-    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], span.base + i * span.stride, 4);
-  } else {
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
     for (size_t i = 0; i < out.size(); ++i) out[i] = uint32_t(f[i]);
+    return out;
   }
+  // readGltfAccessor has checked the views, the buffers and the bounds already.
+  const AccessorSpan span = checkSpan(file, model, a, what + " indices", 1);
+  for (size_t i = 0; span.base && i < out.size(); ++i)
+    std::memcpy(&out[i], span.base + i * span.stride, 4);
+  if (a.sparse.isSparse)
+    applySparse(file, model, a, what + " indices", 1,
+                [&](size_t i, const uint8_t* p) { std::memcpy(&out[i], p, 4); });
   return out;
 }
 

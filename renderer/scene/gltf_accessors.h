@@ -16,8 +16,9 @@ namespace taa::scene {
 inline constexpr size_t kMaxUnbackedElements = size_t(1) << 24;
 
 // Reads accessor `index` as floats, `components` per element (integer components are
-// normalised when the accessor says so). Throws SceneError naming `file` and `what`
-// when the accessor is missing, has another shape, is sparse or overruns its buffer.
+// normalised when the accessor says so), sparse substitutions applied. Throws SceneError
+// naming `file` and `what` when the accessor is missing, has another shape or overruns
+// its buffer, or its sparse indices are not strictly increasing within its count.
 std::vector<float> readGltfAccessor(const std::filesystem::path& file, const tinygltf::Model& model,
                                     int index, const std::string& what, int components);
 

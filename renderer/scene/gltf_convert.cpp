@@ -51,78 +51,63 @@ int Converter::texture(int index, const std::string& what, bool linear) {
       rgba[i] = uint8_t((uint32_t(v) * 255u + 32767u) / 65535u);
     }
   }
-  bool repeat = true;
-  if (t.sampler >= 0) {
-    const tinygltf::Sampler& sm = g_.samplers[size_t(t.sampler)];
-    // One wrap mode per texture: clamp only when both axes clamp; mirrored repeat repeats.
-    repeat = !(sm.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
-               sm.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
-  }
-  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), repeat, linear));
+  const TextureSampler sampler =
+      t.sampler >= 0 ? gltfSampler(t.sampler) : TextureSampler{};
+  s_.textures.push_back(makeTexture(img.width, img.height, std::move(rgba), sampler, linear));
   return textures_[key] = int(s_.textures.size()) - 1;
 }
 
-// The UVs are shared (the base colour's KHR_texture_transform is baked into them), so a
-// normal texture must use TEXCOORD_0 and the same transform as the base colour.
-void Converter::normalTexture(int index, const tinygltf::Material& gm, const std::string& name,
-                              Material& m) {
-  const tinygltf::NormalTextureInfo& info = gm.normalTexture;
-  if (info.index < 0) return;
-  if (info.texCoord != 0)
-    fail(name + ".normalTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
-         "; only TEXCOORD_0 is supported, re-export with one UV set");
-  const glm::mat3 own = gltfTextureTransform(file_, info.extensions, name + ".normalTexture");
-  const auto base = uvTransforms_.find(index);
-  const glm::mat3 shared = base != uvTransforms_.end() ? base->second : glm::mat3(1.0f);
-  if (own != shared)
-    fail(name +
-         ".normalTexture has another KHR_texture_transform than the base colour; the two share "
-         "one set of UVs here, give both the same transform");
-  if (base == uvTransforms_.end() && own != glm::mat3(1.0f)) uvTransforms_[index] = own;
-  if (!std::isfinite(info.scale))
-    fail(name + ".normalTexture.scale is not a finite number; give a number such as 1");
-  m.normalTexture = texture(info.index, name + ".normalTexture", true);
-  m.normalScale = float(info.scale);
-}
-
-int Converter::material(int index) {
-  if (auto it = materials_.find(index); it != materials_.end()) return it->second;
-  Material m;  // index -1: the glTF default material (white, opaque, single-sided)
-  if (index >= 0) {
-    if (size_t(index) >= g_.materials.size())
-      fail("a primitive refers to missing materials[" + std::to_string(index) + "]");
-    const tinygltf::Material& gm = g_.materials[size_t(index)];
-    const std::string name = "materials[" + std::to_string(index) + "]";
-    const auto& pbr = gm.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() == 4)
-      m.baseColorFactor = glm::vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
-                                    float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
-    if (pbr.baseColorTexture.index >= 0) {
-      if (pbr.baseColorTexture.texCoord != 0)
-        fail(name + " samples its base colour with TEXCOORD_" +
-             std::to_string(pbr.baseColorTexture.texCoord) +
-             "; only TEXCOORD_0 is supported, re-export with one UV set");
-      m.baseColorTexture = texture(pbr.baseColorTexture.index, name + ".baseColorTexture");
-      uvTransforms_[index] = gltfTextureTransform(file_, pbr.baseColorTexture.extensions,
-                                                  name + ".pbrMetallicRoughness.baseColorTexture");
+// glTF's sampler enums (WebGL's values) as ours; anything else is refused by name.
+TextureSampler Converter::gltfSampler(int index) const {
+  const tinygltf::Sampler& sm = g_.samplers[size_t(index)];
+  const std::string name = "samplers[" + std::to_string(index) + "]";
+  auto wrap = [&](int mode, const char* key) {
+    switch (mode) {
+      case TINYGLTF_TEXTURE_WRAP_REPEAT:
+        return Wrap::Repeat;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+        return Wrap::ClampToEdge;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+        return Wrap::MirroredRepeat;
+      default:
+        fail(name + "." + key + " is " + std::to_string(mode) +
+             ", not 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
     }
-    if (gm.alphaMode == "MASK")
-      m.alphaMode = AlphaMode::Mask;
-    else if (gm.alphaMode == "BLEND")
-      m.alphaMode = AlphaMode::Blend;
-    else if (gm.alphaMode != "OPAQUE" && !gm.alphaMode.empty())
-      fail(name + ".alphaMode '" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
-    normalTexture(index, gm, name, m);
-    m.alphaCutoff = float(gm.alphaCutoff);
-    m.doubleSided = gm.doubleSided;
-    std::string note;
-    m.emissive = gltfEmissive(file_, gm, name, note);
-    note = note.empty() ? "" : file_.string() + ": " + note;
-    if (!note.empty() && std::find(s_.notes.begin(), s_.notes.end(), note) == s_.notes.end())
-      s_.notes.push_back(note);
+  };
+  TextureSampler out;
+  out.wrapS = wrap(sm.wrapS, "wrapS");
+  out.wrapT = wrap(sm.wrapT, "wrapT");
+  if (sm.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST)
+    out.mag = Filter::Nearest;
+  else if (sm.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR && sm.magFilter != -1)
+    fail(name + ".magFilter is " + std::to_string(sm.magFilter) +
+         ", not 9728 (NEAREST) or 9729 (LINEAR)");
+  switch (sm.minFilter) {
+    case -1:  // undefined: the viewer's choice, trilinear here
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      out.min = Filter::Nearest;
+      out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      out.min = Filter::Nearest;
+      out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      out.min = Filter::Nearest;
+      break;
+    default:
+      fail(name + ".minFilter is " + std::to_string(sm.minFilter) +
+           ", not one of glTF's six (9728, 9729, 9984, 9985, 9986, 9987)");
   }
-  s_.materials.push_back(m);
-  return materials_[index] = int(s_.materials.size()) - 1;
+  return out;
 }
 
 namespace {
@@ -168,17 +153,28 @@ int Converter::mesh(int index) {
       fail(what + " has no POSITION attribute; every primitive needs one");
     const std::vector<float> positions = readAccessor(pos->second, what + " POSITION", 3);
     const size_t count = positions.size() / 3;
-    std::vector<float> normals, uvs;
+    std::vector<float> normals, uvs, uvs1;
     if (auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end())
       normals = readAccessor(n->second, what + " NORMAL", 3);
     if (auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end())
       uvs = readAccessor(t->second, what + " TEXCOORD_0", 2);
-    material(prim.material);  // loads the material's texture transform, baked into the UVs
+    if (auto t = prim.attributes.find("TEXCOORD_1"); t != prim.attributes.end())
+      uvs1 = readAccessor(t->second, what + " TEXCOORD_1", 2);
+    // Loads the material's texture transforms, baked into each UV set it samples.
+    const Material& mat = s_.materials[size_t(material(prim.material))];
+    if (uvs1.empty() && (mat.baseColorUv == 1 || mat.normalUv == 1 || mat.emissiveUv == 1 ||
+                         mat.occlusionUv == 1))
+      fail(what + " has no TEXCOORD_1, which a texture of materials[" +
+           std::to_string(prim.material) + "] samples; add the UV set or use TEXCOORD_0");
     if (auto m = uvTransforms_.find(prim.material); m != uvTransforms_.end())
-      for (size_t i = 0; i + 1 < uvs.size(); i += 2) {
-        const glm::vec3 uv = m->second * glm::vec3(uvs[i], uvs[i + 1], 1.0f);
-        uvs[i] = uv.x;
-        uvs[i + 1] = uv.y;
+      for (int set = 0; set < 2; ++set) {
+        std::vector<float>& coords = set == 0 ? uvs : uvs1;
+        const glm::mat3& t = m->second.uv[set];
+        for (size_t i = 0; t != glm::mat3(1.0f) && i + 1 < coords.size(); i += 2) {
+          const glm::vec3 uv = t * glm::vec3(coords[i], coords[i + 1], 1.0f);
+          coords[i] = uv.x;
+          coords[i + 1] = uv.y;
+        }
       }
     std::vector<float> colors;
     int colorComps = 4;
@@ -191,6 +187,7 @@ int Converter::mesh(int index) {
     }
     if ((!normals.empty() && normals.size() != count * 3) ||
         (!uvs.empty() && uvs.size() != count * 2) ||
+        (!uvs1.empty() && uvs1.size() != count * 2) ||
         (!colors.empty() && colors.size() != count * size_t(colorComps)))
       fail(what + " has attributes of different lengths; re-export it");
     const GltfDeform deform = readGltfDeform(file_, g_, prim, what, count);
@@ -212,6 +209,7 @@ int Converter::mesh(int index) {
         v.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 0.0f, 1.0f);
       }
       if (!uvs.empty()) v.uv = glm::make_vec2(&uvs[size_t(i) * 2]);
+      if (!uvs1.empty()) v.uv1 = glm::make_vec2(&uvs1[size_t(i) * 2]);
       if (!colors.empty()) {
         const float* c = &colors[size_t(i) * size_t(colorComps)];
         v.color = glm::vec4(c[0], c[1], c[2], colorComps == 4 ? c[3] : 1.0f);

@@ -37,15 +37,21 @@ std::vector<Skin> readGltfSkins(const std::filesystem::path& file, const tinyglt
                                 const std::map<int, int>& nodes);
 
 // The KHR_texture_transform of a texture reference (identity without one) as a UV
-// matrix; throws SceneError for a malformed one or one selecting another UV set.
-glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
-                               const tinygltf::ExtensionMap& extensions, const std::string& what);
+// matrix, and the UV set it selects in place of the reference's texCoord (-1: none);
+// throws SceneError for a malformed one.
+struct GltfTextureTransform {
+  glm::mat3 uv{1.0f};
+  int texCoord = -1;
+};
+GltfTextureTransform gltfTextureTransform(const std::filesystem::path& file,
+                                          const tinygltf::ExtensionMap& extensions,
+                                          const std::string& what);
 
 // A material's emission (gltf_emissive.cpp): emissiveFactor times
-// KHR_materials_emissive_strength. Throws SceneError for malformed values; a material
-// with an emissive texture gets none and `note` says so.
+// KHR_materials_emissive_strength (an emissiveTexture multiplies it per texel). Throws
+// SceneError for malformed values.
 glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Material& material,
-                       const std::string& what, std::string& note);
+                       const std::string& what);
 
 // EXT_meshopt_compression (gltf_meshopt.cpp). Before tinygltf: gives every fallback
 // buffer without a uri an all-zero data URI of its byteLength; returns whether it

@@ -33,11 +33,16 @@ class Converter {
   }
   // `linear`: data rather than colour (a normal map), cached apart from a colour use.
   int texture(int index, const std::string& what, bool linear = false);
+  TextureSampler gltfSampler(int index) const;
+  // A material's texture reference: the scene texture, and in `uvSet` the UV set it samples
+  // (its texCoord, or its KHR_texture_transform's); records the set's transform.
+  int textureRef(int material, int index, int texCoord, const tinygltf::ExtensionMap& extensions,
+                 const std::string& what, bool linear, int& uvSet);
   int material(int index);
-  void normalTexture(int index, const tinygltf::Material& gm, const std::string& name, Material& m);
   int mesh(int index);
   void addNode(int root, Model& model);
   void addOneNode(int index, int parent, Model& model);
+  void instances(int index, const tinygltf::Node& gn, Node& n);
   void addAnimation(const tinygltf::Animation& a, size_t index, Model& model);
 
   const std::filesystem::path& file_;
@@ -45,7 +50,13 @@ class Converter {
   const std::string& warnings_;
   Scene& s_;
   std::map<int, int> textures_, materials_, meshes_, nodes_;
-  std::map<int, glm::mat3> uvTransforms_;  // per glTF material: its base colour's UV transform
+  // Per glTF material: the KHR_texture_transform of each UV set its textures sample,
+  // baked into that set of its primitives' coordinates.
+  struct UvTransforms {
+    bool given[2] = {false, false};
+    glm::mat3 uv[2] = {glm::mat3(1.0f), glm::mat3(1.0f)};
+  };
+  std::map<int, UvTransforms> uvTransforms_;
 };
 
 }  // namespace taa::scene::gltf_detail

@@ -1,8 +1,6 @@
 // A glTF material's emission: emissiveFactor times KHR_materials_emissive_strength,
 // added to the shaded colour by the raster, the deferred lighting pass and the adaptive
-// tracer alike. The renderer samples no emissive texture; a material with one is left
-// without emission (and reported), since the factor alone would light the whole
-// surface where the texture lights only its marked parts.
+// tracer alike; an emissiveTexture (Material::emissiveTexture) multiplies it per texel.
 #include <cmath>
 
 #include "scene/gltf_convert.h"
@@ -11,7 +9,7 @@
 namespace taa::scene {
 
 glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Material& m,
-                       const std::string& what, std::string& note) {
+                       const std::string& what) {
   glm::vec3 factor(0.0f);
   if (m.emissiveFactor.size() == 3)
     factor = glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]),
@@ -37,12 +35,6 @@ glm::vec3 gltfEmissive(const std::filesystem::path& file, const tinygltf::Materi
     }
   }
   if (factor == glm::vec3(0.0f) || strength == 0.0f) return glm::vec3(0.0f);
-  if (m.emissiveTexture.index >= 0) {
-    note = what +
-           " has an emissiveTexture, which the renderer does not sample; its emission "
-           "is left out";
-    return glm::vec3(0.0f);
-  }
   return factor * strength;
 }
 

@@ -58,8 +58,10 @@ bool gltfHasAnimations(const std::filesystem::path& file) {
 const std::vector<std::string>& supportedGltfExtensions() {
   // KHR_mesh_quantization needs nothing beyond the accessor reader's integer formats.
   static const std::vector<std::string> list = {
-      "EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_materials_emissive_strength",
-      "KHR_mesh_quantization", "KHR_texture_transform"};
+      "EXT_mesh_gpu_instancing",         "EXT_meshopt_compression",
+      "KHR_draco_mesh_compression",      "KHR_materials_emissive_strength",
+      "KHR_materials_unlit",             "KHR_mesh_quantization",
+      "KHR_texture_transform"};
   return list;
 }
 

@@ -1,5 +1,7 @@
 // The glTF converter's scene graph: the default scene's roots, nodes (parents first),
 // cameras, skins and animations. Textures, materials and meshes are gltf_convert.cpp's.
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
@@ -54,6 +56,7 @@ void Converter::addOneNode(int index, int parent, Model& model) {
       fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
     n.mesh = mesh(gn.mesh);
   }
+  instances(index, gn, n);
   if (gn.camera >= 0) {
     if (size_t(gn.camera) >= g_.cameras.size())
       fail("nodes[" + std::to_string(index) + "] refers to a missing camera");
@@ -61,6 +64,51 @@ void Converter::addOneNode(int index, int parent, Model& model) {
   }
   nodes_[index] = int(model.nodes.size());
   model.nodes.push_back(std::move(n));
+}
+
+// EXT_mesh_gpu_instancing: TRANSLATION, ROTATION and SCALE accessors of one count, each
+// instance's transform T * R * S (glTF's node order), missing ones identity.
+void Converter::instances(int index, const tinygltf::Node& gn, Node& n) {
+  const auto ext = gn.extensions.find("EXT_mesh_gpu_instancing");
+  if (ext == gn.extensions.end()) return;
+  const std::string what = "nodes[" + std::to_string(index) + "].extensions.EXT_mesh_gpu_instancing";
+  if (gn.mesh < 0) return;  // nothing to instance
+  if (gn.skin >= 0)
+    fail(what + " instances a skinned mesh, which the extension leaves undefined; remove the "
+                "skin or the instancing");
+  if (!ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject())
+    fail(what + " has no attributes object; give TRANSLATION, ROTATION or SCALE accessors");
+  const tinygltf::Value& attrs = ext->second.Get("attributes");
+  std::vector<float> columns[3];
+  const char* keys[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+  size_t count = 0;
+  bool any = false;
+  for (int k = 0; k < 3; ++k) {
+    if (!attrs.Has(keys[k])) continue;
+    const tinygltf::Value& v = attrs.Get(keys[k]);
+    if (!v.IsInt()) fail(what + ".attributes." + keys[k] + " must be an accessor index");
+    const int comps = k == 1 ? 4 : 3;
+    columns[k] = readAccessor(v.GetNumberAsInt(), what + ".attributes." + keys[k], comps);
+    const size_t c = columns[k].size() / size_t(comps);
+    if (any && c != count)
+      fail(what + ".attributes." + keys[k] + " has " + std::to_string(c) +
+           " elements where the others have " + std::to_string(count) +
+           "; every attribute needs one per instance");
+    count = c;
+    any = true;
+  }
+  if (!any) fail(what + ".attributes has none of TRANSLATION, ROTATION and SCALE");
+  n.instances.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
+    glm::mat4 m(1.0f);
+    if (!columns[0].empty()) m = glm::translate(m, glm::make_vec3(&columns[0][i * 3]));
+    if (!columns[1].empty()) {
+      const float* q = &columns[1][i * 4];
+      m *= glm::mat4_cast(glm::normalize(glm::quat(q[3], q[0], q[1], q[2])));
+    }
+    if (!columns[2].empty()) m = glm::scale(m, glm::make_vec3(&columns[2][i * 3]));
+    n.instances.push_back(m);
+  }
 }
 
 void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& model) {

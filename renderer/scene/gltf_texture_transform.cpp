@@ -1,7 +1,7 @@
-// KHR_texture_transform on a material's base-colour texture. The renderer samples only
-// that texture, through TEXCOORD_0, so the loader bakes the affine transform into the
-// primitive's UVs: rasterisation, the reference and the adaptive tracer (and its ray
-// differentials) then all see the transformed coordinates with no per-draw state.
+// KHR_texture_transform on a material's texture. The loader bakes the affine transform
+// into the primitive's UV set the texture samples (Converter::textureRef): rasterisation,
+// the reference and the adaptive tracer (and its ray differentials) then all see the
+// transformed coordinates with no per-draw state.
 #include <cmath>
 
 #include "scene/gltf_convert.h"
@@ -35,16 +35,18 @@ std::vector<float> numbers(const std::filesystem::path& file, const tinygltf::Va
 
 }  // namespace
 
-glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
-                               const tinygltf::ExtensionMap& extensions, const std::string& what) {
+GltfTextureTransform gltfTextureTransform(const std::filesystem::path& file,
+                                          const tinygltf::ExtensionMap& extensions,
+                                          const std::string& what) {
+  GltfTextureTransform out;
   const auto it = extensions.find("KHR_texture_transform");
-  if (it == extensions.end()) return glm::mat3(1.0f);
+  if (it == extensions.end()) return out;
   const tinygltf::Value& ext = it->second;
-  if (ext.Has("texCoord") && number(ext.Get("texCoord")) &&
-      ext.Get("texCoord").GetNumberAsInt() != 0)
-    throw SceneError(file, what + ".extensions.KHR_texture_transform.texCoord selects TEXCOORD_" +
-                               std::to_string(ext.Get("texCoord").GetNumberAsInt()) +
-                               "; only TEXCOORD_0 is supported, re-export with one UV set");
+  if (ext.Has("texCoord")) {
+    if (!ext.Get("texCoord").IsInt())
+      throw SceneError(file, what + ".extensions.KHR_texture_transform.texCoord must be an integer");
+    out.texCoord = ext.Get("texCoord").GetNumberAsInt();
+  }
   const std::vector<float> offset = numbers(file, ext, "offset", 2, {0.0f, 0.0f}, what);
   const float rotation = numbers(file, ext, "rotation", 1, {0.0f}, what)[0];
   const std::vector<float> scale = numbers(file, ext, "scale", 2, {1.0f, 1.0f}, what);
@@ -55,7 +57,8 @@ glm::mat3 gltfTextureTransform(const std::filesystem::path& file,
   const glm::mat3 t(1, 0, 0, 0, 1, 0, offset[0], offset[1], 1);
   const glm::mat3 r(c, -s, 0, s, c, 0, 0, 0, 1);
   const glm::mat3 sc(scale[0], 0, 0, 0, scale[1], 0, 0, 0, 1);
-  return t * r * sc;
+  out.uv = t * r * sc;
+  return out;
 }
 
 }  // namespace taa::scene

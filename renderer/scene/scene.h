@@ -20,8 +20,24 @@ struct Vertex {
   glm::vec3 normal;
   glm::vec2 uv;
   glm::vec4 color{1.0f};  // linear RGBA (glTF COLOR_0), multiplies the base colour
+  glm::vec2 uv1{0.0f};    // glTF TEXCOORD_1, for the textures of a material that name it
 };
-static_assert(sizeof(Vertex) == 48);
+static_assert(sizeof(Vertex) == 56);
+
+// How a texture is sampled: a glTF sampler. Without one glTF repeats on both axes and
+// leaves the filters to the viewer; ours are then linear with linear mip blending.
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class Filter { Linear, Nearest };
+enum class MipFilter { Linear, Nearest, None };  // None: only level 0 (minFilter NEAREST / LINEAR)
+struct TextureSampler {
+  Wrap wrapS = Wrap::Repeat;  // along u
+  Wrap wrapT = Wrap::Repeat;  // along v
+  Filter mag = Filter::Linear;
+  Filter min = Filter::Linear;
+  MipFilter mip = MipFilter::Linear;
+  // One small integer per distinct sampler (the GPU scene keeps one VkSampler each).
+  int key() const { return ((int(wrapS) * 3 + int(wrapT)) * 2 + int(mag)) * 6 + int(min) * 3 + int(mip); }
+};
 
 // RGBA8 texels, sRGB-encoded colour with linear alpha; levels[0] is full size,
 // each further level half the size (rounded down, at least 1) down to 1x1.
@@ -32,7 +48,7 @@ struct Texture {
     std::vector<uint8_t> rgba;
   };
   std::vector<Level> levels;
-  bool repeat = true;  // wrap mode; false clamps to edge
+  TextureSampler sampler;
   // Data, not colour (normal maps): uploaded as UNORM, mips average the stored values.
   bool linear = false;
 };
@@ -52,6 +68,18 @@ struct Material {
   // its scale; -1: none.
   int normalTexture = -1;
   float normalScale = 1.0f;
+  // glTF emissiveTexture: its sRGB colour multiplies `emissive` (-1: none, emission is
+  // uniform). Meaningful only where `emissive` is not zero.
+  int emissiveTexture = -1;
+  // glTF occlusionTexture (linear, red channel) and its strength: the ambient term is
+  // multiplied by 1 + strength * (red - 1). -1: none.
+  int occlusionTexture = -1;
+  float occlusionStrength = 1.0f;
+  // KHR_materials_unlit: the surface shows its base colour (times vertex colour), no
+  // lighting, shadows, emission, occlusion or normal map.
+  bool unlit = false;
+  // Which UV set (0: Vertex::uv, 1: Vertex::uv1) each texture samples (glTF texCoord).
+  int baseColorUv = 0, normalUv = 0, emissiveUv = 0, occlusionUv = 0;
 };
 
 // A run of indices drawn with one material.
@@ -96,6 +124,9 @@ struct Node {
   int camera = -1;  // index into the same Model's cameras, -1 = none
   int skin = -1;    // index into the same Model's skins, -1 = none
   std::vector<float> weights;  // morph weights overriding the mesh's; empty: the mesh's
+  // EXT_mesh_gpu_instancing: the mesh is drawn once per transform, each applied before the
+  // node's own (world * instance); empty: drawn once.
+  std::vector<glm::mat4> instances;
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 scale{1.0f};
@@ -143,7 +174,7 @@ struct Model {
   std::vector<Camera> cameras;
   std::vector<Skin> skins;
   // Indices of the animations that play together, in this order (a later channel on the
-  // same node and path wins); empty: every animation in file order. A case may pick some.
+  // same node and path wins); empty: defaultAnimations(). A case may pick some.
   std::vector<int> playing;
 };
 
@@ -179,7 +210,7 @@ std::vector<Vertex> deformVertices(const Scene& scene, const MeshDraw& draw);
 
 // Evaluates a model's node hierarchy at `time` seconds into its playing animations,
 // each looping over its own duration, returning every mesh-bearing node in node
-// order. Pure function.
+// order (an instanced node once per instance, in instance order). Pure function.
 std::vector<MeshDraw> poseModel(const Scene& scene, int model, double time);
 
 // World transform of every node at `time` seconds into the model's playing
@@ -190,7 +221,25 @@ std::vector<glm::mat4> nodeWorldTransforms(const Model& model, double time);
 // changes with time).
 bool modelAnimates(const Model& model);
 
-// Object-space bounds of a model at rest (time 0), for framing a camera.
+// What plays when a case picks no animations: the first, and every later one that drives
+// no (node, property) an animation already chosen drives. Independent clips (one box
+// spinning, another rising) play together; alternatives of one rig (Walk, Run, Idle) do
+// not overwrite each other: the first plays, as a glTF viewer shows it.
+std::vector<int> defaultAnimations(const Model& model);
+
+// The animations that play (Model::playing, else the default).
+std::vector<int> playingAnimations(const Model& model);
+
+// One run-log line naming what plays and what is left out, "" for a model without
+// animations.
+std::string describeAnimations(const Model& model);
+
+// Object-space bounds of a model posed at each of `times` (seconds into its playing
+// animations, looped as the renderer plays them): skinned and morphed meshes by their
+// deformed vertices, rigid ones by their transformed boxes. For framing a camera.
+void modelBounds(const Scene& scene, int model, const std::vector<double>& times, glm::vec3& lo,
+                 glm::vec3& hi);
+// The same at time 0 alone.
 void modelBounds(const Scene& scene, int model, glm::vec3& lo, glm::vec3& hi);
 
 }  // namespace taa::scene

@@ -159,10 +159,11 @@ void generateMips(Texture& texture) {
     texture.levels.push_back(reduce(texture.levels.back(), texture.linear));
 }
 
-Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat, bool linear) {
+Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, TextureSampler sampler,
+                    bool linear) {
   assert(width > 0 && height > 0 && rgba.size() == size_t(width) * size_t(height) * 4);
   Texture t;
-  t.repeat = repeat;
+  t.sampler = sampler;
   t.linear = linear;
   t.levels.push_back({width, height, std::move(rgba)});
   generateMips(t);

@@ -35,8 +35,8 @@ float hashUnit(uint32_t h);
 void generateMips(Texture& texture);
 
 // A texture with one level taken from `rgba` (width * height * 4 bytes) plus its mips.
-Texture makeTexture(int width, int height, std::vector<uint8_t> rgba, bool repeat = true,
-                    bool linear = false);
+Texture makeTexture(int width, int height, std::vector<uint8_t> rgba,
+                    TextureSampler sampler = {}, bool linear = false);
 
 // Whether any texel of level 0 has alpha below 255.
 bool hasTranslucentTexels(const Texture& texture);

@@ -35,7 +35,8 @@ void fields(V& v, SceneSpec& s) {
   const char* anim = "renderer/scene/animation.cpp";
   v.field("animations", s.animations,
           Meta{"the glTF scene's animations that play together, each a name or a decimal index; "
-               "empty: all of them",
+               "empty: the first and each later one driving nothing an earlier one drives "
+               "(docs/gltf.md)",
                "renderer/scene/build_scene.cpp"});
   v.field("animation_speed", s.animation_speed, Range<float>{0.0f, 1e3f},
           Meta{"playback speed of the glTF scene's animations (0 holds them at the offset)", anim});

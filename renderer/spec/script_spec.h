@@ -211,7 +211,8 @@ void fields(V& v, MoverSpec& s) {
                "renderer/scene/animation.cpp"});
   v.field("animations", s.animations,
           Meta{"the glTF model's animations that play together, each a name or a decimal index; "
-               "empty: all of them",
+               "empty: the first and each later one driving nothing an earlier one drives "
+               "(docs/gltf.md)",
                "renderer/scene/build_scene.cpp"});
   const char* track = "renderer/script/tracks.cpp";
   v.field("track", s.track,

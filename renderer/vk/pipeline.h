@@ -109,6 +109,9 @@ struct GraphicsDesc {
   bool depthWrite = true;
   VkCompareOp depthCompare = VK_COMPARE_OP_GREATER;  // reversed Z
   VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
+  // Cull mode and front face set per draw (vkCmdSetCullMode / vkCmdSetFrontFace, core in
+  // Vulkan 1.3) instead of cullMode: single- and double-sided materials, mirrored instances.
+  bool dynamicFaces = false;
   bool blendFirstAttachment = false;       // premultiplied-free "over" blending on attachment 0
   uint32_t samples = 1;                    // rasterization samples, the attachments' count
 };

@@ -28,6 +28,18 @@ using uint = uint32_t;
 #define GBUF_BINDING_PREV_POSITIONS 3  // deformed vertices' positions at frame - 1
 #define GBUF_BINDING_SHADOW 4          // shadow atlas (GBUF_OUTPUT_SHADOW variants only)
 #define GBUF_BINDING_NORMAL_MAP 5      // normal texture (read when DrawPush emissive.w != 0)
+#define GBUF_BINDING_EMISSIVE_MAP 6    // emissive texture (read with MATERIAL_EMISSIVE_MAP)
+#define GBUF_BINDING_OCCLUSION_MAP 7   // occlusion texture (read with MATERIAL_OCCLUSION_MAP)
+
+// A material's textures beyond the base colour and their UV sets (DrawPush::maps,
+// TraceMaterial::maps; renderer/gpu_scene.cpp's materialMaps writes them).
+#define MATERIAL_BASE_UV1 1u          // the base colour samples TEXCOORD_1
+#define MATERIAL_NORMAL_UV1 2u        // the normal map samples TEXCOORD_1
+#define MATERIAL_EMISSIVE_MAP 4u      // an emissive texture multiplies the emission
+#define MATERIAL_EMISSIVE_UV1 8u
+#define MATERIAL_OCCLUSION_MAP 16u    // an occlusion texture scales the ambient term
+#define MATERIAL_OCCLUSION_UV1 32u
+#define MATERIAL_UNLIT 64u            // KHR_materials_unlit: the base colour, unshaded
 
 // Fragment outputs; a case allocates only the targets it needs and the rest are discarded.
 #define GBUF_OUT_COLOR 0
@@ -54,7 +66,7 @@ TAA_BLOCK(ShadowPush) {
   mat4 lightViewProj;  // world -> the cascade's clip space (orthographic, depth 0 at the light)
   uint instance;
   float alphaCutoff;  // < 0: no alpha test
-  uint pad0;
+  uint maps;          // MATERIAL_* bits (MATERIAL_BASE_UV1 picks the alpha test's UV set)
   uint pad1;
   vec4 baseColor;  // linear RGBA factor (its alpha takes part in the alpha test)
 };
@@ -108,6 +120,10 @@ TAA_BLOCK(DrawPush) {
   // emissive rgb: linear radiance added to the shaded colour (0: none); w: normal-map scale
   // (material.normal_strength times the texture's scale; 0: no normal map)
   vec4 emissive;
+  uint maps;                // MATERIAL_* bits
+  float occlusionStrength;  // with MATERIAL_OCCLUSION_MAP: ambient *= 1 + strength * (red - 1)
+  uint pad0;
+  uint pad1;
 };
 
 // ---- Temporal resolve (taa_resolve.comp and shaders/taa/*.glsl) ----
@@ -271,6 +287,8 @@ TAA_BLOCK(TraceShading) {
   vec4 c0;    // linear RGBA vertex colours (glTF COLOR_0), multiplying the base colour when uv2.z is 1
   vec4 c1;
   vec4 c2;
+  vec4 uv1_01;  // TEXCOORD_1 of vertices 0 and 1
+  vec4 uv1_2;   // TEXCOORD_1 of vertex 2 (xy)
 };
 
 TAA_BLOCK(TraceMaterial) {
@@ -278,8 +296,12 @@ TAA_BLOCK(TraceMaterial) {
   float alphaCutoff;  // < 0: no alpha test
   uint texture;       // slot in the texture array
   uint blend;         // 1: alpha-blended ("over", composited front to back along the ray)
+  uint doubleSided;   // 0: rays pass through the back faces, as the raster culls them
+  vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: occlusion strength
+  uint maps;             // MATERIAL_* bits, as the raster's DrawPush::maps
+  uint emissiveTexture;  // slot of the emissive texture (with MATERIAL_EMISSIVE_MAP)
+  uint occlusionTexture; // slot of the occlusion texture (with MATERIAL_OCCLUSION_MAP)
   uint pad;
-  vec4 emissive;      // rgb: linear radiance added to the shaded colour (0: none); w: 0
 };
 
 TAA_BLOCK(TraceUniforms) {
@@ -335,8 +357,8 @@ TAA_BLOCK(EdgeListHeader) {
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 32);
 static_assert(sizeof(TraceTriangle) == 48);
-static_assert(sizeof(TraceShading) == 128);
-static_assert(sizeof(TraceMaterial) == 48);
+static_assert(sizeof(TraceShading) == 160);
+static_assert(sizeof(TraceMaterial) == 64);
 static_assert(sizeof(TraceUniforms) == 48 + 16 * TRACE_MAX_SAMPLES);
 static_assert(sizeof(SegmentationUniforms) == 64);
 static_assert(sizeof(InjectPush) == 80);
@@ -346,7 +368,7 @@ static_assert(sizeof(TaaUniforms) == 2 * 64 + (5 + TAA_SETTING_VEC4S) * 16);
 static_assert(sizeof(FrameUniforms) == (7 + SHADOW_MAX_CASCADES) * 64 + 11 * 16);
 static_assert(sizeof(ShadowPush) == 96);
 static_assert(sizeof(InstanceData) == 3 * 64 + 16);
-static_assert(sizeof(DrawPush) == 48);
+static_assert(sizeof(DrawPush) == 64);
 static_assert(sizeof(TscmaaUniforms) == 48);
 static_assert(sizeof(EdgeListHeader) == 16);
 }  // namespace taa::gpu

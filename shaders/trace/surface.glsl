@@ -12,11 +12,18 @@ struct Surface {
   vec3 normal;  // unit, facing the ray (the raster flips back faces' normals too)
   vec2 uv;
   vec2 dUvDx, dUvDy;
+  vec2 uv1;  // TEXCOORD_1 and its derivatives, for the textures that sample it
+  vec2 dUv1Dx, dUv1Dy;
   vec4 color;  // interpolated vertex colour (meaningful where the mesh has COLOR_0)
+  bool front;  // the ray meets the triangle's front face
 };
 
 vec2 interpolateUv(TraceShading s, float b1, float b2) {
   return s.uv01.xy * (1.0 - b1 - b2) + s.uv01.zw * b1 + s.uv2.xy * b2;
+}
+
+vec2 interpolateUv1(TraceShading s, float b1, float b2) {
+  return s.uv1_01.xy * (1.0 - b1 - b2) + s.uv1_01.zw * b1 + s.uv1_2.xy * b2;
 }
 
 // Barycentrics (of v1, v2) where the line o + t d meets the triangle's plane,
@@ -46,14 +53,17 @@ Surface surfaceAt(Hit h, CameraRay r, CameraRay rx, CameraRay ry) {
   vec3 n = normalize(s.n0.xyz * w + s.n1.xyz * h.u + s.n2.xyz * h.v);
   // Front faces wind counter-clockwise on screen (the raster's VK_FRONT_FACE_COUNTER_CLOCKWISE
   // under a Y-flipped projection), so their geometric normal faces the ray.
-  bool front = dot(cross(tri.v1 - tri.v0, tri.v2 - tri.v0), r.dir) < 0.0;
-  f.normal = front ? n : -n;
+  f.front = dot(cross(tri.v1 - tri.v0, tri.v2 - tri.v0), r.dir) < 0.0;
+  f.normal = f.front ? n : -n;
   f.uv = interpolateUv(s, h.u, h.v);
   f.color = s.c0 * w + s.c1 * h.u + s.c2 * h.v;
   vec2 bx = planeBarycentrics(tri, rx.origin, rx.dir);
   vec2 by = planeBarycentrics(tri, ry.origin, ry.dir);
   f.dUvDx = interpolateUv(s, bx.x, bx.y) - f.uv;
   f.dUvDy = interpolateUv(s, by.x, by.y) - f.uv;
+  f.uv1 = interpolateUv1(s, h.u, h.v);
+  f.dUv1Dx = interpolateUv1(s, bx.x, bx.y) - f.uv1;
+  f.dUv1Dy = interpolateUv1(s, by.x, by.y) - f.uv1;
   return f;
 }
 

@@ -6,34 +6,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "support/content.h"
 #include "support/gpu.h"
 
 namespace taa {
 namespace {
 
-struct TracedAndRaster {
-  Image traced, raster;
-};
+using test::TracedAndRaster;
+using test::traceEveryPixel;
 
-TracedAndRaster traceEveryPixel(const std::string& members) {
-  const auto spec = test::caseFromJson("{" + members + R"(,
-      "jitter": {"pattern": "none"}, "taa": {"mode": "adaptive"},
-      "adaptive": {"trace_all": true, "samples": 1}, "script": {"frames": 1}})");
-  RenderOptions o;
-  o.captures |= {Capture::Current};
-  const auto records = test::renderCaseWith(spec, o, {0});
-  return {records.back().color, test::capturedImage(records.back(), Capture::Current)};
-}
-
-// Traced and raster agree to float rounding (half-float storage) over a 5x5 block.
 void expectSameAround(const TracedAndRaster& r, int x, int y, const char* what) {
-  for (int dy = -2; dy <= 2; ++dy)
-    for (int dx = -2; dx <= 2; ++dx)
-      for (int c = 0; c < 3; ++c) {
-        const float raster = r.raster.at(x + dx, y + dy, c);
-        EXPECT_NEAR(r.traced.at(x + dx, y + dy, c), raster, 2e-3f * std::max(1.0f, raster))
-            << what << " at (" << x + dx << ", " << y + dy << ") channel " << c;
-      }
+  test::expectTracedMatchesRaster(r, x, y, what);
 }
 
 TEST(AdaptiveShading, TracedVertexColoursMatchTheRaster) {

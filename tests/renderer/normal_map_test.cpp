@@ -102,8 +102,8 @@ TEST(NormalMap, TheLoaderKeepsTheMapLinearAndItsScale) {
   }
   // Mips of a normal map average the stored values (a colour map averages in linear light).
   const std::vector<uint8_t> blackWhite = {0, 0, 0, 255, 255, 255, 255, 255};
-  const auto data = scene::makeTexture(2, 1, blackWhite, true, true);
-  const auto colour = scene::makeTexture(2, 1, blackWhite, true, false);
+  const auto data = scene::makeTexture(2, 1, blackWhite, {}, true);
+  const auto colour = scene::makeTexture(2, 1, blackWhite, {}, false);
   EXPECT_EQ(data.levels[1].rgba[0], 128);
   EXPECT_EQ(colour.levels[1].rgba[0], scene::linearToSrgb8(0.5));
 }

@@ -138,5 +138,81 @@ TEST(AnimationSampling, NoAnimationIsRest) {
   expectNearAnimation(origin(poseModel(s, 0, 123.0)[0].transform), {1, 2, 3});
 }
 
+// Two clips on one node, as exporters write a rig's Walk and Run, and a third on another
+// node: by default the first and the independent third play, not the second, which would
+// overwrite the first (before issue 25 all three played and the second won).
+Scene threeClips() {
+  AnimChannel walk;
+  walk.path = AnimPath::Translation;
+  walk.times = {0.0f, 1.0f};
+  walk.values = {{0, 0, 0, 0}, {1, 0, 0, 0}};
+  Scene s = oneNode(walk);
+  Model& m = s.models[0];
+  m.animations[0].name = "Walk";
+  Animation run = m.animations[0];
+  run.name = "Run";
+  run.channels[0].values = {{0, 0, 0, 0}, {4, 0, 0, 0}};
+  m.animations.push_back(run);
+  Node second = m.nodes[0];
+  second.name = "second";
+  m.nodes.push_back(second);
+  Animation bob = m.animations[0];
+  bob.name = "Bob";
+  bob.channels[0].node = 1;
+  bob.channels[0].values = {{0, 0, 0, 0}, {0, 2, 0, 0}};
+  m.animations.push_back(bob);
+  return s;
+}
+
+TEST(AnimationDefault, TheFirstOfClipsDrivingOneNodePlaysWithTheIndependentOnes) {
+  Scene s = threeClips();
+  EXPECT_EQ(defaultAnimations(s.models[0]), (std::vector<int>{0, 2}));
+  const auto d = poseModel(s, 0, 0.5);
+  expectNearAnimation(origin(d[0].transform), {0.5f, 0, 0});  // Walk, not Run's 2
+  expectNearAnimation(origin(d[1].transform), {0, 1.0f, 0});  // Bob plays as well
+  EXPECT_EQ(describeAnimations(s.models[0]),
+            "m plays 0 'Walk', 2 'Bob'; not 1 'Run', which drive what an earlier one drives "
+            "(pick with scene.animations or movers[].animations)");
+  s.models[0].playing = {1};  // a case's pick
+  expectNearAnimation(origin(poseModel(s, 0, 0.5)[0].transform), {2.0f, 0, 0});
+  EXPECT_EQ(describeAnimations(s.models[0]),
+            "m plays 1 'Run'; not 0 'Walk', 2 'Bob' (not picked by the case)");
+}
+
+TEST(AnimationDefault, KhronosBoxAnimatedPlaysBothOfItsAnimations) {
+  // Its two animations drive different nodes (the inner box's translation, its rotation on
+  // another node): both play, as its README shows.
+  Scene s;
+  s.models.push_back(loadGltf(testing::assetPath("khronos/BoxAnimated.gltf"), s));
+  EXPECT_EQ(defaultAnimations(s.models[0]), (std::vector<int>{0, 1}));
+}
+
+TEST(PosedBounds, HoldEveryPoseAtTheGivenTimes) {
+  // A box sliding 1 unit a second along +X for one second, then holding for one: at rest its
+  // bounds end at x 1; posed over the first second they reach 2.
+  AnimChannel slide;
+  slide.path = AnimPath::Translation;
+  slide.times = {0.0f, 1.0f, 2.0f};
+  slide.values = {{0, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}};
+  const Scene s = oneNode(slide);
+  glm::vec3 lo, hi;
+  modelBounds(s, 0, lo, hi);
+  EXPECT_NEAR(hi.x, 1.0f, 1e-6f);
+  modelBounds(s, 0, {0.0, 0.5, 1.0}, lo, hi);
+  EXPECT_NEAR(hi.x, 2.0f, 1e-6f);
+  EXPECT_NEAR(lo.x, -1.0f, 1e-6f);
+}
+
+TEST(PosedBounds, SkinnedMeshesUseTheirDeformedVertices) {
+  // skinned_quad.gltf: the right edge rises 0.8 units a second; the bind-pose bounds stop at
+  // y 0.5, the pose at 5 s reaches 4.5.
+  Scene s;
+  s.models.push_back(loadGltf(testing::assetPath("skinned_quad.gltf"), s));
+  glm::vec3 lo, hi;
+  modelBounds(s, 0, {0.0, 5.0}, lo, hi);
+  EXPECT_NEAR(hi.y, 4.5f, 1e-4f);
+  EXPECT_NEAR(lo.y, -0.5f, 1e-4f);
+}
+
 }  // namespace
 }  // namespace taa::scene

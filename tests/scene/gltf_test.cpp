@@ -58,7 +58,8 @@ TEST(GltfLoad, TexturedBoxWithEmbeddedPng) {
   EXPECT_FALSE(m.doubleSided);
   ASSERT_EQ(m.baseColorTexture, 0);
   const Texture& t = l.scene.textures[0];
-  EXPECT_FALSE(t.repeat) << "sampler clamps both axes";
+  EXPECT_EQ(t.sampler.wrapS, Wrap::ClampToEdge) << "sampler clamps both axes";
+  EXPECT_EQ(t.sampler.wrapT, Wrap::ClampToEdge);
   ASSERT_EQ(t.levels.size(), 5u);
   EXPECT_EQ(t.levels[0].width, 16);
   EXPECT_EQ(t.levels[4].width, 1);
@@ -122,7 +123,10 @@ TEST(GltfLoad, GlbWithoutNormalsGetsFlatNormals) {
   EXPECT_EQ(t.levels[1].height, 1);
   EXPECT_EQ(t.levels[0].rgba[0], 255);  // (0, 0) red
   EXPECT_EQ(t.levels[0].rgba[6], 255);  // (1, 0) blue
-  EXPECT_TRUE(t.repeat);
+  EXPECT_EQ(t.sampler.wrapS, Wrap::Repeat) << "no sampler: repeat, linear, linear mips";
+  EXPECT_EQ(t.sampler.wrapT, Wrap::Repeat);
+  EXPECT_EQ(t.sampler.mag, Filter::Linear);
+  EXPECT_EQ(t.sampler.mip, MipFilter::Linear);
 }
 
 TEST(GltfLoad, AnimatedModelWithExternalBuffer) {

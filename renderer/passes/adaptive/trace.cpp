@@ -7,6 +7,7 @@
 
 #include "api/device_error.h"
 #include "passes/adaptive/trace_geometry.h"
+#include "scene/trace_textures.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
@@ -69,30 +70,29 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
   if (ctx.info().maxPushDescriptors < TRACE_BINDING_COUNT - 1 + TRACE_MAX_TEXTURES)
     throw vk::EnvironmentError(ctx.info().name +
                                " pushes too few descriptors for the adaptive tracer");
-  // One texture slot per distinct (texture, sampler) the materials use.
+  // One texture slot per distinct texture the materials' traced maps use
+  // (traceTextureSlots: the case loader refuses a scene with more than the shader has).
   const scene::Scene& cpu = scene.cpu();
-  std::map<std::pair<VkImageView, VkSampler>, uint32_t> slots;
+  const scene::TraceTextureSlots slots = scene::traceTextureSlots(cpu);
+  for (const int texture : slots.textures) {
+    views_.push_back(scene.mapView(texture));
+    samplers_.push_back(scene.mapSampler(texture));
+  }
+  if (views_.size() > TRACE_MAX_TEXTURES)
+    throw std::logic_error("adaptive trace: more texture slots than the case check allows");
   std::vector<gpu::TraceMaterial> materials;
-  for (int m = 0; m < int(cpu.materials.size()); ++m) {
-    const auto key = std::make_pair(scene.textureView(m), scene.sampler(m));
-    auto it = slots.find(key);
-    if (it == slots.end()) {
-      if (views_.size() == TRACE_MAX_TEXTURES)
-        throw UnsupportedSettingError(
-            "taa.mode: adaptive tracing binds at most " + std::to_string(TRACE_MAX_TEXTURES) +
-            " textures and this scene's materials use more; use another taa.mode or a scene "
-            "with fewer textured materials");
-      it = slots.emplace(key, uint32_t(views_.size())).first;
-      views_.push_back(key.first);
-      samplers_.push_back(key.second);
-    }
-    const scene::Material& src = cpu.materials[size_t(m)];
+  for (size_t m = 0; m < cpu.materials.size(); ++m) {
+    const scene::Material& src = cpu.materials[m];
     gpu::TraceMaterial t{};
     t.baseColor = src.baseColorFactor;
     t.alphaCutoff = src.alphaMode == scene::AlphaMode::Mask ? src.alphaCutoff : -1.0f;
-    t.texture = it->second;
+    t.texture = uint32_t(slots.base[m]);
     t.blend = src.alphaMode == scene::AlphaMode::Blend ? 1u : 0u;
-    t.emissive = glm::vec4(src.emissive, 0.0f);
+    t.doubleSided = src.doubleSided ? 1u : 0u;
+    t.emissive = glm::vec4(src.emissive, src.occlusionStrength);
+    t.maps = materialMaps(src);
+    t.emissiveTexture = uint32_t(slots.emissive[m]);
+    t.occlusionTexture = uint32_t(slots.occlusion[m]);
     materials.push_back(t);
   }
   // The array is declared full size: unused slots repeat the first texture.

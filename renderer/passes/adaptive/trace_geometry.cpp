@@ -1,6 +1,7 @@
 #include "passes/adaptive/trace_geometry.h"
 
 #include <algorithm>
+#include <utility>
 #include <glm/mat3x3.hpp>
 
 namespace taa {
@@ -27,6 +28,9 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
     for (uint32_t k = 0; k + 2 < prim.indexCount; k += 3) {
       const scene::Vertex* v[3];
       for (int j = 0; j < 3; ++j) v[j] = &base[scene.indices[prim.firstIndex + k + uint32_t(j)]];
+      // A mirrored instance's front faces wind clockwise (glTF): reordered, every triangle's
+      // front winds counter-clockwise in world space, which is what the tracer tests.
+      if (d.mirrored) std::swap(v[1], v[2]);
       auto world = [&](int j) { return glm::vec3(inst.model * glm::vec4(v[j]->position, 1.0f)); };
       triangles.push_back({world(0), world(1), world(2)});
       if (shading) {
@@ -39,6 +43,8 @@ void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool mov
         s.c0 = v[0]->color;
         s.c1 = v[1]->color;
         s.c2 = v[2]->color;
+        s.uv1_01 = glm::vec4(v[0]->uv1, v[1]->uv1);
+        s.uv1_2 = glm::vec4(v[2]->uv1, 0.0f, 0.0f);
         shading->push_back(s);
       }
       if (materials) materials->push_back(uint32_t(prim.material));

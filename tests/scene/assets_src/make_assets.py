@@ -304,3 +304,10 @@ if __name__ == "__main__":
     more.quantized_quad()
     more.node_weights()
     more.emissive()
+    import make_assets_materials as materials  # sidedness, samplers, sparse, UV sets, unlit, instancing
+    materials.culling()
+    materials.samplers()
+    materials.sparse()
+    materials.uv1_emissive()
+    materials.unlit()
+    materials.instancing()

@@ -45,7 +45,7 @@ std::optional<spec::CaseSpec> withSetting(const nlohmann::json& base, const std:
 
 std::vector<FrameRecord> renderReferences(const spec::CaseSpec& spec, ReferenceCache* cache) {
   RenderOptions o;
-  o.reference = true;
+  o.captures |= {Capture::Reference};
   if (cache) {
     o.referenceCache = cache;
     o.referenceKey = run::referenceKey(spec);

@@ -9,10 +9,10 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/errors.h"
 #include "core/output_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
-#include "scene/scene_error.h"
 #include "spec/case_spec.h"
 
 namespace taa::cli {
@@ -76,7 +76,7 @@ int cmdNewCase(const Args& args) {
   glm::vec3 lo, hi;
   scene::modelBounds(scene, 0, times, lo, hi);
   if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
-    throw scene::SceneError(scenePath, "its posed bounds are not finite; check its transforms");
+    throw InputError(scenePath.string() + ": its posed bounds are not finite; check its transforms");
   const glm::vec3 centre = (lo + hi) * 0.5f;
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
   // Far enough that the bounding sphere fits the 60-degree vertical field of view,

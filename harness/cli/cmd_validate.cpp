@@ -6,9 +6,8 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/errors.h"
 #include "scene/build_scene.h"
-#include "scene/scene_error.h"
-#include "script/track.h"
 
 namespace taa::cli {
 
@@ -32,10 +31,7 @@ int cmdValidate(const Args& args) {
     } catch (const cases::CaseError& e) {
       for (const auto& p : e.problems()) std::cerr << "error: " << p << "\n";
       ++bad;
-    } catch (const scene::SceneError& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      ++bad;
-    } catch (const script::TrackError& e) {
+    } catch (const InputError& e) {  // the scene, a track, the shader, an image: exit 2
       std::cerr << "error: " << e.what() << "\n";
       ++bad;
     }

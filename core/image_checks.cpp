@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 
 namespace taa {
 
@@ -70,6 +71,48 @@ uint64_t exrMaxRatio(int compression) {
   static constexpr uint64_t kRatio[8] = {
       1, 128, kMaxInflateRatio, kMaxInflateRatio, 0, 2 * kMaxInflateRatio, 16, 16};
   return compression >= 0 && compression < 8 ? kRatio[compression] : 0;
+}
+
+// OpenEXR reads a known attribute type by its own layout, not by the size the file gives it:
+// a box2i is 16 bytes whatever its size says, a chlist runs to its empty name, a preview
+// allocates width x height x 4 bytes, a stringvector each string's length. Where the two
+// disagree, OpenEXR goes on reading at another position than the size leads to, where any
+// bytes can pass for a huge length. So each such value must fill exactly its size; "" when
+// it does (or the type is one OpenEXR reads by size alone).
+std::string exrAttributeLayoutProblem(const std::string& type, const unsigned char* v, size_t size) {
+  static const std::map<std::string, size_t> kFixed = {
+      {"box2i", 16},  {"box2f", 16},  {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1},  {"float", 4},   {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},   {"m33d", 72},   {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8},           {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},    {"v3f", 12},    {"v3d", 24},            {"deepImageState", 1}};
+  if (const auto it = kFixed.find(type); it != kFixed.end())
+    return size == it->second ? "" : "a " + type + " takes " + std::to_string(it->second) + " bytes";
+  if (type == "chlist") {
+    size_t c = 0;
+    while (c < size && v[c] != 0) {
+      while (c < size && v[c] != 0) ++c;
+      c += 1 + 16;  // the name's NUL, then type, pLinear, reserved, x and y sampling
+    }
+    return c + 1 == size ? "" : "its channel list does not end where its size does";
+  }
+  if (type == "preview") {
+    if (size < 8) return "a preview takes at least 8 bytes";
+    const uint64_t w = uint32_t(littleEndian32(v)), h = uint32_t(littleEndian32(v + 4));
+    return 8 + 4 * w * h == size ? "" : "its preview's width and height do not match its size";
+  }
+  if (type == "stringvector") {
+    size_t c = 0;
+    while (c < size) {
+      if (size - c < 4) return "its string list is cut short";
+      const int64_t len = littleEndian32(v + c);
+      c += 4;
+      if (len < 0 || uint64_t(len) > size - c) return "a string of its list runs past its size";
+      c += size_t(len);
+    }
+    return "";
+  }
+  return "";
 }
 
 }  // namespace
@@ -156,6 +199,9 @@ std::string exrStructureProblem(std::string_view bytes, uint64_t maxSamples, Exr
       return "the attribute at byte " + std::to_string(attrAt) + " claims " + std::to_string(size) +
              " bytes, but only " + std::to_string(n - at) + " follow (a corrupt or hostile file)";
     const unsigned char* v = b + at;
+    if (const std::string why = exrAttributeLayoutProblem(type, v, size_t(size)); !why.empty())
+      return "the attribute " + attr + " at byte " + std::to_string(attrAt) + " claims " +
+             std::to_string(size) + " bytes, but " + why + " (a corrupt or hostile file)";
     if (part == 0) {
       if (attr == "channels" && type == "chlist") {
         size_t c = 0;

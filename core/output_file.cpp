@@ -26,10 +26,6 @@ void syncPath(const fs::path& path, int flags) {
 
 }  // namespace
 
-void syncFile(const fs::path& file) {
-  syncPath(file, O_RDONLY);
-}
-
 void syncDirectory(const fs::path& dir) {
   syncPath(dir.empty() ? fs::path(".") : dir, O_RDONLY | O_DIRECTORY);
 }

@@ -20,9 +20,8 @@ class OutputError : public EnvironmentError {
       : EnvironmentError("cannot write " + file.string() + ": " + why) {}
 };
 
-// Flushes a file's data (or a folder's entries) to disk; throws OutputError when the
-// system reports a failure, which is where a full disk shows for delayed allocation.
-void syncFile(const std::filesystem::path& file);
+// Flushes a folder's entries to disk; throws OutputError when the system reports a
+// failure, which is where a full disk shows for delayed allocation.
 void syncDirectory(const std::filesystem::path& dir);
 
 // Writes `content` to a hidden temporary file in the same folder, checks every write,

@@ -83,10 +83,6 @@ CameraFrame cameraFrame(const spec::CaseSpec& spec, int frame) {
   return cameraFrameAt(spec, tracksFor(spec, frame), Path(spec.camera.path), frame);
 }
 
-CameraState cameraState(const spec::CaseSpec& spec, int frame) {
-  return toCameraState(spec, cameraFrame(spec, frame));
-}
-
 FrameState frameState(const spec::CaseSpec& spec, int frame) {
   if (frame < 0) throw std::out_of_range("frameState: negative frame " + std::to_string(frame));
   const Tracks* tracks = tracksFor(spec, frame);

@@ -55,8 +55,6 @@ glm::ivec2 renderSizeFor(const spec::RenderSpec& render, float scale);
 // camera.track is set (spec.tracks), else from the script.
 CameraFrame cameraFrame(const spec::CaseSpec& spec, int frame);
 
-CameraState cameraState(const spec::CaseSpec& spec, int frame);
-
 // Throws std::out_of_range for frame < 0; frames past script.frames are allowed
 // (the script simply continues) unless the case replays recorded tracks, which end
 // there. A case with tracks needs spec.tracks loaded for its fps and frames (the

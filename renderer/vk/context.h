@@ -45,8 +45,6 @@ class Context {
 
   VkDevice device() const { return device_; }
   VkPhysicalDevice physical() const { return physical_; }
-  VkQueue queue() const { return queue_; }
-  uint32_t queueFamily() const { return queueFamily_; }
   const DeviceInfo& info() const { return info_; }
 
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;

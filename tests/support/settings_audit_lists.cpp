@@ -39,6 +39,9 @@ const std::vector<Exclusion>& exclusions() {
       {"debug.image", "an image file (StillImage.TemporalUpsamplingConvergesTowardsTheImage)"},
       {"taa.shader",
        "a user's GLSL file (ctest example.user_taa.*: goldens of the shipped user resolves)"},
+      {"taa.shader_entry",
+       "a function of a user's HLSL file, with taa.shader only "
+       "(GlslCompilerTest.HlslEntryPointParametersHistoriesAndErrors)"},
       {"taa.shader_params*",
        "constants of a user's shader (UserCaseTest.ValidShaderAndParamsLoad, example.user_taa.*)"},
       {"render.scale_schedule*",

@@ -110,6 +110,22 @@ nlohmann::json userShaderJson(const spec::CheckedCase& spec, const nlohmann::jso
 
 }  // namespace
 
+nlohmann::json readJsonFile(const std::filesystem::path& file) {
+  std::string text;
+  try {
+    text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileError& e) {
+    throw CaseError({e.what()});
+  }
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw CaseError({file.string() + ": " + problem});
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw CaseError({file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")"});
+  }
+}
+
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file) {
   return parseCase(text, file, {});
 }

@@ -24,6 +24,11 @@ struct LoadedCase {
 
 LoadedCase loadCase(const std::filesystem::path& file);
 
+// A JSON file a command reads beside its cases (a case to patch, a presets or lanes file):
+// bounded in size and nesting before parsing, parse errors quoting none of its bytes.
+// Throws CaseError naming the file.
+nlohmann::json readJsonFile(const std::filesystem::path& file);
+
 // Parses JSON text as if read from `file` (tests and in-memory cases use this).
 LoadedCase parseCase(const std::string& text, const std::filesystem::path& file);
 

@@ -11,7 +11,6 @@
 #include "compare/flip.h"
 #include "compare/metrics.h"
 #include "core/input_file.h"
-#include "core/json_guard.h"
 #include "core/output_file.h"
 #include "invariants/flicker_meter.h"
 #include "invariants/invariant_support.h"
@@ -51,16 +50,6 @@ std::string notApplicable(const spec::CheckedCase& s) {
     return std::string("taa.mode is ") + spec::enumToString(s.taa.mode);
   if (s.debug.output != spec::DebugOutput::None) return "it shows a debug view";
   return {};
-}
-
-nlohmann::json readCaseJson(const fs::path& file) {
-  try {
-    return nlohmann::json::parse(readInputFile(file, kMaxCaseFileBytes));
-  } catch (const InputFileError& e) {
-    throw cases::CaseError({e.what()});
-  } catch (const nlohmann::json::exception& e) {
-    throw cases::CaseError({file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")"});
-  }
 }
 
 // The case with its resolve settings and checks dropped and the lane's taa section merged
@@ -214,7 +203,7 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
       s.skipped.push_back(own.spec.name + ": " + why);
       continue;
     }
-    const nlohmann::json base = readCaseJson(file);
+    const nlohmann::json base = cases::readJsonFile(file);
     // Every lane's shader compiles (or names its error) before anything renders.
     if (!compiled)
       for (const auto& l : s.lanes) laneCase(base, file, l);

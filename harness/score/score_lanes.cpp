@@ -5,8 +5,7 @@
 #include <sstream>
 
 #include "case/case_error.h"
-#include "core/input_file.h"
-#include "core/json_guard.h"
+#include "case/case_loader.h"
 #include "report/text_util.h"
 #include "score/score.h"
 
@@ -113,20 +112,7 @@ LaneSpec shaderLane(const fs::path& shader, const std::string& params, const std
 }
 
 std::vector<LaneSpec> loadLanes(const fs::path& file) {
-  std::string text;
-  try {
-    text = readInputFile(file, kMaxCaseFileBytes);
-  } catch (const InputFileError& e) {
-    throw cases::CaseError({e.what()});
-  }
-  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
-    throw cases::CaseError({file.string() + ": " + problem});
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception&) {
-    throw cases::CaseError({file.string() + ": not valid JSON; fix the syntax"});
-  }
+  const nlohmann::json j = cases::readJsonFile(file);
   if (!j.is_object() || j.empty())
     throw cases::CaseError({file.string() +
                             ": expected lanes {\"name\": {\"shader\": \"x.hlsl\", \"shader_params\": "

@@ -6,10 +6,9 @@
 
 #include "api/renderer.h"
 #include "case/case_error.h"
+#include "case/case_loader.h"
 #include "compare/flip.h"
 #include "compare/metrics.h"
-#include "core/input_file.h"
-#include "core/json_guard.h"
 #include "invariants/flicker_meter.h"
 #include "run/timing.h"
 #include "invariants/registry.h"
@@ -22,22 +21,6 @@ namespace taa::sweep {
 namespace fs = std::filesystem;
 
 namespace {
-
-nlohmann::json readJson(const fs::path& file) {
-  std::string text;
-  try {
-    text = readInputFile(file, kMaxCaseFileBytes);
-  } catch (const InputFileError& e) {
-    throw cases::CaseError({e.what()});
-  }
-  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
-    throw cases::CaseError({file.string() + ": " + problem});
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw cases::CaseError({file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + ")"});
-  }
-}
 
 // One preset's replay: its own case, scene and renderer.
 struct Lane {
@@ -63,7 +46,7 @@ bool isRasterPass(const std::string& pass) { return pass.rfind("gbuffer", 0) == 
 }  // namespace
 
 Presets loadPresets(const fs::path& file) {
-  const auto j = readJson(file);
+  const auto j = cases::readJsonFile(file);
   if (!j.is_object()) throw cases::CaseError({file.string() + ": expected an object {\"preset\": {patch}, ...}"});
   Presets out;
   for (const auto& [name, patch] : j.items()) {
@@ -103,7 +86,7 @@ cases::LoadedCase presetLane(const nlohmann::json& base, const nlohmann::json& p
 
 SweepResult runSweep(Device& device, const fs::path& caseFile, const Presets& presets,
                      const std::vector<std::string>& names, const SweepOptions& options) {
-  const nlohmann::json base = readJson(caseFile);
+  const nlohmann::json base = cases::readJsonFile(caseFile);
   std::vector<std::unique_ptr<Lane>> lanes, skippedLanes;
   std::vector<std::string> problems;
   for (const auto& name : names) {

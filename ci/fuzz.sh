@@ -17,11 +17,13 @@ out=${TAA_FUZZ_OUT:-$build/fuzz}
 [ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-for target in case track gltf image; do
+# Called where `set -e` does not reach (a lane's `||`): each step that can fail returns.
+fuzz_one() {
+  local target=$1 work limits
   work="$out/$target"
   rm -rf "$work"
-  mkdir -p "$work/corpus" "$work/artifacts"
-  cp tests/fuzz/corpus/$target/* "$work/corpus/"
+  mkdir -p "$work/corpus" "$work/artifacts" || return 1
+  cp tests/fuzz/corpus/$target/* "$work/corpus/" || return 1
   case $target in
     case) cp cases/*.json cases/sweep/*.json "$work/corpus/" 2>/dev/null || true ;;
     track) cp cases/tracks/*.json cases/tracks/*.csv "$work/corpus/" 2>/dev/null || true ;;
@@ -31,9 +33,27 @@ for target in case track gltf image; do
   limits="-rss_limit_mb=2048 -timeout=10"
   [ $target = image ] && limits="$limits -malloc_limit_mb=512"
   echo "fuzz_$target: replaying tests/fuzz/corpus/$target"
-  "$build/tests/fuzz/fuzz_$target" $limits tests/fuzz/corpus/$target/*
+  "$build/tests/fuzz/fuzz_$target" $limits tests/fuzz/corpus/$target/* || return 1
   echo "fuzz_$target: fuzzing for $seconds s"
   "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" $limits \
-    -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus"
+    -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" || return 1
+}
+# TAA_FUZZ_JOBS=2 fuzzes two targets at a time (each still for $seconds s; .ci/run does, so the
+# core the sanitized unit tests leave free is not idle); each target's output is printed whole,
+# in target order, once all have ended.
+jobs=${TAA_FUZZ_JOBS:-1}
+targets=(case track gltf image)
+logs=$(mktemp -d)
+status=0
+for ((lane = 0; lane < jobs; lane++)); do
+  (
+    for ((i = lane; i < ${#targets[@]}; i += jobs)); do
+      fuzz_one "${targets[$i]}" >"$logs/${targets[$i]}" 2>&1 || { echo "fuzz_${targets[$i]} failed" >>"$logs/${targets[$i]}"; exit 1; }
+    done
+  ) &
 done
+for ((lane = 0; lane < jobs; lane++)); do wait -n || status=1; done
+for target in "${targets[@]}"; do [ -f "$logs/$target" ] && cat "$logs/$target"; done
+rm -rf "$logs"
+[ $status = 0 ] || { echo "fuzz: a target failed (its output above; inputs in $out/TARGET/artifacts)" >&2; exit 1; }
 echo "fuzz: every target ran clean for $seconds s"

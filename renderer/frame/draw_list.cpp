@@ -43,6 +43,10 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
     const auto now = scene::poseModel(scene, m, animTime);
     const auto before = scene::poseModel(scene, m, prevAnimTime);
     const bool animated = scene::modelAnimates(scene.models[size_t(m)]);
+    // Grown once per model rather than doubled as it fills: a copy less of every instance
+    // at the peak.
+    out.instances.reserve(out.instances.size() + now.size());
+    out.dynamic.reserve(out.dynamic.size() + now.size());
     for (size_t i = 0; i < now.size(); ++i, ++objectId) {
       const bool deformed = now[i].deformed();
       gpu::InstanceData inst{};

@@ -5,10 +5,13 @@
 // draw can share).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "case/case_loader.h"
 #include "frame/draw_list.h"

@@ -24,6 +24,7 @@ layout(location = 3) in vec4 inCurClip;
 layout(location = 4) in vec4 inPrevClip;
 layout(location = 5) in vec4 inColor;  // glTF COLOR_0, white elsewhere
 layout(location = 6) in vec2 inUv1;    // glTF TEXCOORD_1
+layout(location = 7) flat in uint inInstance;
 
 layout(location = GBUF_OUT_COLOR) out vec4 outColor;
 #if (VARIANT_MASK & GBUF_OUTPUT_VELOCITY) != 0
@@ -70,7 +71,7 @@ void main() {
   vec2 baseUv = uvSet(MATERIAL_BASE_UV1);
   vec4 base = draw.baseColor * sampleMap(baseColorTexture, baseUv);
   // Only meshes with COLOR_0: an interpolated constant white is not exactly 1.
-  bool vertexColors = instances[draw.instance].ids.w != 0u;
+  bool vertexColors = instances[inInstance].ids.w != 0u;
   if (vertexColors) base *= inColor;
   float testedAlpha = base.a;
   if (kLod0Alpha && draw.alphaCutoff >= 0.0)
@@ -93,7 +94,7 @@ void main() {
   outNormal = vec4(n, 0.0);
 #endif
 #if (VARIANT_MASK & GBUF_OUTPUT_IDS) != 0
-  InstanceData inst = instances[draw.instance];
+  InstanceData inst = instances[inInstance];
   outIds = (inst.ids.y != 0u ? IDS_MOVER_BIT : 0u) | ((inst.ids.x & 0x7fffu) << 16) | (draw.material & 0xffffu);
 #endif
 #if (VARIANT_MASK & GBUF_OUTPUT_ALBEDO) != 0

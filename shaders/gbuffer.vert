@@ -19,9 +19,12 @@ layout(location = 3) out vec4 outCurClip;   // un-jittered, for velocity
 layout(location = 4) out vec4 outPrevClip;
 layout(location = 5) out vec4 outColor;
 layout(location = 6) out vec2 outUv1;
+// The draw's instance for the fragment shader (gl_InstanceIndex counts from firstInstance).
+layout(location = 7) flat out uint outInstance;
 
 void main() {
-  InstanceData inst = instances[draw.instance];
+  InstanceData inst = instances[gl_InstanceIndex];
+  outInstance = uint(gl_InstanceIndex);
   vec4 world = inst.model * vec4(inPosition, 1.0);
   vec3 prevPosition = inst.ids.z != 0u ? prevPositions[gl_VertexIndex].xyz : inPosition;
   vec4 prevWorld = inst.prevModel * vec4(prevPosition, 1.0);

@@ -16,7 +16,7 @@ layout(location = 0) out vec2 outUv;
 layout(location = 1) out float outAlpha;
 
 void main() {
-  InstanceData inst = instances[shadow.instance];
+  InstanceData inst = instances[gl_InstanceIndex];
   outUv = (shadow.maps & MATERIAL_BASE_UV1) != 0u ? inUv1 : inUv;  // the base colour's set
   outAlpha = inst.ids.w != 0u ? inColor.a : 1.0;  // COLOR_0 alpha, as gbuffer.frag applies it
   gl_Position = shadow.lightViewProj * (inst.model * vec4(inPosition, 1.0));

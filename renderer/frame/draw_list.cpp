@@ -6,6 +6,24 @@
 
 namespace taa {
 
+namespace {
+
+// Extends the last draw by `d` when `d` is its next instance of the same primitive. Only
+// consecutive draws join, so the raster order of every triangle stays what it was. Deformed
+// draws read their own vertices each, and a mirrored instance flips the front face.
+bool extendsLast(std::vector<Draw>& draws, const Draw& d) {
+  if (draws.empty()) return false;
+  Draw& last = draws.back();
+  if (last.mesh != d.mesh || last.primitive != d.primitive || last.deformedVertex >= 0 ||
+      d.deformedVertex >= 0 || last.mirrored != d.mirrored ||
+      last.instance + last.instanceCount != d.instance)
+    return false;
+  last.instanceCount += d.instanceCount;
+  return true;
+}
+
+}  // namespace
+
 DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& state) {
   DrawList out;
   struct Sortable {
@@ -25,6 +43,10 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
     const auto now = scene::poseModel(scene, m, animTime);
     const auto before = scene::poseModel(scene, m, prevAnimTime);
     const bool animated = scene::modelAnimates(scene.models[size_t(m)]);
+    // Grown once per model rather than doubled as it fills: a copy less of every instance
+    // at the peak.
+    out.instances.reserve(out.instances.size() + now.size());
+    out.dynamic.reserve(out.dynamic.size() + now.size());
     for (size_t i = 0; i < now.size(); ++i, ++objectId) {
       const bool deformed = now[i].deformed();
       gpu::InstanceData inst{};
@@ -45,7 +67,7 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
         for (const scene::Vertex& v : b) out.deformedPrev.emplace_back(v.position, 1.0f);
       }
       for (int p = 0; p < int(mesh.primitives.size()); ++p) {
-        Draw d{instance, now[i].mesh, p, -1, glm::determinant(glm::mat3(inst.model)) < 0.0f};
+        Draw d{instance, 1, now[i].mesh, p, -1, glm::determinant(glm::mat3(inst.model)) < 0.0f};
         if (deformed)
           d.deformedVertex =
               deformedBase + mesh.primitives[p].vertexOffset - int32_t(mesh.firstVertex);
@@ -53,7 +75,7 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
         if (material.alphaMode == scene::AlphaMode::Blend) {
           const glm::vec3 centre = glm::vec3(inst.model * glm::vec4((mesh.boundsMin + mesh.boundsMax) * 0.5f, 1.0f));
           blended.push_back({d, glm::length(centre - state.camera.position), blended.size()});
-        } else {
+        } else if (!extendsLast(out.opaque, d)) {
           out.opaque.push_back(d);
         }
       }
@@ -64,6 +86,18 @@ DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& stat
     return a.distance != b.distance ? a.distance > b.distance : a.order < b.order;
   });
   for (const auto& b : blended) out.blended.push_back(b.draw);
+  return out;
+}
+
+std::vector<Draw> singleInstanceDraws(const std::vector<Draw>& draws) {
+  std::vector<Draw> out;
+  for (const Draw& d : draws)
+    for (uint32_t k = 0; k < d.instanceCount; ++k) {
+      Draw one = d;
+      one.instance = d.instance + k;
+      one.instanceCount = 1;
+      out.push_back(one);
+    }
   return out;
 }
 

@@ -1,6 +1,10 @@
 // What the G-buffer pass draws this frame: per-instance transforms (current and
 // previous, for velocity) and the draws, opaque first, blended back to front.
 // Pure CPU work, a function of the scene and the frame state.
+//
+// A draw covers a run of consecutive instances of one primitive (an instanced draw): a scene
+// of many nodes sharing a mesh costs the driver one draw, not one per node. Instances are
+// rasterised in index order, so a run draws exactly what its draws one by one would.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +17,8 @@
 namespace taa {
 
 struct Draw {
-  uint32_t instance = 0;
+  uint32_t instance = 0;  // the first instance (firstInstance: the shaders' gl_InstanceIndex)
+  uint32_t instanceCount = 1;
   int mesh = 0;
   int primitive = 0;
   // Deformed (skinned or morphed) draws read DrawList::deformed, from this vertex on
@@ -40,5 +45,9 @@ struct DrawList {
 size_t deformedVertexCount(const scene::Scene& scene);
 
 DrawList buildDrawList(const scene::Scene& scene, const script::FrameState& state);
+
+// The draws of `draws`, one instance each, in the same order (what consumers that work per
+// instance rather than per draw read: the tracer's triangles, the reference's cache key).
+std::vector<Draw> singleInstanceDraws(const std::vector<Draw>& draws);
 
 }  // namespace taa

@@ -195,6 +195,10 @@ struct Renderer::State {
                   std::to_string(sc.indices.size() / 3) + " triangles, " +
                   std::to_string(sc.textures.size()) + " textures (" +
                   std::to_string(gpuScene.textureBytes() / 1024) + " KiB)");
+    // Frame 0's draws only size what the constructor built (the instance buffer, the
+    // tracer's static world, the shadow distance); kept, they would cost a second copy of
+    // every instance for the whole run.
+    firstFrame = DrawList();
   }
 };
 

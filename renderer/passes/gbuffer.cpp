@@ -243,7 +243,6 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
       boundMaterial = prim.material;
     }
     gpu::DrawPush push{};
-    push.instance = draw.instance;
     push.material = uint32_t(prim.material);
     push.alphaCutoff = material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     push.lodBias = lodBias;
@@ -254,8 +253,9 @@ void GBufferPass::drawList(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
     push.maps = materialMaps(material);
     push.occlusionStrength = material.occlusionStrength;
     pipeline.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
-                     draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);
+    vkCmdDrawIndexed(cmd, prim.indexCount, draw.instanceCount, prim.firstIndex,
+                     draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset,
+                     draw.instance);
   }
 }
 

@@ -133,9 +133,11 @@ std::string ReferencePass::frameKey(const std::string& caseKey, const DrawList& 
   for (size_t k = 0; k < eyes * offsets_.size(); ++k)
     add(static_cast<const uint8_t*>(uniforms_.mapped()) + k * stride_, sizeof(gpu::FrameUniforms));
   add(draws.instances.data(), draws.instances.size() * sizeof(gpu::InstanceData));
+  // One instance each, as the draws were before they were instanced: the same scene keeps
+  // the same key, and cached references stay valid.
   for (const auto* list : {&draws.opaque, &draws.blended}) {
     std::vector<int32_t> d;
-    for (const Draw& x : *list)
+    for (const Draw& x : singleInstanceDraws(*list))
       d.insert(d.end(), {int32_t(x.instance), x.mesh, x.primitive, x.deformedVertex});
     add(d.data(), d.size() * sizeof(int32_t));
   }

@@ -13,12 +13,14 @@ SceneBox casterBounds(const scene::Scene& scene, const DrawList& draws) {
   SceneBox box;
   for (const Draw& d : draws.opaque) {
     const scene::Mesh& mesh = scene.meshes[size_t(d.mesh)];
-    const glm::mat4& model = draws.instances[d.instance].model;
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec4 corner((i & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
-                             (i & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
-                             (i & 4) ? mesh.boundsMax.z : mesh.boundsMin.z, 1.0f);
-      box.add(glm::vec3(model * corner));
+    for (uint32_t k = d.instance; k < d.instance + d.instanceCount; ++k) {
+      const glm::mat4& model = draws.instances[k].model;
+      for (int i = 0; i < 8; ++i) {
+        const glm::vec4 corner((i & 1) ? mesh.boundsMax.x : mesh.boundsMin.x,
+                               (i & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
+                               (i & 4) ? mesh.boundsMax.z : mesh.boundsMin.z, 1.0f);
+        box.add(glm::vec3(model * corner));
+      }
     }
   }
   return box;
@@ -109,14 +111,14 @@ void ShadowPass::record(VkCommandBuffer cmd, const ShadowCascades& c, const Draw
       }
       gpu::ShadowPush push{};
       push.lightViewProj = c.lightViewProj[size_t(i)];
-      push.instance = draw.instance;
       push.alphaCutoff =
           material.alphaMode == scene::AlphaMode::Mask ? material.alphaCutoff : -1.0f;
       push.baseColor = material.baseColorFactor;
       push.maps = materialMaps(material);
       casters_.pushConstants(cmd, &push, sizeof(push));
-      vkCmdDrawIndexed(cmd, prim.indexCount, 1, prim.firstIndex,
-                       draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset, 0);
+      vkCmdDrawIndexed(cmd, prim.indexCount, draw.instanceCount, prim.firstIndex,
+                       draw.deformedVertex >= 0 ? draw.deformedVertex : prim.vertexOffset,
+                       draw.instance);
     }
   }
   vkCmdEndRendering(cmd);

@@ -64,7 +64,7 @@ using uint = uint32_t;
 
 TAA_BLOCK(ShadowPush) {
   mat4 lightViewProj;  // world -> the cascade's clip space (orthographic, depth 0 at the light)
-  uint instance;
+  uint pad0;          // draws are instanced: the instance is gl_InstanceIndex
   float alphaCutoff;  // < 0: no alpha test
   uint maps;          // MATERIAL_* bits (MATERIAL_BASE_UV1 picks the alpha test's UV set)
   uint pad1;
@@ -112,7 +112,7 @@ TAA_BLOCK(InstanceData) {
 #define IDS_SKY 0x7fffffffu
 
 TAA_BLOCK(DrawPush) {
-  uint instance;
+  uint pad2;  // draws are instanced: the instance is gl_InstanceIndex (gbuffer.vert)
   uint material;
   float alphaCutoff;  // < 0: no alpha test
   float lodBias;

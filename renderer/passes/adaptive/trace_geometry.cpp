@@ -9,7 +9,8 @@ namespace taa {
 void collectTriangles(const scene::Scene& scene, const DrawList& draws, bool movers,
                       std::vector<scene::Triangle>& triangles,
                       std::vector<gpu::TraceShading>* shading, std::vector<uint32_t>* materials) {
-  std::vector<Draw> all = draws.opaque;
+  // One instance each: the triangles keep the order of the instances, then the primitives.
+  std::vector<Draw> all = singleInstanceDraws(draws.opaque);
   all.insert(all.end(), draws.blended.begin(), draws.blended.end());
   // Blended draws are sorted by distance each frame; triangle order must not follow.
   std::sort(all.begin(), all.end(), [](const Draw& a, const Draw& b) {

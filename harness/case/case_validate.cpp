@@ -194,7 +194,7 @@ void validateLighting(Problems& p, const CaseSpec& s, const std::set<std::string
           "remove the key");
   // The tracer shades its hits without the shadow atlas, so its pixels would be lit where
   // the raster's are shadowed.
-  if (s.lighting.shadows && s.taa.mode == TaaMode::Adaptive)
+  if (s.lighting.shadows && modeRule(s.taa.mode).adaptive)
     p.add("lighting.shadows",
           "adaptive ray tracing shades its traced pixels without shadows; set taa.mode "
           "to another mode or shadows to false");
@@ -238,10 +238,10 @@ void validateStillImage(Problems& p, const CaseSpec& s, const std::set<std::stri
           "upsamples a still image, but the camera moves; remove camera.path, rotate, bob, strafe, "
           "track and cuts");
   if (!s.movers.empty()) p.add("debug.image", "upsamples a still image; remove the movers");
-  if (s.taa.mode == TaaMode::Adaptive || s.taa.mode == TaaMode::Tscmaa)
-    p.add("debug.image",
-          "replaces the raster's colour only; adaptive tracing and TSCMAA would not see it, set "
-          "taa.mode to full, accumulate or off");
+  if (!modeRule(s.taa.mode).stillImage)
+    p.add("debug.image", std::string("replaces the raster's colour only, which taa.mode ") +
+                             enumToString(s.taa.mode) + " does not show alone; set taa.mode to " +
+                             modeNames(modesWhere(&ModeRule::stillImage)));
 }
 
 void validateDebugChannels(Problems& p, const CaseSpec& s, const std::set<std::string>& present) {
@@ -294,9 +294,12 @@ void validateCase(CheckedCase& spec, const std::set<std::string>& present) {
     p.add("debug.scale", "has no effect unless debug.output is set; set it or remove the key");
   const ModeRule& rule = modeRule(spec.taa.mode);
   if (spec.debug.output == DebugOutput::Segmentation && !rule.adaptive)
-    p.add("debug.output", "the segmentation mask comes from adaptive ray tracing; set taa.mode to adaptive");
+    p.add("debug.output",
+          "the segmentation mask comes from adaptive ray tracing; set taa.mode to " +
+              modeNames(modesWhere(&ModeRule::adaptive)));
   else if (spec.debug.output != DebugOutput::None && !rule.debugViews)
-    p.add("debug.output", "the debug views come from the full resolve; set taa.mode to full or adaptive");
+    p.add("debug.output", "the debug views come from the full resolve; set taa.mode to " +
+                              modeNames(modesWhere(&ModeRule::debugViews)));
   validatePost(p, spec, present);
   checkFrames(p, "script.reset_history_at", spec.script.reset_history_at, frames);
   checkFrames(p, "output.frames", spec.output.frames, frames);

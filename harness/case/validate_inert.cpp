@@ -36,12 +36,11 @@ InertList inertProblems(const spec::CaseSpec& s, const std::set<std::string>& pr
   }
   // A reset empties a history; off and pass_through keep none.
   if (!s.script.reset_history_at.empty() && !spec::modeRule(s.taa.mode).history)
-    out.emplace_back(
-        "script.reset_history_at",
-        "resets the temporal history, which taa.mode " +
-            std::string(spec::enumToString(s.taa.mode)) +
-            " does not keep; remove the key or set taa.mode to basic, full, accumulate, tscmaa "
-            "or adaptive");
+    out.emplace_back("script.reset_history_at",
+                     "resets the temporal history, which taa.mode " +
+                         std::string(spec::enumToString(s.taa.mode)) +
+                         " does not keep; remove the key or set taa.mode to " +
+                         spec::modeNames(spec::modesWhere(&spec::ModeRule::history)));
   // The bias applies whenever a temporal resolve runs; lod_bias_taa_only only decides whether
   // it applies without one.
   inertNeeds(

@@ -33,7 +33,7 @@ class Rules {
 // adaptive.* drives the passes after an adaptive resolve; they trace and filter at
 // output size, pixel for pixel against the G-buffer, so the render size must match.
 void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
-  const bool adaptive = s.taa.mode == TaaMode::Adaptive;
+  const bool adaptive = modeRule(s.taa.mode).adaptive;
   for (const auto& key : r.keysUnder("adaptive.")) r.needs(key, adaptive, "taa.mode is adaptive");
   if (!adaptive) return;
   if (resamples)
@@ -61,7 +61,7 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
 // TSCMAA's keys mean nothing to the other modes; stereo output holds two eyes side by
 // side, which the per-eye G-buffer captures cannot describe.
 void tscmaaRules(Rules& r, const CaseSpec& s) {
-  const bool tscmaa = s.taa.mode == TaaMode::Tscmaa;
+  const bool tscmaa = modeRule(s.taa.mode).tscmaa;
   for (const char* key :
        {"tscmaa.edge_threshold", "tscmaa.non_dominant_edge_removal", "tscmaa.blurriness",
         "tscmaa.taa_share", "tscmaa.history_weight", "tscmaa.eyes", "tscmaa.eye_separation"})

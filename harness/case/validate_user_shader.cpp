@@ -3,9 +3,10 @@
 #include <filesystem>
 
 #include "case/case_validate.h"
+#include "spec/taa_modes.h"
 #include "user/glsl_compiler.h"
-#include "user/user_capabilities.h"
 #include "user/shader_bounds.h"
+#include "user/user_capabilities.h"
 #include "user/user_resolve.h"
 
 namespace taa::cases {
@@ -25,11 +26,12 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
     out.emplace_back("taa.shader", why);
     return out;
   }
-  if (t.mode != spec::TaaMode::Full)
+  if (!spec::modeRule(t.mode).standIn)
     out.emplace_back(
         "taa.mode",
         std::string("a user's resolve (taa.shader) replaces the full resolve, but taa.mode is ") +
-            spec::enumToString(t.mode) + "; set taa.mode to full or remove taa.shader");
+            spec::enumToString(t.mode) + "; set taa.mode to " +
+            spec::modeNames(spec::modesWhere(&spec::ModeRule::standIn)) + " or remove taa.shader");
   // The built-in resolve's settings would be accepted and ignored.
   for (const auto& key : present) {
     if (key.rfind("taa.", 0) != 0 || key == "taa.mode" || key.rfind("taa.shader", 0) == 0) continue;

@@ -6,6 +6,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "compare/metric_table.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
@@ -40,10 +41,16 @@ void printChanges(const run::CaseResult& r) {
       std::cout << "new golden\n";
     else if (f.status == run::FrameStatus::Exact)
       std::cout << "unchanged\n";
-    else
-      std::cout << "changed: max_abs " << f.metrics.maxAbs << ", rmse " << f.metrics.rmse << ", psnr "
-                << f.metrics.psnr << " dB, flip_mean " << f.metrics.flipMean << ", flip_p99 " << f.metrics.flipP99
-                << " (old " << f.goldenSha256.substr(0, 12) << ", new " << f.actualSha256.substr(0, 12) << ")\n";
+    else {
+      std::cout << "changed:";
+      const char* sep = " ";
+      for (const auto* m : compare::goldenMetrics()) {
+        std::cout << sep << m->name << " " << f.metrics.*m->golden;
+        sep = ", ";
+      }
+      std::cout << " (old " << f.goldenSha256.substr(0, 12) << ", new "
+                << f.actualSha256.substr(0, 12) << ")\n";
+    }
   }
 }
 }  // namespace

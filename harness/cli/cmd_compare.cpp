@@ -21,25 +21,49 @@ namespace {
 
 constexpr double kMaxFlipPixelsPerDegree = 1000.0;
 
-const char* kCompareUsage =
-    "taa-harness compare REFERENCE TEST [--metrics LIST] [--flip-ppd N] [--hdr] [--threads N]\n"
-    "                    [--pixel-threshold T] [--max METRIC=V,...] [--min METRIC=V,...]\n"
-    "                    [--heatmap OUT.png] [--layer NAME] [--json]\n"
-    "  metrics of TEST against REFERENCE (OpenEXR or PNG, told apart by content: EXR files are\n"
-    "  linear, PNG files display-referred sRGB; both must be the same kind).\n"
-    "  --metrics   comma list of max_abs, mean_abs, rmse, psnr, share_over, flip_mean, flip_p50,\n"
-    "              flip_p95, flip_p99, flip_max (default: all)\n"
-    "  --flip-ppd  pixels per degree for FLIP, 0.01 to 1000 (default 67.02: 0.7 m from a 0.7 m\n"
-    "              wide 4K screen)\n"
-    "  --hdr       HDR-FLIP for linear inputs (default: LDR-FLIP of the tonemapped PNG view)\n"
-    "  --threads   FLIP worker threads (default: one per core; results do not depend on it)\n"
-    "  --pixel-threshold  per-pixel bound that share_over counts, at least 0 (default 1/255)\n"
-    "  --max/--min exit 1 when a metric is above a --max or below a --min bound\n"
-    "  --heatmap   write the FLIP error map as a magma PNG\n"
-    "  --layer     compare the EXR layer NAME (channels NAME.R, NAME.G, NAME.B, NAME.A); without\n"
-    "              it the channels named R, G, B, A (R required; no channel is taken by position)\n"
-    "  --json      print the result as JSON instead of lines\n"
-    "exit: 0 within every bound, 1 a bound violated, 2 bad input (file, option, shape)";
+// `names` ("a, b, c") broken after a comma to lines of at most 96 characters, each indented by
+// 14 spaces.
+std::string indentedList(const std::string& names) {
+  std::string out, line;
+  std::stringstream in(names);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item.starts_with(' ')) item.erase(0, 1);
+    if (!line.empty() && 14 + line.size() + item.size() + 2 > 96) {
+      out += std::string(14, ' ') + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + item + ",";
+  }
+  line.pop_back();
+  return out + std::string(14, ' ') + line + "\n";
+}
+
+std::string compareUsage() {
+  return "taa-harness compare REFERENCE TEST [--metrics LIST] [--flip-ppd N] [--hdr] [--threads "
+         "N]\n"
+         "                    [--pixel-threshold T] [--max METRIC=V,...] [--min METRIC=V,...]\n"
+         "                    [--heatmap OUT.png] [--layer NAME] [--json]\n"
+         "  metrics of TEST against REFERENCE (OpenEXR or PNG, told apart by content: EXR files "
+         "are\n"
+         "  linear, PNG files display-referred sRGB; both must be the same kind).\n"
+         "  --metrics   comma list of the metrics to report (default: all of them):\n" +
+         indentedList(compare::metricNameList()) +
+         "  --flip-ppd  pixels per degree for FLIP, 0.01 to 1000 (default 67.02: 0.7 m from a 0.7 "
+         "m\n"
+         "              wide 4K screen)\n"
+         "  --hdr       HDR-FLIP for linear inputs (default: LDR-FLIP of the tonemapped PNG view)\n"
+         "  --threads   FLIP worker threads (default: one per core; results do not depend on it)\n"
+         "  --pixel-threshold  per-pixel bound that share_over counts, at least 0 (default 1/255)\n"
+         "  --max/--min exit 1 when a metric is above a --max or below a --min bound\n"
+         "  --heatmap   write the FLIP error map as a magma PNG\n"
+         "  --layer     compare the EXR layer NAME (channels NAME.R, NAME.G, NAME.B, NAME.A); "
+         "without\n"
+         "              it the channels named R, G, B, A (R required; no channel is taken by "
+         "position)\n"
+         "  --json      print the result as JSON instead of lines\n"
+         "exit: 0 within every bound, 1 a bound violated, 2 bad input (file, option, shape)";
+}
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> out;
@@ -83,14 +107,13 @@ nlohmann::json number(double v) {
 }  // namespace
 
 int cmdCompare(const Args& args) {
-  const auto a = parseArgs(
-      args, {"--json", "--hdr"},
-      {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max", "--min", "--heatmap",
-       "--layer"},
-      kCompareUsage);
+  const auto a = parseArgs(args, {"--json", "--hdr"},
+                           {"--metrics", "--flip-ppd", "--threads", "--pixel-threshold", "--max",
+                            "--min", "--heatmap", "--layer"},
+                           compareUsage());
   if (a.positional.size() != 2) {
     throw UsageError("expected REFERENCE and TEST, got " + std::to_string(a.positional.size()) +
-                     " file(s)\nusage: " + kCompareUsage);
+                     " file(s)\nusage: " + compareUsage());
   }
   compare::CompareRequest req;
   req.referencePath = a.positional[0];

@@ -49,24 +49,14 @@ std::string violation(const Bound& b, double value) {
 
 }  // namespace
 
-const std::vector<std::string>& metricNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> out;
-    for (const auto& row : metricTable()) out.emplace_back(row.name);
-    return out;
-  }();
-  return names;
-}
-
 bool isMetricName(const std::string& name) {
-  const auto& n = metricNames();
-  return std::find(n.begin(), n.end(), name) != n.end();
+  return findMetric(name) != nullptr;
 }
 
 std::string metricNameList() {
-  std::string out;
-  for (const auto& n : metricNames()) out += (out.empty() ? "" : ", ") + n;
-  return out;
+  std::vector<const MetricInfo*> rows;
+  for (const auto& row : metricTable()) rows.push_back(&row);
+  return metricList(rows);
 }
 
 CompareOutcome compareFiles(const CompareRequest& r) {

@@ -28,7 +28,7 @@ struct Bound {
 struct CompareRequest {
   std::string referencePath;
   std::string testPath;
-  std::vector<std::string> metrics;  // empty: all of metricNames()
+  std::vector<std::string> metrics;  // empty: every row of metricTable()
   FlipOptions flip;
   bool hdr = false;  // HDR-FLIP; needs linear inputs
   double pixelThreshold = 1.0 / 255.0;
@@ -40,7 +40,7 @@ struct CompareRequest {
 struct CompareOutcome {
   int width = 0;
   int height = 0;
-  std::vector<std::pair<std::string, double>> values;  // in metricNames() order
+  std::vector<std::pair<std::string, double>> values;  // in metricTable() order
   std::vector<std::string> violations;                 // "flip_mean 0.0762 > 0.05"
   std::string flipKind;  // "ldr", "ldr-tonemapped", "hdr", or "" when FLIP was not computed
   Image flipMap;         // when FLIP was computed
@@ -48,9 +48,7 @@ struct CompareOutcome {
   int exposures = 0;
 };
 
-// Every metric name, in output order: max_abs, mean_abs, rmse, psnr, share_over (the linear
-// metrics of metrics.h on RGB), flip_mean, flip_p50, flip_p95, flip_p99, flip_max.
-const std::vector<std::string>& metricNames();
+// A row of metricTable() (metric_table.h) by name, and every row's name in output order.
 bool isMetricName(const std::string& name);
 std::string metricNameList();  // "max_abs, mean_abs, ..."
 

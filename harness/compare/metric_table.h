@@ -30,6 +30,9 @@ struct MetricInfo {
   double run::ImageMetrics::*golden;
   // The tolerance bounding it when the environment differs from the goldens', or nullptr.
   float spec::ToleranceSpec::*bound;
+  // Shown on the one line `run` prints for a frame that differs from its golden (the other
+  // golden figures are in results.json and the report).
+  bool summary;
 };
 
 // Every row, in output order.
@@ -45,5 +48,7 @@ std::string metricList(const std::vector<const MetricInfo*>& rows);
 bool violates(const MetricInfo& metric, double value, double bound);
 // "rmse 0.021 > 0.01"; the operator says which side was violated.
 std::string violationLine(const MetricInfo& metric, double value, double bound);
+// Whether `line` is a violationLine of `metric`.
+bool isViolationOf(const MetricInfo& metric, std::string_view line);
 
 }  // namespace taa::compare

@@ -76,7 +76,8 @@ std::string adaptiveUnmarkedInapplicable(const CheckedCase& spec) {
   const std::string name = "adaptive_unmarked";
   if (!modeRule(spec.taa.mode).adaptive)
     return name + " checks adaptive ray tracing, but taa.mode is " + enumToString(spec.taa.mode) +
-           "; set taa.mode to adaptive or remove it from checks.invariants";
+           "; set taa.mode to " + modeNames(modesWhere(&ModeRule::adaptive)) +
+           " or remove it from checks.invariants";
   if (auto why = debugViewReason(name, spec); !why.empty()) return why;
   if (spec.post.sharpen != Sharpen::None || spec.post.fxaa)
     return name +

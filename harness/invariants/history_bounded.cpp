@@ -123,7 +123,8 @@ std::string historyBoundedInapplicable(const CheckedCase& spec) {
            "; remove it from checks.invariants or " + fix;
   };
   if (!modeRule(t.mode).plainFull)
-    return because(std::string("taa.mode is ") + enumToString(t.mode), "set taa.mode to full");
+    return because(std::string("taa.mode is ") + enumToString(t.mode),
+                   "set taa.mode to " + modeNames(modesWhere(&ModeRule::plainFull)));
   if (!t.shader.empty() && !t.shader_clamps)
     return because("the user's resolve (taa.shader) does not declare that it clamps",
                    "set taa.shader_clamps to true if its output stays in the 3x3 min/max box");

@@ -89,8 +89,8 @@ std::unique_ptr<Invariant> makeTscmaaNonEdge(const CheckedCase&) {
 std::string tscmaaNonEdgeInapplicable(const CheckedCase& spec) {
   if (!modeRule(spec.taa.mode).tscmaa)
     return std::string("tscmaa_non_edge checks the TSCMAA passes, but taa.mode is ") +
-           enumToString(spec.taa.mode) +
-           "; set taa.mode to tscmaa or remove it from checks.invariants";
+           enumToString(spec.taa.mode) + "; set taa.mode to " +
+           modeNames(modesWhere(&ModeRule::tscmaa)) + " or remove it from checks.invariants";
   if (spec.post.fxaa || spec.post.sharpen != Sharpen::None)
     return "tscmaa_non_edge compares the output with the CMAA image, but post.fxaa / post.sharpen "
            "change the "

@@ -1,6 +1,5 @@
 // One case of the report: status and message, metrics, invariants, curves, frames, timings, log.
 #include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "compare/metric_table.h"
@@ -19,20 +18,15 @@ std::string num(double v, int significant = 4) {
   return escapeMarkup(formatNumber(v, significant));
 }
 
-// Lower case without '_', '-' or spaces, so "max_abs", "maxAbs" and "Max abs" compare equal.
-std::string squash(std::string_view text) {
+// "max abs, RMSE and PSNR dB": the titles of the golden columns computed by `source`.
+std::string columnTitles(compare::MetricSource source) {
+  std::vector<std::string> titles;
+  for (const auto* col : compare::goldenMetrics())
+    if (col->source == source) titles.emplace_back(col->title);
   std::string out;
-  for (char c : text)
-    if (c != '_' && c != ' ' && c != '-') out += char(std::tolower(static_cast<unsigned char>(c)));
+  for (size_t i = 0; i < titles.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == titles.size() ? " and " : ", ") + titles[i];
   return out;
-}
-
-// Whether a failure line ("rmse 0.021 > 0.01") is about the given metric, to mark its cell.
-bool failedMetric(const run::FrameComparison& f, std::string_view metric) {
-  const std::string key = squash(metric);
-  return std::any_of(f.failures.begin(), f.failures.end(), [&](const std::string& line) {
-    return squash(line).starts_with(key);  // "flip_p99 0.3 > 0.2", "FLIP p99: 0.3 > 0.2"
-  });
 }
 
 std::string metricsTable(const run::CaseResult& c, const std::string& id) {
@@ -55,7 +49,9 @@ std::string metricsTable(const run::CaseResult& c, const std::string& id) {
     }
     s += std::string("<td>") + (f.toleranceMode ? "tolerance" : "exact") + "</td>";
     for (const auto* col : columns) {
-      const bool hit = failedMetric(f, col->name) || failedMetric(f, col->title);
+      const bool hit =
+          std::any_of(f.failures.begin(), f.failures.end(),
+                      [&](const std::string& line) { return compare::isViolationOf(*col, line); });
       s += std::string("<td class=\"num") + (hit ? " bad" : "") + "\">" +
            num(f.metrics.*col->golden) + "</td>";
     }
@@ -63,14 +59,14 @@ std::string metricsTable(const run::CaseResult& c, const std::string& id) {
   }
   s += "</table>\n";
   // What each number is computed on, so nobody has to guess from the column title.
-  return s +
-         "<p class=\"muted metric-notes\">max abs, RMSE, PSNR and share over: on the linear "
-         "half-float "
-         "frames (RGB). PSNR = 10 log10(peak\xC2\xB2 / MSE) with a fixed peak of 1.0 (nominal "
-         "white), "
-         "not the image maximum, so HDR values above 1 can make it negative. FLIP: LDR-FLIP on "
-         "exactly the 8-bit sRGB PNGs shown here (Reinhard c / (1 + c), sRGB curve, rounded to 8 "
-         "bits), at 67 pixels per degree.</p>\n";
+  return s + "<p class=\"muted metric-notes\">" +
+         escapeMarkup(columnTitles(compare::MetricSource::Linear)) +
+         ": on the linear half-float frames (RGB). PSNR = 10 log10(peak\xC2\xB2 / MSE) with a "
+         "fixed peak of 1.0 (nominal white), not the image maximum, so HDR values above 1 can "
+         "make it negative. " +
+         escapeMarkup(columnTitles(compare::MetricSource::Flip)) +
+         ": LDR-FLIP on exactly the 8-bit sRGB PNGs shown here (Reinhard c / (1 + c), sRGB curve, "
+         "rounded to 8 bits), at 67 pixels per degree.</p>\n";
 }
 
 // Where the sequence starts to go wrong: the first frame whose hash differs from the golden's,

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "compare/metric_table.h"
+
 namespace taa::run {
 
 namespace {
@@ -39,8 +41,9 @@ void printCase(std::ostream& out, const CaseResult& c) {
     } else if (f.status == FrameStatus::MissingGolden) {
       out << "missing";
     } else {
-      out << (f.toleranceMode ? "tolerance" : "exact") << " rmse " << fmt("%.3g", f.metrics.rmse) << " flip_mean "
-          << fmt("%.3g", f.metrics.flipMean);
+      out << (f.toleranceMode ? "tolerance" : "exact");
+      for (const auto* m : compare::goldenMetrics())
+        if (m->summary) out << " " << m->name << " " << fmt("%.3g", f.metrics.*m->golden);
     }
     for (const auto& why : f.failures) out << "; " << why;
     if (!ok && !f.images.diff.empty()) out << " (diff " << f.images.diff << ")";

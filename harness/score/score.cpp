@@ -17,6 +17,7 @@
 #include "invariants/registry.h"
 #include "run/timing.h"
 #include "scene/build_scene.h"
+#include "spec/taa_modes.h"
 #include "user/user_capabilities.h"
 #include "user/user_resolve.h"
 
@@ -46,7 +47,7 @@ double scoreMean(const std::vector<double>& v) {
 
 // Why no resolve can stand in for this case's, or "".
 std::string notApplicable(const spec::CheckedCase& s) {
-  if (s.taa.mode != spec::TaaMode::Full)
+  if (!spec::modeRule(s.taa.mode).standIn)
     return std::string("taa.mode is ") + spec::enumToString(s.taa.mode);
   if (s.debug.output != spec::DebugOutput::None) return "it shows a debug view";
   return {};

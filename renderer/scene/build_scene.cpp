@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/shared.h"
 #include "core/image_io.h"
 #include "core/input_file.h"
 #include "scene/gltf_loader.h"
@@ -9,7 +10,7 @@
 #include "scene/scene_error.h"
 #include "scene/textures.h"
 #include "scene/trace_textures.h"
-#include "common/shared.h"
+#include "spec/taa_modes.h"
 
 namespace taa::scene {
 namespace {
@@ -104,7 +105,7 @@ void checkNormalStrength(const spec::CaseSpec& spec, const Scene& scene) {
         spec.file,
         "material.normal_strength: no material of the scene has a normalTexture, so it "
         "would change nothing; remove the key or use a normal-mapped glTF");
-  if (mapped && spec.material.normal_strength > 0.0f && spec.taa.mode == spec::TaaMode::Adaptive)
+  if (mapped && spec.material.normal_strength > 0.0f && spec::modeRule(spec.taa.mode).adaptive)
     throw SceneError(
         spec.file,
         "material.normal_strength: adaptive ray tracing shades its traced pixels without "
@@ -113,7 +114,7 @@ void checkNormalStrength(const spec::CaseSpec& spec, const Scene& scene) {
 
 // The tracer's shader indexes a fixed array of textures (scene/trace_textures.h).
 void checkTraceTextures(const spec::CaseSpec& spec, const Scene& scene) {
-  if (spec.taa.mode != spec::TaaMode::Adaptive) return;
+  if (!spec::modeRule(spec.taa.mode).adaptive) return;
   const size_t used = traceTextureSlots(scene).textures.size();
   if (used > TRACE_MAX_TEXTURES)
     throw SceneError(spec.file, "taa.mode: adaptive ray tracing binds at most " +

@@ -25,19 +25,26 @@ struct ModeRule {
   // changed: history_bounded can check it against the box, and it reads the speed motion
   // blur packs into alpha (taa.velocity_in_alpha).
   bool plainFull;
+  // Another resolve can stand in for this one: a user's resolve (taa.shader) or a score
+  // lane replaces exactly the full resolve run with the case's settings as written.
+  bool standIn;
+  // debug.image's still image, written over the raster's colour, is all the output sees:
+  // the tracer shades the hidden scene, accumulation's consistency test weighs taps by its
+  // depth and normals, and TSCMAA is not held to it (seed 18C).
+  bool stillImage;
 };
 
 // Temporal accumulation's published blend weight is 0.2 (seed 003).
 // clang-format off
 inline constexpr ModeRule kModeRules[] = {
-  // mode               resolve path                  tscmaa adaptive accum  alpha  history views  plainFull
-    {TaaMode::Off,         false, Resolve::PassThrough, false, false, false, 0.0f, false, false, false},
-    {TaaMode::PassThrough, true,  Resolve::PassThrough, false, false, false, 0.0f, false, false, false},
-    {TaaMode::Basic,       true,  Resolve::Basic,       false, false, false, 0.0f, true,  false, false},
-    {TaaMode::Full,        true,  Resolve::Full,        false, false, false, 0.0f, true,  true,  true},
-    {TaaMode::Accumulate,  true,  Resolve::Full,        false, false, true,  0.2f, true,  false, false},
-    {TaaMode::Tscmaa,      false, Resolve::PassThrough, true,  false, false, 0.0f, true,  false, false},
-    {TaaMode::Adaptive,    true,  Resolve::Full,        false, true,  false, 0.0f, true,  true,  false},
+  // mode               resolve path                  tscmaa adaptive accum  alpha  history views  plainFull standIn still
+    {TaaMode::Off,         false, Resolve::PassThrough, false, false, false, 0.0f, false, false, false, false, true},
+    {TaaMode::PassThrough, true,  Resolve::PassThrough, false, false, false, 0.0f, false, false, false, false, true},
+    {TaaMode::Basic,       true,  Resolve::Basic,       false, false, false, 0.0f, true,  false, false, false, true},
+    {TaaMode::Full,        true,  Resolve::Full,        false, false, false, 0.0f, true,  true,  true,  true,  true},
+    {TaaMode::Accumulate,  true,  Resolve::Full,        false, false, true,  0.2f, true,  false, false, false, false},
+    {TaaMode::Tscmaa,      false, Resolve::PassThrough, true,  false, false, 0.0f, true,  false, false, false, false},
+    {TaaMode::Adaptive,    true,  Resolve::Full,        false, true,  false, 0.0f, true,  true,  false, false, false},
 };
 // clang-format on
 
@@ -54,6 +61,14 @@ constexpr const ModeRule& modeRule(TaaMode m) {
 
 constexpr uint32_t modeBit(TaaMode m) {
   return 1u << unsigned(m);
+}
+
+// The modes whose rule sets `column`, as modeBit()s.
+constexpr uint32_t modesWhere(bool ModeRule::*column) {
+  uint32_t bits = 0;
+  for (const auto& r : kModeRules)
+    if (r.*column) bits |= modeBit(r.mode);
+  return bits;
 }
 
 // Which taa.mode values a setting may be set in (the `modes` column of taa_settings.h).
@@ -76,8 +91,8 @@ constexpr bool kAlways(const TaaSpec&) {
   return true;
 }
 
-// "taa.mode is basic, full or adaptive": the modes of a mask, in words.
-inline std::string modesText(uint32_t modes) {
+// "basic, full or adaptive": the modes of a mask, in words.
+inline std::string modeNames(uint32_t modes) {
   std::string names;
   int count = 0, seen = 0;
   for (const auto& n : enumNames(TaaMode{}))
@@ -88,7 +103,12 @@ inline std::string modesText(uint32_t modes) {
     if (seen > 1) names += seen == count ? " or " : ", ";
     names += n.name;
   }
-  return "taa.mode is " + names;
+  return names;
+}
+
+// "taa.mode is basic, full or adaptive".
+inline std::string modesText(uint32_t modes) {
+  return "taa.mode is " + modeNames(modes);
 }
 
 // The settings the resolve runs with: a setting outside its modes keeps its default

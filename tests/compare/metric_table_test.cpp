@@ -66,5 +66,19 @@ TEST(MetricTable, ToleranceViolationsListEveryBoundInTableOrder) {
   EXPECT_TRUE(toleranceViolations(run::ImageMetrics{0.0, 0.0, 99.0, 0.0, 0.0, 0.0}, {}).empty());
 }
 
+// The report marks a failed cell by matching the frame's failure lines to its column: a line
+// belongs to its own metric only, even where one name starts another's.
+TEST(MetricTable, AViolationLineIsRecognisedAsItsOwnMetricOnly) {
+  for (const auto& row : metricTable())
+    for (const auto& other : metricTable())
+      EXPECT_EQ(&row == &other, isViolationOf(other, violationLine(row, 2.0, 1.0)))
+          << row.name << " vs " << other.name;
+  const MetricInfo* rmse = findMetric("rmse");
+  ASSERT_NE(rmse, nullptr);
+  EXPECT_FALSE(isViolationOf(*rmse, "rmse"));
+  EXPECT_FALSE(isViolationOf(*rmse, "rmsex 2 > 1"));
+  EXPECT_FALSE(isViolationOf(*rmse, "size 64x36 differs"));
+}
+
 }  // namespace
 }  // namespace taa::compare

@@ -121,7 +121,7 @@ inline run::RunResults sampleRun(const std::filesystem::path& dir) {
   bad.status = run::FrameStatus::Failed;
   bad.toleranceMode = true;
   bad.metrics = {0.9, 0.021, 33.5, 0.02, 0.08, std::numeric_limits<double>::quiet_NaN()};
-  bad.failures = {"rmse 0.021 > 0.01", "flip_mean 0.08 > 0.05", "FLIP p99 nan > 0.2"};
+  bad.failures = {"rmse 0.021 > 0.01", "flip_mean 0.08 > 0.05", "flip_p99 nan > 0.2"};
   bad.images = writeFrameImages(dir, "fence_8", true);
   fail.frames = {tol, bad};
   fail.invariants = {{"no_nan", true, "no NaN or Inf in 12 frames", {}},

@@ -76,7 +76,7 @@ TEST(ReportJUnit, OneTestcasePerCaseWithFailuresErrorsAndSkips) {
   EXPECT_NE(xml.find("name=\"moving_fence &quot;&lt;&amp;&gt;&quot;\""), std::string::npos);
   // Golden-frame failures and failed invariants, one per line; passed invariants stay out.
   EXPECT_NE(xml.find("frame 8: rmse 0.021 &gt; 0.01\nframe 8: flip_mean 0.08 &gt; 0.05\n"
-                     "frame 8: FLIP p99 nan &gt; 0.2\n"
+                     "frame 8: flip_p99 nan &gt; 0.2\n"
                      "invariant ghosting_decay: residual 0.12 &gt; 0.05"),
             std::string::npos);
   EXPECT_EQ(xml.find("no_nan"), std::string::npos);

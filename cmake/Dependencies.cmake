@@ -17,6 +17,9 @@ find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 # glslang as a library: a user's resolve (taa.shader) is compiled at run time.
 find_package(Threads REQUIRED)
 find_package(glslang CONFIG REQUIRED)
+# SPIRV-Tools' optimizer (a dependency of glslang's package): `taa-harness coverage`
+# specializes the resolve per case to see which of its lines run.
+find_package(SPIRV-Tools-opt CONFIG REQUIRED)
 
 # OpenImageIO only in the tests, as an independent reader of the files the harness writes.
 if(TAA_BUILD_TESTS)

@@ -128,7 +128,8 @@ std::vector<Constant> resolveConstants() {
   return out;
 }
 
-// "taa_resolve spec constants: 0=2 1=1 19=0 ..." -> id -> value.
+}  // namespace
+
 std::map<int, int> tracedConstants(const std::vector<std::string>& log) {
   static const std::string kPrefix = "taa_resolve spec constants:";
   std::map<int, int> out;
@@ -144,8 +145,6 @@ std::map<int, int> tracedConstants(const std::vector<std::string>& log) {
   }
   return out;
 }
-
-}  // namespace
 
 std::vector<CoverageRow> resolveBranchCoverage(
     const std::map<std::string, std::vector<std::string>>& logs) {

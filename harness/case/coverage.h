@@ -30,6 +30,10 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
 // it into results.json); `logs` maps a case's name to its log. The log shows the history
 // pipeline; the no-history one (frame 0, cuts, resets) differs from it in kHasHistory only,
 // so every traced case reaches kHasHistory 0 too.
+// The specialization constants a run log traces ("taa_resolve spec constants: 0=2 1=1 ..."),
+// id -> value; empty when no built-in resolve ran.
+std::map<int, int> tracedConstants(const std::vector<std::string>& log);
+
 std::vector<CoverageRow> resolveBranchCoverage(
     const std::map<std::string, std::vector<std::string>>& logs);
 

@@ -52,6 +52,9 @@ float workingLuma(TaaSettings s, vec3 w) { return isYCoCg(s) ? w.x : luma(w); }
 // Blends history toward current by alpha in the space the case chose. Karis weights
 // each sample by 1/(1+luma) so a single bright sample cannot dominate; inverse-luma
 // blends tonemapped colours and maps back; log blends log(1+c).
+#if TAA_VALUE_COUNT(TAA_TONE_WEIGHT_VALUES) != 4
+#error "toneWeightedBlend: a taa.tonemap_weighting value without its branch"
+#endif
 vec3 toneWeightedBlend(TaaSettings s, vec3 history, vec3 current, float alpha) {
   if (s.tonemap_weighting == TONE_WEIGHT_NONE) return mix(history, current, alpha);
   // The tone curves are defined for light. A YCoCg box's corners lie outside the RGB cube, so
@@ -64,10 +67,10 @@ vec3 toneWeightedBlend(TaaSettings s, vec3 history, vec3 current, float alpha) {
     float wc = alpha / (1.0 + luma(current));
     float wh = (1.0 - alpha) / (1.0 + luma(history));
     return (current * wc + history * wh) / max(wc + wh, 1e-20);
-  } else if (s.tonemap_weighting == TONE_WEIGHT_INVERSE_LUMA || s.tonemap_weighting == TONE_WEIGHT_LOG) {
-    return fromDomain(s, mix(toDomain(s, history), toDomain(s, current), alpha));
   }
-  return mix(history, current, alpha);
+  // TONE_WEIGHT_INVERSE_LUMA, TONE_WEIGHT_LOG (`taa-harness coverage` found the plain blend
+  // that used to follow unreachable for every value).
+  return fromDomain(s, mix(toDomain(s, history), toDomain(s, current), alpha));
 }
 
 bool isFinite3(vec3 c) { return !any(isnan(c)) && !any(isinf(c)); }

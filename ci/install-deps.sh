@@ -18,6 +18,9 @@ packages=(
   glslang-tools
   # glslang as a library, to compile a user's resolve shader (taa.shader) at run time.
   glslang-dev
+  # SPIRV-Tools' optimizer: `taa-harness coverage` specializes the resolve per case (glslang-dev
+  # depends on it too; named here because the harness links it itself).
+  spirv-tools
   libglm-dev
   nlohmann-json3-dev
   # PNG reading and writing (core/png_codec.cpp).

@@ -10,7 +10,7 @@
 
 #include "api/device.h"
 #include "core/errors.h"
-#include "common/taa_settings.h"
+#include "spec/taa_spec.h"  // the settings table: TAA_SPEC_HAS_HISTORY
 
 namespace taa::cases {
 

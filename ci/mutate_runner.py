@@ -68,6 +68,12 @@ def strip_volatile(value):
     return value
 
 
+# Where a user shader's SPIR-V came from (glslang or the cache) depends on what ran before, not
+# on the code: the baseline compiles it and every mutant's run finds it cached.
+SPIRV_PROVENANCE = re.compile(r"SPIR-V (from the cache|compiled by glslang: no cache entry|"
+                              r"recompiled by glslang: [^)]*)")
+
+
 def case_outputs(run_dir):
     """name -> the case's results without timings and with the output folder written as <out>
     (frame hashes, status, metrics, invariants), from one run's results.json."""
@@ -75,6 +81,7 @@ def case_outputs(run_dir):
     if not f.exists():
         return {}
     text = f.read_text().replace(str(run_dir), "<out>")
+    text = SPIRV_PROVENANCE.sub("SPIR-V <provenance>", text)
     return {c["name"]: strip_volatile(c) for c in json.loads(text).get("cases", [])}
 
 

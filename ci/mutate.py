@@ -65,6 +65,21 @@ def restore_leftover(out):
         log(f"restored {data['file']} left mutated by an interrupted run")
 
 
+def resumed(out, chosen):
+    """id -> the stored record of each chosen mutant an earlier run of OUT judged, where the
+    mutated line's text is still what it was (a changed line is judged again)."""
+    f = out / "mutation.json"
+    if not f.is_file():
+        return {}
+    stored = {r["id"]: r for r in json.loads(f.read_text()).get("mutants", [])}
+    keep = {}
+    for m in chosen:
+        r = stored.get(m.id)
+        if r and r.get("before") == m.before and r.get("after") == m.after:
+            keep[m.id] = r
+    return keep
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("build", help="an existing CMake build folder (rebuilt incrementally)")
@@ -84,6 +99,9 @@ def main():
     p.add_argument("--out", default=str(ROOT / "out" / "mutate"), help="report folder")
     p.add_argument("--fresh-baseline", action="store_true", help="rerun the unmutated suite")
     p.add_argument("--unit-timeout", type=int, default=900)
+    p.add_argument("--resume", action="store_true",
+                   help="keep the verdicts of OUT's mutation.json for mutants of this sample "
+                        "whose text is unchanged, and run only the others")
     p.add_argument("--rejudge", action="store_true",
                    help="rewrite OUT's report from its mutation.json with the current "
                         "ci/mutate-equivalent.json, running nothing")
@@ -128,8 +146,14 @@ def main():
     base_outputs, ordered, total = runner.baseline()
     log(f"baseline: {len(base_outputs)} cases, {total:.0f} s; {len(chosen)} mutants")
     records, judged = [], load_judged()
+    done = resumed(out, chosen) if args.resume else {}
+    if done:
+        log(f"resume: {len(done)} verdicts kept from {out / 'mutation.json'}")
     try:
         for n, m in enumerate(chosen, 1):
+            if m.id in done:
+                records.append(done[m.id])
+                continue
             start = time.monotonic()
             if m.kind == "shader":
                 status, detail = runner.judge(m, base_outputs, ordered, total)

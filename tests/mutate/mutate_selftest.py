@@ -79,5 +79,30 @@ with tempfile.TemporaryDirectory() as tmp:
     check(ops.file_mutants(copy, "harness/compare/probe_fixture.cpp", "harness") == [],
           "no sites in comments, strings or includes")
 
+# --resume keeps a stored verdict only for a mutant whose line still reads as it did.
+import json  # noqa: E402
+import mutate  # noqa: E402
+import mutate_runner  # noqa: E402
+
+with tempfile.TemporaryDirectory() as tmp:
+    out = Path(tmp)
+    sample = [m for m in ops.all_mutants(ROOT) if m.kind == "shader"][:3]
+    stored = [dict(m.as_json(), status="caught", detail="x", seconds=1.0) for m in sample[:2]]
+    stored[1]["before"] = "a line as it read before an edit"
+    (out / "mutation.json").write_text(json.dumps({"mutants": stored}))
+    kept = mutate.resumed(out, sample)
+    check(list(kept) == [sample[0].id], f"--resume keeps exactly the unchanged judged mutant (got {list(kept)})")
+
+    # Where a user shader's SPIR-V came from is not an output: cached or compiled, the same.
+    def results(provenance, workgroup="8x8"):
+        run = out / "run"
+        run.mkdir(exist_ok=True)
+        log = [f"pass user_resolve u.comp (glsl, SPIR-V {provenance}) workgroup {workgroup}", "frame 0"]
+        (run / "results.json").write_text(json.dumps({"cases": [{"name": "u", "log": log}]}))
+        return mutate_runner.case_outputs(run)
+    cold, warm = results("compiled by glslang: no cache entry"), results("from the cache")
+    check(cold == warm, "a user shader's SPIR-V provenance does not make a case's outputs differ")
+    check(cold != results("from the cache", "4x4"), "the rest of the line still counts")
+
 print("mutate selftest:", "FAIL" if failures else "ok", f"({len(failures)} failure(s))")
 sys.exit(1 if failures else 0)

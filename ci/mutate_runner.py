@@ -144,10 +144,14 @@ class Runner:
             for c in json.loads(f.read_text())["cases"]:
                 seconds[c["name"]] = c.get("seconds", 0.0)
         ordered = sorted(self.cases, key=lambda p: (seconds.get(p.stem, 1e9), p.stem))
-        self.logs = {}
+        self.logs, self.shaders = {}, {}
         for f in results:
             for c in json.loads(f.read_text())["cases"]:
                 self.logs[c["name"]] = [ln for ln in c.get("log", []) if ln.startswith("pass ")]
+                # The SPIR-V files the case's renderers loaded (the run log's "shaders:" line).
+                used = [ln.split()[1:] for ln in c.get("log", []) if ln.startswith("shaders:")]
+                if used:
+                    self.shaders[c["name"]] = set(used[0])
         total = float((self.out / "baseline-seconds").read_text()) if (
             self.out / "baseline-seconds").exists() else sum(seconds.values())
         return outputs, ordered, total
@@ -195,10 +199,14 @@ class Runner:
         ops.apply(src, mutant)
         if not hasattr(self, "_shader_commands"):
             self._shader_commands = self.shader_commands()
+        self.rebuilt = set()
         with open(work / "build.log", "w") as log_f:
             for command, reads in self._shader_commands:
                 if mutant.file not in reads:
                     continue
+                out = command.split(" -o ", 1)[1].split()[0] if " -o " in command else ""
+                if out.endswith(".spv"):
+                    self.rebuilt.add(os.path.relpath(out, self.build / "shaders")[:-len(".spv")])
                 command = command.replace(str(self.build / "shaders"), str(spv))
                 command = command.replace(str(ROOT / "shaders"), str(src / "shaders"))
                 log_f.write(command + "\n")
@@ -225,6 +233,14 @@ class Runner:
                   .splitlines() if ln.startswith("[  FAILED  ]") and "." in ln]
         return "caught", "unit test " + (failed[0] if failed else f"exit {rc}")
 
+    def affected(self, ordered):
+        """The cases that load a rebuilt SPIR-V file: the others run none of the mutated code,
+        so their every frame is the baseline's by construction. All cases where the baseline
+        predates the "shaders:" line."""
+        if len(self.shaders) < len(ordered):
+            return ordered
+        return [c for c in ordered if self.shaders.get(c.stem, set()) & self.rebuilt]
+
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
@@ -232,6 +248,12 @@ class Runner:
             self.env["TAA_SHADER_DIR"] = str(work / "spv")
             if not self.build_shader_mutant(mutant, work):
                 return "stillborn", "does not compile"
+            ordered = self.affected(ordered)
+            base_outputs = {n: o for n, o in base_outputs.items() if n in {c.stem for c in ordered}}
+            if not ordered:
+                verdict = self.unit_tests(mutant, work)
+                return verdict or ("no-change", "no case loads the rebuilt SPIR-V (" +
+                                   ", ".join(sorted(self.rebuilt)) + ")")
         else:
             self.env.pop("TAA_SHADER_DIR", None)
             if not self.ninja(["taa-harness", "taa_tests"], work / "build.log"):
@@ -261,4 +283,5 @@ class Runner:
                           if outputs.get(first, {}).get(k) != base_outputs[first].get(k))
             return "survived", (f"outputs changed but passed: {', '.join(changed[:5])} "
                                 f"({first}: {', '.join(keys)})")
-        return "no-change", "every case's frame hashes and verdicts equal the unmutated run's"
+        return "no-change", (f"every frame hash and verdict of the {len(base_outputs)} cases that "
+                             "load the rebuilt SPIR-V equal the unmutated run's")

@@ -80,6 +80,7 @@ std::map<int, Image> renderAbSide(Device& device, const cases::LoadedCase& loade
 CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOptions& options,
                    std::map<int, Image>* keep) {
   const auto start = std::chrono::steady_clock::now();
+  const ShaderUseRecord shaders;  // every renderer of the case: replays and the A/B side
   const auto& spec = loaded.spec;
   CaseResult result;
   result.name = spec.name;
@@ -153,6 +154,9 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
                        spec.report.zoom);
     }
   }
+  std::string used = "shaders:";
+  for (const auto& name : shaders.names()) used += " " + name;
+  result.log.push_back(used);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (keep) *keep = std::move(outputs);
   return result;

@@ -50,4 +50,11 @@ std::string shaderFolder() {
   return vk::shaderDir();
 }
 
+ShaderUseRecord::ShaderUseRecord() : outer_(vk::setShaderUseSet(&names_)) {}
+
+ShaderUseRecord::~ShaderUseRecord() {
+  vk::setShaderUseSet(outer_);
+  if (outer_) outer_->insert(names_.begin(), names_.end());
+}
+
 }  // namespace taa

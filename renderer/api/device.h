@@ -3,10 +3,12 @@
 // outside the renderer includes a Vulkan header; Renderer takes a Device.
 #pragma once
 
-#include <filesystem>
 #include <cstddef>
+#include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace taa {
 
@@ -62,5 +64,22 @@ class Device {
 
 // The folder SPIR-V is loaded from (build tree or install prefix).
 std::string shaderFolder();
+
+// The build's shaders (SPIR-V file names in shaderFolder()) that renderers load on this thread
+// while the record lives, cached pipelines included: which shaders a case runs, so a change
+// to one names the cases it can affect. Records nest; an inner one's names reach the outer.
+class ShaderUseRecord {
+ public:
+  ShaderUseRecord();
+  ~ShaderUseRecord();
+  ShaderUseRecord(const ShaderUseRecord&) = delete;
+  ShaderUseRecord& operator=(const ShaderUseRecord&) = delete;
+  // Sorted, each once.
+  std::vector<std::string> names() const { return {names_.begin(), names_.end()}; }
+
+ private:
+  std::set<std::string> names_;
+  std::set<std::string>* outer_;
+};
 
 }  // namespace taa

@@ -89,7 +89,19 @@ std::string shaderDir() {
   return TAA_SHADER_DIR;
 }
 
+namespace {
+// Per thread: a worker renders one case at a time on its own thread.
+thread_local std::set<std::string>* tShaderUse = nullptr;
+}  // namespace
+
+std::set<std::string>* setShaderUseSet(std::set<std::string>* names) {
+  std::set<std::string>* previous = tShaderUse;
+  tShaderUse = names;
+  return previous;
+}
+
 std::vector<uint32_t> loadSpirv(const std::string& name) {
+  if (tShaderUse) tShaderUse->insert(name);
   const std::string dir = shaderDir();
   const std::string path = dir + "/" + name + ".spv";
   std::ifstream in(path, std::ios::binary | std::ios::ate);

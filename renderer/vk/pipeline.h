@@ -12,6 +12,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -87,7 +88,11 @@ class Pipeline {
 std::string shaderDir();
 
 // SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp") in shaderDir().
+// The name goes into this thread's shader-use set, if one is installed.
 std::vector<uint32_t> loadSpirv(const std::string& name);
+
+// Installs `names` as this thread's shader-use set (nullptr: none); returns the previous one.
+std::set<std::string>* setShaderUseSet(std::set<std::string>* names);
 
 // The set layout, push-constant range and workgroup size are the shader's own (set 0 only:
 // a second set is an error naming the shader).

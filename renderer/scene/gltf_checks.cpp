@@ -239,6 +239,10 @@ struct Place {
   std::string schema;     // "meshes.primitives"
   std::string path;       // "meshes[2].primitives[0]"
   const json* animation;  // the enclosing animation, for its samplers
+  // An array of objects (`value`) whose elements from `next` on are still to visit: one
+  // pending entry per array rather than per element, so 100,000 nodes queue one place.
+  bool elements = false;
+  size_t next = 0;
 };
 
 class Checker {
@@ -250,6 +254,16 @@ class Checker {
     while (!pending.empty()) {
       Place p = std::move(pending.back());
       pending.pop_back();
+      if (p.elements) {
+        const json& list = *p.value;
+        const size_t i = p.next;
+        std::string at = p.path + "[" + std::to_string(i) + "]";
+        if (!list[i].is_object()) fail(at, "is " + shown(list[i]) + ", not an object");
+        if (i + 1 < list.size())
+          pending.push_back({p.value, p.schema, p.path, p.animation, true, i + 1});
+        pending.push_back({&list[i], std::move(p.schema), std::move(at), p.animation});
+        continue;
+      }
       if (p.schema == "animations") p.animation = p.value;
       const auto [first, last] = rulesByPath().equal_range(p.schema);
       for (auto it = first; it != last; ++it) check(it->second, p, pending);
@@ -381,10 +395,7 @@ class Checker {
         break;
       case Kind::Objects:
         if (!v.is_array()) fail(where(), "is " + shown(v) + ", not an array of objects");
-        for (size_t i = v.size(); i-- > 0;) {
-          if (!v[i].is_object()) fail(element(i), "is " + shown(v[i]) + ", not an object");
-          pending.push_back({&v[i], schema(), element(i), p.animation});
-        }
+        if (!v.empty()) pending.push_back({&v, schema(), where(), p.animation, true, 0});
         break;
       default:
         if (const std::string why = problem(r, p, v); !why.empty()) fail(where(), why);

@@ -278,8 +278,8 @@ void decomposeTrs(const glm::mat4& m, glm::vec3& t, glm::quat& r, glm::vec3& s) 
 }
 
 Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf,
-                  const std::string& warnings, Scene& scene) {
-  return gltf_detail::Converter(file, gltf, warnings, scene).run();
+                  const std::vector<GltfNode>& nodes, const std::string& warnings, Scene& scene) {
+  return gltf_detail::Converter(file, gltf, nodes, warnings, scene).run();
 }
 
 }  // namespace taa::scene

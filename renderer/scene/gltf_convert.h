@@ -6,17 +6,38 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
 namespace taa::scene {
 
-// `warnings` are tinygltf's, quoted when an image it could not read is needed.
+// A glTF node as the loader keeps it (tinygltf never reads the node array): TRS with a
+// matrix already decomposed, -1 for an absent index, and its EXT_mesh_gpu_instancing object
+// (null without one).
+struct GltfNode {
+  std::string name;
+  std::vector<int> children;
+  int mesh = -1, camera = -1, skin = -1;
+  std::vector<float> weights;
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+  glm::vec3 scale{1.0f};
+  nlohmann::json instancing;
+};
+
+// Takes the "nodes" array out of a document that checkGltfDocument accepted (gltf_node_list.cpp),
+// freeing each entry as it is read.
+std::vector<GltfNode> takeGltfNodes(nlohmann::json& doc);
+
+// `nodes` are the file's (takeGltfNodes); `warnings` are tinygltf's, quoted when an image it
+// could not read is needed.
 Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf,
-                  const std::string& warnings, Scene& scene);
+                  const std::vector<GltfNode>& nodes, const std::string& warnings, Scene& scene);
 
 // A primitive's morph targets and skin attributes, per vertex of the primitive.
 struct GltfDeform {
@@ -32,9 +53,10 @@ GltfDeform readGltfDeform(const std::filesystem::path& file, const tinygltf::Mod
 void appendGltfDeform(const GltfDeform& d, const std::vector<uint32_t>& source, size_t before,
                       Mesh& mesh);
 
-// Every skin of the file, joints mapped through `nodes` (glTF node -> model node).
+// Every skin of the file, joints mapped through `nodes` (glTF node -> model node, -1: not in
+// the default scene).
 std::vector<Skin> readGltfSkins(const std::filesystem::path& file, const tinygltf::Model& gltf,
-                                const std::map<int, int>& nodes);
+                                const std::vector<int>& nodes);
 
 // The KHR_texture_transform of a texture reference (identity without one) as a UV
 // matrix, and the UV set it selects in place of the reference's texCoord (-1: none);

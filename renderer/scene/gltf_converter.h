@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_convert.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
 
@@ -19,8 +20,9 @@ namespace taa::scene::gltf_detail {
 class Converter {
  public:
   Converter(const std::filesystem::path& file, const tinygltf::Model& g,
-            const std::string& warnings, Scene& s)
-      : file_(file), g_(g), warnings_(warnings), s_(s) {}
+            const std::vector<GltfNode>& nodes, const std::string& warnings, Scene& s)
+      : file_(file), g_(g), gltfNodes_(nodes), warnings_(warnings), s_(s),
+        nodes_(nodes.size(), -1) {}
   Model run();
 
  private:
@@ -42,14 +44,16 @@ class Converter {
   int mesh(int index);
   void addNode(int root, Model& model);
   void addOneNode(int index, int parent, Model& model);
-  void instances(int index, const tinygltf::Node& gn, Node& n);
+  void instances(int index, const GltfNode& gn, Node& n);
   void addAnimation(const tinygltf::Animation& a, size_t index, Model& model);
 
   const std::filesystem::path& file_;
   const tinygltf::Model& g_;
+  const std::vector<GltfNode>& gltfNodes_;
   const std::string& warnings_;
   Scene& s_;
-  std::map<int, int> textures_, materials_, meshes_, nodes_;
+  std::map<int, int> textures_, materials_, meshes_;
+  std::vector<int> nodes_;  // per glTF node, its index in the model (-1: not reached yet)
   // Per glTF material: the KHR_texture_transform of each UV set its textures sample,
   // baked into that set of its primitives' coordinates.
   struct UvTransforms {

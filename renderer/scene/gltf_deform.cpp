@@ -77,19 +77,19 @@ void appendGltfDeform(const GltfDeform& d, const std::vector<uint32_t>& source, 
 }
 
 std::vector<Skin> readGltfSkins(const fs::path& file, const tinygltf::Model& g,
-                                const std::map<int, int>& nodes) {
+                                const std::vector<int>& nodes) {
   std::vector<Skin> out;
   for (size_t k = 0; k < g.skins.size(); ++k) {
     const tinygltf::Skin& gs = g.skins[k];
     const std::string what = "skins[" + std::to_string(k) + "]";
     Skin skin;
     for (const int joint : gs.joints) {
-      const auto n = nodes.find(joint);
-      if (n == nodes.end())
+      const int n = joint >= 0 && size_t(joint) < nodes.size() ? nodes[size_t(joint)] : -1;
+      if (n < 0)
         throw SceneError(file, what + " names joint nodes[" + std::to_string(joint) +
                                    "], which is not in the default scene; put the skeleton in "
                                    "the scene");
-      skin.joints.push_back(n->second);
+      skin.joints.push_back(n);
     }
     if (gs.inverseBindMatrices >= 0) {
       const std::vector<float> m =

@@ -102,9 +102,11 @@ Model loadGltf(const fs::path& file, Scene& scene) {
       bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
   std::string json =
       binary ? glbJsonChunk(file, bytes) : std::string(bytes.begin(), bytes.end());
+  if (!binary) std::vector<uint8_t>().swap(bytes);  // the text is the only copy kept
   if (const std::string problem = jsonStructureProblem(json); !problem.empty())
     throw SceneError(file, problem);
   DracoIndices dracoIndices;
+  std::vector<GltfNode> nodes;
   {
     // The one parse before tinygltf's: every check reads this document, which is gone
     // before tinygltf builds its own.
@@ -115,9 +117,14 @@ Model loadGltf(const fs::path& file, Scene& scene) {
     if (!note.empty() &&
         std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end())
       scene.notes.push_back(note);
-    bool changed = fillMeshoptFallbacks(doc);
+    // tinygltf is given the document without its nodes, which are read here once (a file
+    // of many nodes is mostly nodes); the text goes first, as the document holds it all.
+    const bool hadNodes = doc.contains("nodes");
+    nodes = takeGltfNodes(doc);
+    bool changed = fillMeshoptFallbacks(doc) || hadNodes;
     dracoIndices = detachDracoIndices(doc, changed);
     if (changed) {
+      std::string().swap(json);
       json = doc.dump();
       if (binary) bytes = glbWithJson(bytes, json);
     }
@@ -141,9 +148,11 @@ Model loadGltf(const fs::path& file, Scene& scene) {
   if (!ok)
     throw SceneError(file, "tinygltf cannot load it: " + trimmed(err) +
                                "; check the file with the Khronos glTF validator or re-export it");
+  std::string().swap(json);  // tinygltf holds everything it read
+  std::vector<uint8_t>().swap(bytes);
   decodeMeshopt(file, gltf);
   decodeDraco(file, gltf, dracoIndices);
-  return convertGltf(file, gltf, trimmed(warn), scene);
+  return convertGltf(file, gltf, nodes, trimmed(warn), scene);
 }
 
 }  // namespace taa::scene

@@ -1,5 +1,6 @@
 // The glTF converter's scene graph: the default scene's roots, nodes (parents first),
 // cameras, skins and animations. Textures, materials and meshes are gltf_convert.cpp's.
+#include <cstdint>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -18,39 +19,28 @@ void Converter::addNode(int root, Model& model) {
     const auto [index, parent] = pending.back();
     pending.pop_back();
     addOneNode(index, parent, model);
-    const std::vector<int>& children = g_.nodes[size_t(index)].children;
+    const std::vector<int>& children = gltfNodes_[size_t(index)].children;
     const int self = int(model.nodes.size()) - 1;
     for (auto c = children.rbegin(); c != children.rend(); ++c) pending.emplace_back(*c, self);
   }
 }
 
 void Converter::addOneNode(int index, int parent, Model& model) {
-  if (index < 0 || size_t(index) >= g_.nodes.size())
+  if (index < 0 || size_t(index) >= gltfNodes_.size())
     fail("a scene or node refers to missing nodes[" + std::to_string(index) + "]");
   // A node is recorded before its children are visited, so a cycle meets it again too.
-  if (nodes_.count(index))
+  if (nodes_[size_t(index)] >= 0)
     fail("nodes[" + std::to_string(index) +
          "] is reached twice (a cycle or shared child); the hierarchy must be a tree");
-  const tinygltf::Node& gn = g_.nodes[size_t(index)];
+  const GltfNode& gn = gltfNodes_[size_t(index)];
   Node n;
   n.name = gn.name.empty() ? "node" + std::to_string(index) : gn.name;
   n.parent = parent;
   n.skin = gn.skin;  // a glTF skin index: every skin is loaded, in file order
-  for (double w : gn.weights) n.weights.push_back(float(w));
-  if (gn.matrix.size() == 16) {
-    glm::mat4 m;
-    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(gn.matrix[size_t(i)]);
-    decomposeTrs(m, n.translation, n.rotation, n.scale);
-  } else {
-    if (gn.translation.size() == 3)
-      n.translation =
-          glm::vec3(float(gn.translation[0]), float(gn.translation[1]), float(gn.translation[2]));
-    if (gn.rotation.size() == 4)
-      n.rotation = glm::quat(float(gn.rotation[3]), float(gn.rotation[0]), float(gn.rotation[1]),
-                             float(gn.rotation[2]));
-    if (gn.scale.size() == 3)
-      n.scale = glm::vec3(float(gn.scale[0]), float(gn.scale[1]), float(gn.scale[2]));
-  }
+  n.weights = gn.weights;
+  n.translation = gn.translation;
+  n.rotation = gn.rotation;
+  n.scale = gn.scale;
   if (gn.mesh >= 0) {
     if (size_t(gn.mesh) >= g_.meshes.size())
       fail("nodes[" + std::to_string(index) + "] refers to a missing mesh");
@@ -62,33 +52,33 @@ void Converter::addOneNode(int index, int parent, Model& model) {
       fail("nodes[" + std::to_string(index) + "] refers to a missing camera");
     n.camera = gn.camera;
   }
-  nodes_[index] = int(model.nodes.size());
+  nodes_[size_t(index)] = int(model.nodes.size());
   model.nodes.push_back(std::move(n));
 }
 
 // EXT_mesh_gpu_instancing: TRANSLATION, ROTATION and SCALE accessors of one count, each
 // instance's transform T * R * S (glTF's node order), missing ones identity.
-void Converter::instances(int index, const tinygltf::Node& gn, Node& n) {
-  const auto ext = gn.extensions.find("EXT_mesh_gpu_instancing");
-  if (ext == gn.extensions.end()) return;
+void Converter::instances(int index, const GltfNode& gn, Node& n) {
+  if (gn.instancing.is_null()) return;
   const std::string what = "nodes[" + std::to_string(index) + "].extensions.EXT_mesh_gpu_instancing";
   if (gn.mesh < 0) return;  // nothing to instance
   if (gn.skin >= 0)
     fail(what + " instances a skinned mesh, which the extension leaves undefined; remove the "
                 "skin or the instancing");
-  if (!ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject())
+  const auto attrs = gn.instancing.find("attributes");
+  if (!gn.instancing.is_object() || attrs == gn.instancing.end() || !attrs->is_object())
     fail(what + " has no attributes object; give TRANSLATION, ROTATION or SCALE accessors");
-  const tinygltf::Value& attrs = ext->second.Get("attributes");
   std::vector<float> columns[3];
   const char* keys[3] = {"TRANSLATION", "ROTATION", "SCALE"};
   size_t count = 0;
   bool any = false;
   for (int k = 0; k < 3; ++k) {
-    if (!attrs.Has(keys[k])) continue;
-    const tinygltf::Value& v = attrs.Get(keys[k]);
-    if (!v.IsInt()) fail(what + ".attributes." + keys[k] + " must be an accessor index");
+    const auto v = attrs->find(keys[k]);
+    if (v == attrs->end()) continue;
+    if (!v->is_number_integer() || v->get<int64_t>() < INT32_MIN || v->get<int64_t>() > INT32_MAX)
+      fail(what + ".attributes." + keys[k] + " must be an accessor index");
     const int comps = k == 1 ? 4 : 3;
-    columns[k] = readAccessor(v.GetNumberAsInt(), what + ".attributes." + keys[k], comps);
+    columns[k] = readAccessor(int(v->get<int64_t>()), what + ".attributes." + keys[k], comps);
     const size_t c = columns[k].size() / size_t(comps);
     if (any && c != count)
       fail(what + ".attributes." + keys[k] + " has " + std::to_string(c) +
@@ -118,10 +108,12 @@ void Converter::addAnimation(const tinygltf::Animation& a, size_t index, Model& 
     const tinygltf::AnimationChannel& ch = a.channels[c];
     const std::string what =
         "animations[" + std::to_string(index) + "].channels[" + std::to_string(c) + "]";
-    const auto node = nodes_.find(ch.target_node);
-    if (node == nodes_.end()) continue;  // targets a node outside the default scene
+    const int node = ch.target_node >= 0 && size_t(ch.target_node) < nodes_.size()
+                         ? nodes_[size_t(ch.target_node)]
+                         : -1;
+    if (node < 0) continue;  // targets a node outside the default scene
     AnimChannel o;
-    o.node = node->second;
+    o.node = node;
     int comps = 3;
     if (ch.target_path == "translation")
       o.path = AnimPath::Translation;
@@ -185,11 +177,11 @@ Model Converter::run() {
     roots = g_.scenes[size_t(which)].nodes;
   } else {
     // No scene: every node that is nobody's child is a root.
-    std::vector<bool> child(g_.nodes.size(), false);
-    for (const auto& n : g_.nodes)
+    std::vector<bool> child(gltfNodes_.size(), false);
+    for (const GltfNode& n : gltfNodes_)
       for (int c : n.children)
         if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
-    for (size_t i = 0; i < g_.nodes.size(); ++i)
+    for (size_t i = 0; i < gltfNodes_.size(); ++i)
       if (!child[i]) roots.push_back(int(i));
   }
   for (const tinygltf::Camera& c : g_.cameras) {
@@ -202,6 +194,7 @@ Model Converter::run() {
     }
     model.cameras.push_back(cam);
   }
+  model.nodes.reserve(gltfNodes_.size());  // at most every node, without regrowth copies
   for (int r : roots) addNode(r, model);
   if (model.nodes.empty())
     fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");

@@ -185,6 +185,24 @@ TEST(GltfChecks, TheIssuesExamplesAreRefusedWithTheirPath) {
             std::string::npos);
 }
 
+// An array of objects is walked by one queued cursor: every element is still visited, in file
+// order (the first defect is the one named), and one that is not an object is named by index.
+TEST(GltfChecks, EveryElementOfAnArrayIsVisitedInFileOrder) {
+  Doc doc = fullDocument();
+  for (int i = 0; i < 1000; ++i) doc["nodes"].push_back(Doc::object());
+  EXPECT_EQ(refusal(doc), "");
+  Doc last = doc;
+  last["nodes"][1001]["mesh"] = 7;
+  EXPECT_NE(refusal(last).find("nodes[1001].mesh is 7"), std::string::npos) << refusal(last);
+  Doc notObject = doc;
+  notObject["nodes"][600] = 3;
+  EXPECT_NE(refusal(notObject).find("nodes[600] is 3, not an object"), std::string::npos)
+      << refusal(notObject);
+  notObject["nodes"][500]["camera"] = -1;
+  EXPECT_NE(refusal(notObject).find("nodes[500].camera is -1"), std::string::npos)
+      << refusal(notObject);
+}
+
 TEST(GltfChecks, AValueIsNamedNeverTheBytesAroundIt) {
   Doc doc = fullDocument();
   doc["nodes"][0]["mesh"] = std::string(5000, 'A') + "TOKEN";

@@ -102,6 +102,35 @@ TEST(GltfLoad, DecomposeHandlesScaleAndMirroring) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(back[c][k], m[c][k], 1e-5f);
 }
 
+// The loader reads the node array itself (tinygltf never sees it): every field as the file
+// gives it, a matrix decomposed, and the array gone from the document handed on.
+TEST(GltfLoad, NodeListReadsEveryFieldAndTakesTheArray) {
+  nlohmann::json doc = nlohmann::json::parse(R"({"asset": {}, "nodes": [
+    {"name": "a", "children": [2, 1], "mesh": 0, "skin": 1, "camera": 2, "weights": [0.25, 1],
+     "translation": [1, 2, 3], "rotation": [0, 0.6, 0, 0.8], "scale": [2, 3, 4]},
+    {"matrix": [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 5, 6, 7, 1]},
+    {"extensions": {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 3}}}}]})");
+  const std::vector<GltfNode> n = takeGltfNodes(doc);
+  EXPECT_FALSE(doc.contains("nodes"));
+  EXPECT_TRUE(doc.contains("asset"));
+  ASSERT_EQ(n.size(), 3u);
+  EXPECT_EQ(n[0].name, "a");
+  EXPECT_EQ(n[0].children, (std::vector<int>{2, 1}));
+  EXPECT_EQ(n[0].mesh, 0);
+  EXPECT_EQ(n[0].skin, 1);
+  EXPECT_EQ(n[0].camera, 2);
+  EXPECT_EQ(n[0].weights, (std::vector<float>{0.25f, 1.0f}));
+  expectVecNear(n[0].translation, {1, 2, 3});
+  EXPECT_EQ(n[0].rotation, glm::quat(0.8f, 0.0f, 0.6f, 0.0f));  // glTF's order is x, y, z, w
+  expectVecNear(n[0].scale, {2, 3, 4});
+  EXPECT_TRUE(n[0].instancing.is_null());
+  EXPECT_EQ(n[1].name, "");
+  EXPECT_EQ(n[1].mesh, -1);
+  expectVecNear(n[1].translation, {5, 6, 7});
+  expectVecNear(n[1].scale, {2, 2, 2});
+  EXPECT_EQ(n[2].instancing["attributes"]["TRANSLATION"], 3);
+}
+
 TEST(GltfLoad, GlbWithoutNormalsGetsFlatNormals) {
   const Loaded l = load("box.glb");
   ASSERT_EQ(l.model.nodes.size(), 1u);

@@ -3,8 +3,8 @@
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "case/json_reader.h"
+#include "case/presets.h"
 #include "core/input_file.h"
-#include "sweep/sweep.h"
 
 namespace taa::cases {
 
@@ -40,9 +40,9 @@ std::string abCaseJson(const nlohmann::json& root, const spec::CheckedCase& spec
   if (r.ab.empty()) return "";
   const std::string where = spec.file.string() + ": report.ab";
   const auto dir = spec.file.parent_path();
-  sweep::Presets presets;
+  Presets presets;
   try {
-    presets = sweep::loadPresets(
+    presets = loadPresets(
         containedRealPath(dir, dir / r.ab_presets, "the case's report.ab_presets"));
   } catch (const InputFileError& e) {
     throw CaseError({spec.file.string() + ": report.ab_presets: " + e.what()});

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "api/device.h"
+#include "case/presets.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
@@ -56,7 +57,7 @@ int cmdSweep(const Args& args) {
       }
     if (presetsFile.empty()) throw UsageError(caseFile.string() + " is not under a cases/ folder; pass --presets-file");
   }
-  const auto presets = sweep::loadPresets(presetsFile);
+  const auto presets = cases::loadPresets(presetsFile);
   const auto names = split(a.value("--presets"));
   sweep::SweepOptions options;
   options.presetsDir = fs::absolute(presetsFile).parent_path();

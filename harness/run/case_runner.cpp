@@ -8,10 +8,10 @@
 #include <memory>
 #include <optional>
 
-#include "api/renderer.h"
 #include "case/case_loader.h"
 #include "compare/metrics.h"
 #include "golden/environment.h"
+#include "lanes/lane_runner.h"
 #include "run/golden_check.h"
 #include "run/invariant_run.h"
 #include "run/reference_key.h"
@@ -29,51 +29,26 @@ fs::path defaultGoldensRoot(const fs::path& caseFile) {
 
 namespace {
 
-// Renders the case once, handing every frame to `each`; images are read for checked frames
-// and for the frames the invariants judge with them.
-void replay(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
-            const InvariantRun& checks, const RunOptions& options, bool hashEveryFrame,
-            const std::function<void(FrameRecord&)>& each, std::vector<std::string>* log) {
-  RenderOptions ro;
-  ro.hashEveryFrame = hashEveryFrame;
-  ro.captures = checks.needs().captures;
-  if (ro.captures.has(Capture::Reference) && options.references) {
-    ro.referenceCache = options.references;
-    ro.referenceKey = referenceKey(spec);
+// The case's own lane: images are read for checked frames and for the frames the invariants
+// judge with them (long warm-ups cost no read-back, nor reference renders, which run only for
+// frames read back).
+lanes::LaneSetup caseLane(const spec::CaseSpec& spec, const scene::Scene& scene,
+                          const InvariantRun& checks, const RunOptions& options, bool hashEveryFrame) {
+  lanes::LaneSetup lane{&spec, &scene, {}, {}};
+  lane.options.hashEveryFrame = hashEveryFrame;
+  lane.options.captures = checks.needs().captures;
+  if (lane.options.captures.has(Capture::Reference) && options.references) {
+    lane.options.referenceCache = options.references;
+    lane.options.referenceKey = referenceKey(spec);
   }
-  Renderer renderer(device, spec, scene, ro);
-  if (log) *log = renderer.log();
   const auto& checked = spec.output.frames;
-  for (int f = 0; f < spec.script.frames; ++f) {
-    if (options.progress) options.progress(f, spec.script.frames);
-    // Long warm-ups cost no read-back (nor reference renders, which run only for frames
-    // read back).
-    const bool wanted =
-        checks.readsImages(f) || std::binary_search(checked.begin(), checked.end(), f);
-    FrameRecord r = renderer.renderFrame(f, wanted);
-    each(r);
-  }
+  lane.reads = [&checks, &checked](int f) {
+    return checks.readsImages(f) || std::binary_search(checked.begin(), checked.end(), f);
+  };
+  return lane;
 }
 
 double rmseAgainst(const Image& a, const Image& b) { return compare::computeMetrics(a, b).rmse; }
-
-// report.ab: the B side (the case with the preset merged in, checked when the case loaded)
-// replayed over the same frames; its outputs of the checked frames, for the report only.
-std::map<int, Image> renderAbSide(Device& device, const cases::LoadedCase& loaded,
-                                  const RunOptions& options) {
-  const cases::LoadedCase b = cases::parseCase(loaded.abCase, loaded.spec.file);
-  const scene::Scene scene = scene::buildScene(b.spec);
-  Renderer renderer(device, b.spec, scene, RenderOptions{});
-  const auto& checked = loaded.spec.output.frames;
-  std::map<int, Image> out;
-  for (int f = 0; f < b.spec.script.frames; ++f) {
-    if (options.progress) options.progress(f, b.spec.script.frames);
-    const bool wanted = std::binary_search(checked.begin(), checked.end(), f);
-    FrameRecord r = renderer.renderFrame(f, wanted);
-    if (wanted) out[f] = std::move(r.color);
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -98,36 +73,49 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   // Goldens are loaded and verified before rendering, so every frame can be checked as it comes.
   std::optional<GoldenCheck> golden;
   if (spec.checks.golden) golden.emplace(spec, env, options);
-  std::map<int, Image> outputs;
-  TimingLog timing;
+  std::map<int, Image> outputs, abOutputs;
   const auto& checked = spec.output.frames;
+  const auto isChecked = [&](int f) { return std::binary_search(checked.begin(), checked.end(), f); };
+  // report.ab's B side (the case with the preset merged in, checked when the case loaded) is a
+  // second lane of the same replay; its outputs of the checked frames are for the report only.
+  cases::LoadedCase abSide;
   // Every frame's output is hashed for the goldens, and read for invariants that judge
   // warm-up frames too.
-  replay(
-      device, spec, scene, checks, options, golden.has_value() || checks.judgesWarmUp(),
-      [&](FrameRecord& r) {
-        timing.add(r.gpuMs);
-        result.frameMs.push_back(frameMilliseconds(r.gpuMs));
-        for (const auto& [name, value] : r.stats) result.frameStats[name].push_back(value);
-        if (r.hasImages && r.hasReference)
-          result.referenceRmse.push_back(rmseAgainst(r.reference, r.color));
-        if (golden) golden->observe(r);
-        checks.observe(invariants::FrameView::of(r));
-        if (std::binary_search(checked.begin(), checked.end(), r.frame))
-          outputs[r.frame] = std::move(r.color);
-      },
-      &result.log);
-  result.framesRendered += spec.script.frames;
-  if (checks.needs().secondRun) {
-    replay(
-        device, spec, scene, checks, options, checks.judgesWarmUp(),
-        [&](FrameRecord& r) { checks.observeRepeat(invariants::FrameView::of(r)); }, nullptr);
-    result.framesRendered += spec.script.frames;
-  }
-  result.timings = timing.summary();
-  std::map<int, Image> abOutputs;
+  std::vector<lanes::LaneSetup> sides{
+      caseLane(spec, scene, checks, options, golden.has_value() || checks.judgesWarmUp())};
   if (!loaded.abCase.empty() && options.writeImages) {
-    abOutputs = renderAbSide(device, loaded, options);
+    abSide = cases::parseCase(loaded.abCase, spec.file);
+    sides.push_back({&abSide.spec, nullptr, {}, isChecked});
+  }
+  const auto progress = [&](size_t lane, int f) {
+    if (options.progress && lane == 0) options.progress(f, spec.script.frames);
+  };
+  {
+    lanes::LaneRunner runner(device, std::move(sides));
+    result.log = runner.log(0);
+    runner.run(
+        [&](lanes::LaneFrame& lf) {
+          FrameRecord& r = lf.record;
+          if (lf.lane == 1) {
+            if (isChecked(r.frame)) abOutputs[r.frame] = std::move(r.color);
+            return;
+          }
+          for (const auto& [name, value] : r.stats) result.frameStats[name].push_back(value);
+          if (r.hasImages && r.hasReference)
+            result.referenceRmse.push_back(rmseAgainst(r.reference, r.color));
+          if (golden) golden->observe(r);
+          checks.observe(invariants::FrameView::of(r));
+          if (isChecked(r.frame)) outputs[r.frame] = std::move(r.color);
+        },
+        0, progress);
+    result.frameMs = runner.cost(0).frameMs;
+    result.timings = runner.cost(0).passes.summary();
+    result.framesRendered += spec.script.frames * int(runner.size());
+  }
+  if (checks.needs().secondRun) {
+    lanes::LaneRunner repeat(device, {caseLane(spec, scene, checks, options, checks.judgesWarmUp())});
+    repeat.run([&](lanes::LaneFrame& lf) { checks.observeRepeat(invariants::FrameView::of(lf.record)); }, 0,
+               progress);
     result.framesRendered += spec.script.frames;
   }
 

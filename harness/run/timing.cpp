@@ -5,14 +5,27 @@
 
 namespace taa::run {
 
-double frameMilliseconds(const std::vector<std::pair<std::string, double>>& passes) {
+namespace {
+
+bool isRasterPass(const std::string& pass) { return pass.rfind("gbuffer", 0) == 0; }
+
+}  // namespace
+
+double frameMilliseconds(const PassTimes& passes) {
   double sum = 0.0;
   for (const auto& [name, ms] : passes)
     if (name != "reference") sum += ms;
   return sum;
 }
 
-void TimingLog::add(const std::vector<std::pair<std::string, double>>& passes) {
+double taaMilliseconds(const PassTimes& passes) {
+  double sum = 0.0;
+  for (const auto& [name, ms] : passes)
+    if (name != "reference" && !isRasterPass(name)) sum += ms;
+  return sum;
+}
+
+void TimingLog::add(const PassTimes& passes) {
   for (const auto& [name, ms] : passes) {
     if (!samples_.count(name)) order_.push_back(name);
     samples_[name].push_back(ms);
@@ -36,6 +49,12 @@ double percentile(std::vector<double> values, double p) {
   std::sort(values.begin(), values.end());
   const auto rank = static_cast<size_t>(std::ceil(p / 100.0 * double(values.size())));
   return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
+}
+
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / double(values.size());
 }
 
 }  // namespace taa::run

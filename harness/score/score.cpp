@@ -5,7 +5,6 @@
 #include <memory>
 #include <set>
 
-#include "api/renderer.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "compare/flip.h"
@@ -15,8 +14,8 @@
 #include "invariants/flicker_meter.h"
 #include "invariants/invariant_support.h"
 #include "invariants/registry.h"
+#include "lanes/lane_runner.h"
 #include "run/timing.h"
-#include "scene/build_scene.h"
 #include "spec/taa_modes.h"
 #include "user/user_capabilities.h"
 #include "user/user_resolve.h"
@@ -27,23 +26,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// One lane's replay of a case. (The lockstep replay of lanes against one reference is the
-// sweep's too: a shared lane runner would hold both.)
+// One lane's case and what it measures; the lane runner renders it.
 struct ScoreLane {
   LaneScore score;
   cases::LoadedCase loaded;
-  scene::Scene scene;
-  std::unique_ptr<Renderer> renderer;
   std::unique_ptr<invariants::Invariant> ghosting;
-  std::vector<double> ms;
   invariants::FlickerMeter flicker;
 };
-
-double scoreMean(const std::vector<double>& v) {
-  double s = 0.0;
-  for (double x : v) s += x;
-  return v.empty() ? 0.0 : s / double(v.size());
-}
 
 // Why no resolve can stand in for this case's, or "".
 std::string notApplicable(const spec::CheckedCase& s) {
@@ -117,63 +106,61 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
   c.name = file.stem().string();
   c.frames = first.script.frames;
   c.movers = invariants::inapplicable("no_ghosting", first).empty();
-  for (size_t i = 0; i < lanes.size(); ++i) {
-    auto& l = *lanes[i];
-    if (!l.score.skipped.empty()) continue;
-    l.scene = scene::buildScene(l.loaded.spec);
-    RenderOptions ro;
-    if (i == 0) ro.captures |= {Capture::Reference};  // one reference, shared
-    if (c.movers) ro.captures |= {Capture::Ids};
-    l.renderer = std::make_unique<Renderer>(device, l.loaded.spec, l.scene, ro);
-    if (c.movers) l.ghosting = invariants::makeInvariant("no_ghosting", l.loaded.spec);
-  }
-  invariants::FlickerMeter referenceFlicker;
-  for (int f = 0; f < c.frames; ++f) {
-    Image reference;
-    for (size_t i = 0; i < lanes.size(); ++i) {
-      auto& l = *lanes[i];
-      if (!l.renderer) continue;
-      if (o.progress) o.progress(c.name, l.score.lane, f, c.frames);
-      FrameRecord r = l.renderer->renderFrame(f, true);
-      double ms = 0.0;
-      for (const auto& [pass, t] : r.gpuMs)
-        if (pass != "reference" && pass.rfind("gbuffer", 0) != 0) ms += t;
-      l.ms.push_back(ms);
-      if (i == 0) reference = r.reference;
-      size_t finitePixels = 0;
-      const Image finite = finiteOnly(r.color, reference, l.score.nonFinite, finitePixels);
-      l.flicker.add(finite, f > 0);
-      const double rmse = compare::computeMetrics(reference, finite).rmse;
-      // The substituted pixels add no error: scale the mean to the finite pixels alone.
-      l.score.rmse += (finitePixels ? rmse * std::sqrt(double(finite.pixelCount()) / double(finitePixels)) : 0.0) /
-                      c.frames;
-      l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, finite).mean);
-      if (l.ghosting && f >= l.loaded.spec.checks.from_frame) {
-        invariants::FrameView v = invariants::FrameView::of(r);
-        v.set(Capture::Reference, &reference);
-        v.output = &finite;
-        l.ghosting->observe(v);
-      }
-    }
-    referenceFlicker.add(reference, f > 0);
-  }
-  c.referenceFlicker = referenceFlicker.mean();
+  // The lanes that run; the built-in lane runs every case and renders the one reference.
+  std::vector<ScoreLane*> running;
+  std::vector<lanes::LaneSetup> setups;
   for (auto& lp : lanes) {
     auto& l = *lp;
-    if (l.renderer) {
-      l.score.flip = scoreMean(l.score.flipPerFrame);
-      l.score.flicker = l.flicker.mean();
-      l.score.converged = convergence(l.score.flipPerFrame);
-      l.score.frameMs = run::percentile(l.ms, 50.0);
-      if (l.ghosting)
-        for (const auto& [k, v] : l.ghosting->finish().values)
-          if (k == "worst_mean_error") {
-            l.score.ghosting = v;
-            l.score.ghostingMeasured = true;
-          }
-    }
-    c.lanes.push_back(std::move(l.score));
+    if (!l.score.skipped.empty()) continue;
+    lanes::LaneSetup setup{&l.loaded.spec, nullptr, {}, {}};
+    if (setups.empty()) setup.options.captures |= {Capture::Reference};
+    if (c.movers) setup.options.captures |= {Capture::Ids};
+    if (c.movers) l.ghosting = invariants::makeInvariant("no_ghosting", l.loaded.spec);
+    running.push_back(&l);
+    setups.push_back(std::move(setup));
   }
+  lanes::LaneRunner runner(device, std::move(setups));
+  invariants::FlickerMeter referenceFlicker;
+  runner.run(
+      [&](lanes::LaneFrame& lf) {
+        ScoreLane& l = *running[lf.lane];
+        const FrameRecord& r = lf.record;
+        const Image& reference = lf.reference;
+        if (lf.lane == 0) referenceFlicker.add(reference, r.frame > 0);
+        size_t finitePixels = 0;
+        const Image finite = finiteOnly(r.color, reference, l.score.nonFinite, finitePixels);
+        l.flicker.add(finite, r.frame > 0);
+        const double rmse = compare::computeMetrics(reference, finite).rmse;
+        // The substituted pixels add no error: scale the mean to the finite pixels alone.
+        l.score.rmse += (finitePixels ? rmse * std::sqrt(double(finite.pixelCount()) / double(finitePixels)) : 0.0) /
+                        c.frames;
+        l.score.flipPerFrame.push_back(compare::flipLdrFromHdr(reference, finite).mean);
+        if (l.ghosting && r.frame >= l.loaded.spec.checks.from_frame) {
+          invariants::FrameView v = invariants::FrameView::of(r);
+          v.set(Capture::Reference, &reference);
+          v.output = &finite;
+          l.ghosting->observe(v);
+        }
+      },
+      0,
+      [&](size_t lane, int f) {
+        if (o.progress) o.progress(c.name, running[lane]->score.lane, f, c.frames);
+      });
+  for (size_t i = 0; i < running.size(); ++i) {
+    auto& l = *running[i];
+    l.score.flip = run::mean(l.score.flipPerFrame);
+    l.score.flicker = l.flicker.mean();
+    l.score.converged = convergence(l.score.flipPerFrame);
+    l.score.taaMs = run::percentile(runner.cost(i).taaMs, 50.0);
+    if (l.ghosting)
+      for (const auto& [k, v] : l.ghosting->finish().values)
+        if (k == "worst_mean_error") {
+          l.score.ghosting = v;
+          l.score.ghostingMeasured = true;
+        }
+  }
+  c.referenceFlicker = referenceFlicker.mean();
+  for (auto& l : lanes) c.lanes.push_back(std::move(l->score));
   return c;
 }
 

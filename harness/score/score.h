@@ -49,7 +49,7 @@ struct LaneScore {
   bool ghostingMeasured = false;
   double ghosting = 0.0;    // no_ghosting's worst mean error, on mover cases
   long long nonFinite = 0;  // output samples that are NaN or infinite, over every frame
-  double frameMs = 0.0;     // median per frame of every pass but the raster and the reference
+  double taaMs = 0.0;       // median per frame of run/timing.h's TAA ms
   std::vector<double> flipPerFrame;
 };
 
@@ -87,6 +87,7 @@ LaneSpec shaderLane(const std::filesystem::path& shader, const std::string& para
 // each a taa section (a sweep preset's "taa" object); shaders relative to the file's folder.
 std::vector<LaneSpec> loadLanes(const std::filesystem::path& file);
 
+// Each case's lanes run as one lanes::LaneRunner, the built-in lane rendering the reference.
 // Throws cases::CaseError for a case that does not load, a shader that does not compile or
 // two lanes of one name.
 Scorecard runScore(Device& device, const ScoreOptions& options);

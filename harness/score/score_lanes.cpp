@@ -7,6 +7,7 @@
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "report/text_util.h"
+#include "run/timing.h"
 #include "score/score.h"
 
 namespace taa::score {
@@ -14,12 +15,6 @@ namespace taa::score {
 namespace fs = std::filesystem;
 
 namespace {
-
-double laneMean(std::vector<double>::const_iterator a, std::vector<double>::const_iterator b) {
-  double s = 0.0;
-  for (auto it = a; it != b; ++it) s += *it;
-  return a == b ? 0.0 : s / double(b - a);
-}
 
 std::string fixed4(double v) {
   return report::formatFixed(v, 4);
@@ -35,7 +30,7 @@ Convergence convergence(const std::vector<double>& e) {
     return c;
   }
   const size_t tail = std::max<size_t>(1, n / 4);
-  const double level = laneMean(e.end() - long(tail), e.end());
+  const double level = run::mean(std::vector<double>(e.end() - long(tail), e.end()));
   const double fall = e.front() - level;
   // The first frame from which every later frame stays at or under `bound`.
   auto settledFrom = [&](double bound) {

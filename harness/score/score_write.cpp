@@ -33,7 +33,7 @@ std::vector<std::string> laneCells(const CaseScore& c, const LaneScore& l) {
           convergedText(l, c.frames),
           ghostText(l),
           std::to_string(l.nonFinite),
-          report::formatFixed(l.frameMs, 2)};
+          report::formatFixed(l.taaMs, 2)};
 }
 
 // FLIP of every case, one series per lane, against the case: where each resolve wins and
@@ -126,7 +126,7 @@ void writeScorecard(const fs::path& dir, const Scorecard& s) {
               {"convergence_frame", l.converged.frame >= 0 ? nlohmann::json(l.converged.frame) : nlohmann::json(nullptr)},
               {"not_converged", l.converged.why},
               {"non_finite", l.nonFinite},
-              {"ms_per_frame", l.frameMs},
+              {"ms_per_frame", l.taaMs},
               {"flip_per_frame", l.flipPerFrame}};
         jl["ghosting"] = l.ghostingMeasured ? nlohmann::json(l.ghosting) : nlohmann::json(nullptr);
       }

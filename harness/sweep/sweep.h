@@ -5,21 +5,13 @@
 
 #include <filesystem>
 #include <functional>
-#include <map>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "api/device.h"
-#include "case/case_loader.h"
+#include "case/presets.h"
 
 namespace taa::sweep {
-
-// Named presets: each a JSON merge patch (RFC 7386) applied to the case file's JSON.
-using Presets = std::map<std::string, nlohmann::json>;
-
-// Reads a presets file ({"name": {patch}, ...}); CaseError naming the file on bad input.
-Presets loadPresets(const std::filesystem::path& file);
 
 struct PresetResult {
   std::string name;
@@ -28,8 +20,8 @@ struct PresetResult {
   double flipMean = 0.0;      // mean over the measured frames of LDR-FLIP's mean
   double flicker = 0.0;       // mean |tonemapped luma(f) - (f-1)|, all pixels
   double referenceFlicker = 0.0;
-  double taaMs = 0.0;         // median per frame: every pass but the raster and the reference
-  double frameMs = 0.0;       // median per frame: every pass but the reference
+  double taaMs = 0.0;         // median per frame of run/timing.h's TAA ms and frame ms
+  double frameMs = 0.0;
   std::vector<double> rmsePerFrame;
   std::vector<double> flipPerFrame;
   std::vector<std::string> passes;  // what ran, from the renderer log
@@ -57,18 +49,10 @@ struct SweepResult {
   std::vector<PresetResult> presets;
 };
 
-// The case file's JSON with a preset merged in, parsed as a lane: its checks dropped (the
-// invariants it cannot meet go to `notApplicable`), its taa.shader found beside the case or
-// else in `presetsDir`, a missing capability left for the caller to skip. CaseError when the
-// merged case is invalid.
-cases::LoadedCase presetLane(const nlohmann::json& base, const nlohmann::json& patch,
-                             const std::filesystem::path& caseFile,
-                             const std::filesystem::path& presetsDir,
-                             std::vector<std::string>* notApplicable = nullptr);
-
-// Replays `base` once per preset, all presets in lockstep frame by frame, the first
-// one also rendering the reference. Throws CaseError when a patched case is invalid.
-SweepResult runSweep(Device& device, const std::filesystem::path& caseFile, const Presets& presets,
+// Replays the case once per preset (cases::presetLane), all presets as lanes of one
+// lanes::LaneRunner, the first one also rendering the reference. Throws CaseError when a
+// patched case is invalid.
+SweepResult runSweep(Device& device, const std::filesystem::path& caseFile, const cases::Presets& presets,
                      const std::vector<std::string>& names, const SweepOptions& options);
 
 // Writers: sweep.csv (one row per preset), frames.csv (per frame), sweep.md (a markdown

@@ -28,7 +28,7 @@ fs::path writeCase(const char* name) {
   return dir / "pan.json";
 }
 
-sweep::Presets presets() {
+cases::Presets presets() {
   return {{"basic", {{"taa", {{"mode", "basic"}}}}}, {"default", nlohmann::json::object()},
           {"bad", {{"taa", {{"alpah", 0.2}}}}}};
 }
@@ -83,7 +83,7 @@ TEST(Sweep, MsaaBaselineBeatsNoAaAndPaysInTheRasterPass) {
     "camera": {"strafe": {"speed": 1.2, "distance": 0.6}}, "script": {"frames": 8},
     "reference": {"samples": 32}
   })";
-  const auto shipped = sweep::loadPresets(fs::path(TAA_SOURCE_DIR) / "cases/presets/presets.json");
+  const auto shipped = cases::loadPresets(fs::path(TAA_SOURCE_DIR) / "cases/presets/presets.json");
   sweep::SweepOptions o;
   o.fromFrame = 4;
   const auto r = sweep::runSweep(test::device(), file, shipped, {"no_aa", "msaa_4x"}, o);
@@ -101,7 +101,7 @@ TEST(Sweep, MsaaBaselineBeatsNoAaAndPaysInTheRasterPass) {
 // refused only when rendering, by the device).
 TEST(Sweep, ShippedPresetsParseOnEverySweepScene) {
   const fs::path root(TAA_SOURCE_DIR);
-  const auto shipped = sweep::loadPresets(root / "cases/presets/presets.json");
+  const auto shipped = cases::loadPresets(root / "cases/presets/presets.json");
   int checked = 0;
   for (const auto& entry : fs::directory_iterator(root / "cases/sweep")) {
     const nlohmann::json base = nlohmann::json::parse(test::readFile(entry.path()));
@@ -137,7 +137,7 @@ void main() {
 }
 )";
   setenv("TAA_SHADER_CACHE", (dir / "cache").c_str(), 1);
-  const sweep::Presets lanes = {
+  const cases::Presets lanes = {
       {"off", {{"taa", {{"mode", "off"}}}}},
       {"mine", {{"taa", {{"shader", "mine.comp"}}}}},
       {"mine_up", {{"render", {{"upsample", 2.0}}}, {"taa", {{"shader", "mine.comp"}}}}}};

@@ -18,7 +18,6 @@
 #include "bench_context.h"
 #include "case/case_loader.h"
 #include "scene/build_scene.h"
-#include "vk/context.h"
 
 namespace {
 

@@ -10,7 +10,6 @@
 #include "core/output_file.h"
 #include "golden/bless.h"
 #include "golden/golden_store.h"
-#include "run/console.h"
 
 namespace taa::cli {
 

@@ -13,7 +13,6 @@
 #include "core/output_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
-#include "spec/case_spec.h"
 
 namespace taa::cli {
 

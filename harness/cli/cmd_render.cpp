@@ -6,7 +6,6 @@
 #include "api/renderer.h"
 #include "case/case_loader.h"
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
 #include "cli/run_support.h"

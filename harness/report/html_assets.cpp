@@ -1,6 +1,5 @@
 // The report's stylesheet and script, inlined into every report so it works from a file share or
 // a CI artifact without network access. Nothing here may reference a URL.
-#include "report/html_parts.h"
 
 namespace taa::report::detail {
 

@@ -4,7 +4,6 @@
 #include <cstring>
 
 #include "api/device_error.h"
-#include "core/image_io.h"
 #include "frame/draw_list.h"
 #include "frame/frame_readback.h"
 #include "frame/frame_uniforms.h"
@@ -12,7 +11,6 @@
 #include "frame/pass_plan.h"
 #include "frame/post_chain.h"
 #include "frame/prev_gbuffer.h"
-#include "frame/readback.h"
 #include "frame/resolve_factory.h"
 #include "passes/gbuffer.h"
 #include "passes/inject.h"
@@ -23,8 +21,6 @@
 #include "passes/still_image.h"
 #include "script/frame_state.h"
 #include "script/stereo.h"
-#include "spec/taa_modes.h"
-#include "vk/check.h"
 #include "vk/context.h"
 #include "vk/timestamps.h"
 

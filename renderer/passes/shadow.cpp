@@ -4,7 +4,6 @@
 
 #include "common/shared.h"
 #include "passes/draw_faces.h"
-#include "vk/barrier.h"
 #include "vk/context.h"
 
 namespace taa {

@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_convert.h"
-#include "scene/gltf_loader.h"
 #include "scene/scene_error.h"
 
 namespace taa::scene {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 
-#include "vk/check.h"
 #include "vk/context.h"
 
 namespace taa::vk {

@@ -13,7 +13,6 @@
 
 #include "case/case_loader.h"
 // The audit renders on the shared test device; ci/sanitize.sh leaves out suites including this.
-#include "support/gpu.h"
 
 namespace taa {
 namespace {

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "compare/flip.h"
-#include "compare/metrics.h"
 #include "core/image_io.h"
 
 using taa::Image;

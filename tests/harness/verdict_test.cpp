@@ -10,7 +10,6 @@
 
 #include "core/image_io.h"
 #include "harness/cli_fixture.h"
-#include "support/text.h"
 
 namespace taa {
 namespace {

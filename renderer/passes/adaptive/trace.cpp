@@ -5,7 +5,6 @@
 #include <map>
 #include <stdexcept>
 
-#include "api/device_error.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/trace_textures.h"
 #include "vk/check.h"

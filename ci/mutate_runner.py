@@ -249,7 +249,8 @@ class Runner:
             if not self.build_shader_mutant(mutant, work):
                 return "stillborn", "does not compile"
             ordered = self.affected(ordered)
-            base_outputs = {n: o for n, o in base_outputs.items() if n in {c.stem for c in ordered}}
+            names = {c.stem for c in ordered}
+            base_outputs = {n: o for n, o in base_outputs.items() if n in names}
             if not ordered:
                 verdict = self.unit_tests(mutant, work)
                 return verdict or ("no-change", "no case loads the rebuilt SPIR-V (" +

@@ -18,6 +18,7 @@
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/cpu_cores.h"
 #include "core/errors.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
@@ -321,13 +322,14 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
     for (const auto& note : golden::removeStaleStaging(root)) std::cerr << "note: " << note << "\n";
   BatchOutcome out;
   const size_t count = batch.cases.size();
-  const size_t workers = std::max<size_t>(1, std::min(options.jobs ? options.jobs : run::availableCores(), count));
+  const size_t workers = std::max<size_t>(1, std::min(options.jobs ? options.jobs : availableCores(), count));
   // One device per worker: lavapipe runs a device's one queue on one thread, so cases on one
   // device would render one after another. Each device's pipeline cache serves every case
   // its worker runs.
   DeviceOptions co;
   co.device = options.device;
   co.validate = options.validate;
+  co.devicesAtOnce = int(workers);
   std::vector<std::unique_ptr<Device>> devices;
   for (size_t w = 0; w < workers; ++w) devices.push_back(std::make_unique<Device>(co));
   out.results.device = devices[0]->identity().name;

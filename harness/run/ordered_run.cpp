@@ -1,7 +1,5 @@
 #include "run/ordered_run.h"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <condition_variable>
 #include <exception>
@@ -79,13 +77,6 @@ void runOrdered(size_t count, size_t workers,
   }
   stopAndJoin(failure ? 0 : count);
   if (failure) std::rethrow_exception(failure);
-}
-
-size_t availableCores() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof(set), &set) == 0) return size_t(std::max(1, CPU_COUNT(&set)));
-  return std::max(1u, std::thread::hardware_concurrency());
 }
 
 }  // namespace taa::run

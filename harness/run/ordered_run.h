@@ -20,7 +20,4 @@ void runOrdered(size_t count, size_t workers,
                 const std::function<void(size_t worker, size_t item)>& work,
                 const std::function<bool(size_t item)>& deliver);
 
-// The cores this process may run on (its CPU affinity), at least 1: `run -j`'s default.
-size_t availableCores();
-
 }  // namespace taa::run

@@ -17,6 +17,7 @@ Device::Device(const DeviceOptions& options) {
   vk::ContextOptions co;
   co.device = options.device;
   co.validate = options.validate;
+  co.devicesAtOnce = options.devicesAtOnce;
   co.shaderCacheDir =
       options.shaderCacheDir.empty() ? vk::shaderCacheDir() : options.shaderCacheDir;
   ctx_ = std::make_unique<vk::Context>(co);

@@ -23,6 +23,9 @@ struct DeviceOptions {
   // Mesa's shader cache folder; empty: the user's cache folder (vk/shader_cache.h). Tests
   // keep theirs under the build tree.
   std::filesystem::path shaderCacheDir;
+  // Devices of this process that render at the same time (run -j N's workers): lavapipe's
+  // rasteriser threads are shared out among them (vk/context.h).
+  int devicesAtOnce = 1;
 };
 
 // Identity of the driver a frame came from.

@@ -20,6 +20,9 @@ struct ContextOptions {
   bool validate = false;  // Khronos validation layer; messages are counted and printed
   // Mesa's shader cache folder (see shaderCacheDir() in vk/shader_cache.h); empty disables it.
   std::filesystem::path shaderCacheDir;
+  // Devices of this process that render at the same time; with more than one, each lavapipe
+  // device gets its share of the cores as rasteriser threads (Context's constructor).
+  int devicesAtOnce = 1;
 };
 
 // Identity of the driver a frame came from; goldens record it.

@@ -16,6 +16,8 @@
 #include "golden/bless.h"
 #include "report/html_report.h"
 #include "report/junit.h"
+#include "run/build_identity.h"
+#include "run/case_runner.h"
 #include "run/console.h"
 
 namespace taa::cli {
@@ -35,9 +37,10 @@ std::string runUsage() {
          "  core); the console lines and every output stay in case order, the same for any N.\n"
          "  A reference frame several cases (or the frames of a still scene) share is rendered once;\n"
          "  --no-reference-cache renders every one (the results are the same).\n"
-         "  --verdict-from RESULTS takes the cases' lines and verdict from RESULTS (an earlier run of\n"
-         "  this commit that holds every one of them, as ctest's shard runs do) instead of rendering;\n"
-         "  without such a file the cases run.\n"
+         "  --verdict-from RESULTS takes the cases' lines and verdict from RESULTS (and writes them to\n"
+         "  DIR/results.json) instead of rendering, when RESULTS is an earlier run of this build (the\n"
+         "  same executable, SPIR-V, CPU level, device and CI setting) that holds every one of them\n"
+         "  with the same inputs and goldens, as ctest's shards and case tests use; else they run.\n"
          "  --shard I/N runs every N-th case starting at the I-th (1-based), for CI matrices;\n"
          "  `taa-harness merge` joins the shards' outputs.\n"
          "  --fail-fast stops at the first case that fails (exit 1; 2 for bad input); the outputs\n"
@@ -69,30 +72,44 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
     }
   return bad ? kRegression : kPass;
 }
-// --verdict-from RESULTS: when RESULTS (a run of the same commit, e.g. the shard ctest ran
-// earlier in the same session) holds every case of the batch from the same files with the same
-// inputs (case, scene and track bytes), their lines and verdict come from it instead of a
-// render. Empty when it does not: then the cases run.
-std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from) {
+// --verdict-from RESULTS: when RESULTS (ctest's shard of this session, or the main job of this
+// build) holds every case of the batch, rendered by the same build (run::buildIdentity) from
+// the same inputs (case, scene and track bytes) against the same goldens,
+// their lines and verdict come from it instead of a render, and OUT/results.json holds them
+// (so a case test can take its verdict from a shard that took its own from the main job).
+// Empty when it does not: then the cases run.
+std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, const fs::path& out,
+                                  const std::string& build, const fs::path& goldensRoot) {
   std::error_code ec;
   if (!fs::is_regular_file(from, ec)) return std::nullopt;
-  const run::RunResults earlier = readResultsFile(from, "pass the results.json of an earlier run");
-  if (earlier.commit != golden::rendererCommit()) return std::nullopt;
-  std::vector<const run::CaseResult*> found;
+  run::RunResults earlier = readResultsFile(from, "pass the results.json of an earlier run");
+  if (earlier.build != build || earlier.commit != golden::rendererCommit()) return std::nullopt;
+  std::vector<run::CaseResult> found;
   for (const auto& c : batch.cases) {
     const auto it = std::find_if(earlier.cases.begin(), earlier.cases.end(), [&](const auto& r) {
-      return r.name == c.spec.name && r.file == c.spec.file.string() && r.caseSha256 == c.sha256;
+      // Not the path: `run cases` and ctest name one file differently, and its bytes (and
+      // those of every file it references) are in caseSha256.
+      return r.name == c.spec.name && r.caseSha256 == c.sha256 &&
+             r.goldensSha256 == run::goldensDigest(c.spec, goldensRoot);
     });
     if (it == earlier.cases.end()) return std::nullopt;
-    found.push_back(&*it);
+    found.push_back(*it);
   }
   bool failed = false;
-  for (const auto* c : found) {
-    run::printCase(std::cout, *c);
-    failed |= run::caseFailed(*c);
+  for (const auto& c : found) {
+    run::printCase(std::cout, c);
+    failed |= run::caseFailed(c);
   }
-  std::cout << "verdict: from " << from.string() << " (a run of this commit; its report: "
-            << (from.parent_path() / "report.html").string() << ")\n";
+  if (!fs::equivalent(from, out / "results.json", ec)) {
+    earlier.cases = std::move(found);
+    earlier.suite = batch.suite;
+    earlier.notRun = 0;
+    writeFileAtomically(out / "results.json", run::toJson(earlier).dump(1) + "\n");
+  }
+  // A shard that took its own verdicts from the main job has no report; the main job's is it.
+  const fs::path report = from.parent_path() / "report.html";
+  std::cout << "verdict: from " << from.string() << " (a run of this build"
+            << (fs::exists(report, ec) ? "; its report: " + report.string() : std::string()) << ")\n";
   return failed ? kRegression : kPass;
 }
 }  // namespace
@@ -122,7 +139,10 @@ int cmdRun(const Args& args) {
                                                   : run::defaultGoldensRoot(c.spec.file));
   createOutputDirectory(out);
   if (a.values.count("--verdict-from"))
-    if (const auto verdict = earlierVerdict(batch, a.value("--verdict-from"))) return *verdict;
+    if (const auto verdict =
+            earlierVerdict(batch, a.value("--verdict-from"), out,
+                           run::buildIdentity(a.value("--device"), runningInCi()), a.value("--goldens")))
+      return *verdict;
   const auto start = std::chrono::steady_clock::now();
   const CpuTimes cpuBefore = cpuTimes();
   BatchOptions options;

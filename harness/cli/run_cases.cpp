@@ -26,6 +26,7 @@
 #include "golden/bless.h"
 #include "golden/environment.h"
 #include "golden/golden_store.h"
+#include "run/build_identity.h"
 #include "run/console.h"
 #include "run/ordered_run.h"
 
@@ -336,6 +337,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   out.environment = golden::currentEnvironment(devices[0]->identity());
   out.results.fingerprint = out.environment.fingerprint();
   out.results.commit = golden::rendererCommit();
+  out.results.build = run::buildIdentity(options.device, options.run.missingGoldenFails);
   out.results.suite = batch.suite;
   out.workers = workers;
   TerminalProgress progress(workers, count);

@@ -12,6 +12,7 @@
 #include "compare/metrics.h"
 #include "golden/environment.h"
 #include "lanes/lane_runner.h"
+#include "run/build_identity.h"
 #include "run/golden_check.h"
 #include "run/invariant_run.h"
 #include "run/reference_key.h"
@@ -25,6 +26,11 @@ namespace fs = std::filesystem;
 
 fs::path defaultGoldensRoot(const fs::path& caseFile) {
   return fs::absolute(caseFile).parent_path().parent_path() / "goldens";
+}
+
+std::string goldensDigest(const spec::CheckedCase& spec, const fs::path& goldensRoot) {
+  if (!spec.checks.golden) return "";
+  return folderDigest((goldensRoot.empty() ? defaultGoldensRoot(spec.file) : goldensRoot) / spec.name);
 }
 
 namespace {
@@ -61,6 +67,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   result.name = spec.name;
   result.file = spec.file.string();
   result.caseSha256 = loaded.sha256;
+  result.goldensSha256 = goldensDigest(spec, options.goldensRoot);
   result.description = spec.description;
   result.resolve = describeUserShader(spec);
   result.status = CaseStatus::Pass;

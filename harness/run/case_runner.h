@@ -34,6 +34,11 @@ struct RunOptions {
 // Where a case's goldens live: goldens/ next to the folder holding the case file.
 std::filesystem::path defaultGoldensRoot(const std::filesystem::path& caseFile);
 
+// The case's golden folder under `goldensRoot` (empty: the default) as a run reads it,
+// digested (run::folderDigest); "" when the case checks no goldens. A verdict taken from an
+// earlier run (--verdict-from) needs the same goldens as well as the same inputs and build.
+std::string goldensDigest(const spec::CheckedCase& spec, const std::filesystem::path& goldensRoot);
+
 // `outputs`, when given, receives the checked frames' images (bless writes them).
 CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOptions& options,
                    std::map<int, Image>* outputs = nullptr);

@@ -81,6 +81,11 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
   out.device = first.results.device;
   out.fingerprint = first.results.fingerprint;
   out.commit = first.results.commit;
+  // Shards of a CI matrix are built on machines of their own, so their builds may differ; the
+  // merged results name one only where they agree (no later run takes verdicts from it else).
+  out.build = first.results.build;
+  for (const auto& s : shards)
+    if (s.results.build != out.build) out.build.clear();
   out.suite = suite;
   out.suite.shardIndex = out.suite.shardCount = 1;
   // Case k of the suite is case k / N of shard k % N + 1.

@@ -79,6 +79,7 @@ nlohmann::json toJson(const RunResults& r) {
   nlohmann::json out = {{"device", r.device},
                         {"fingerprint", r.fingerprint},
                         {"commit", r.commit},
+                        {"build", r.build},
                         {"suite",
                          {{"cases", r.suite.cases},
                           {"sha256", r.suite.sha256},
@@ -89,6 +90,7 @@ nlohmann::json toJson(const RunResults& r) {
     nlohmann::json jc = {{"name", c.name},
                          {"file", c.file},
                          {"case_sha256", c.caseSha256},
+                         {"goldens_sha256", c.goldensSha256},
                          {"description", c.description},
                          {"status", toString(c.status)},
                          {"resolve", c.resolve},
@@ -161,6 +163,7 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
   r.device = j.value("device", "");
   r.fingerprint = j.value("fingerprint", "");
   r.commit = j.value("commit", "");
+  r.build = j.value("build", "");
   r.notRun = j.value("not_run", size_t(0));
   if (j.contains("suite") && j["suite"].is_object()) {
     const auto& js = j["suite"];
@@ -177,6 +180,7 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.name = jc.value("name", "");
     c.file = jc.value("file", "");
     c.caseSha256 = jc.value("case_sha256", "");
+    c.goldensSha256 = jc.value("goldens_sha256", "");
     c.description = jc.value("description", "");
     c.resolve = jc.value("resolve", "");
     c.status = fromString<CaseStatus>(jc.value("status", "error"), {CaseStatus::Pass, CaseStatus::Fail, CaseStatus::Stale,

@@ -97,6 +97,7 @@ struct CaseResult {
   std::string blessCommand;   // what to run when the change is intended
   std::string fingerprint;    // this run's environment
   std::string goldenFingerprint;
+  std::string goldensSha256;  // the case's golden folder as this run read it (run::folderDigest)
   std::vector<FrameComparison> frames;
   FirstDifference firstDifference;
   std::vector<std::string> frameSha256;  // every rendered frame's pixel hash, when goldens apply
@@ -136,6 +137,7 @@ struct RunResults {
   std::string device;
   std::string fingerprint;
   std::string commit;  // the harness's source commit (golden::rendererCommit)
+  std::string build;   // the executable, SPIR-V, CPU level and device asked for (build_identity.h)
   SuiteInfo suite;
   size_t notRun = 0;   // cases --fail-fast left out after the first failure
   std::vector<CaseResult> cases;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "api/device.h"
 #include "harness/cli_fixture.h"
 #include "report/html_report.h"
 #include "run/results.h"
@@ -141,8 +142,10 @@ TEST_F(ParallelRun, BadJobCountsAreRefused) {
   }
 }
 
-// ctest's case.NAME after its shard (tests/CMakeLists.txt): the verdict is the shard's only
-// when the shard ran this commit on the same case inputs; otherwise the case renders.
+// ctest's case.NAME after its shard, and the shard after the main job (tests/CMakeLists.txt):
+// the verdict is the earlier run's only when that run was made by this build (executable,
+// SPIR-V, CPU level, CI setting) from the same case inputs and goldens; otherwise the case
+// renders.
 TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
   writeCase("b_strict", R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
     "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 0}}})");
@@ -174,9 +177,38 @@ TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
   writeCase("b_strict", R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
     "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"]}})");
   EXPECT_EQ(rendered("b_strict", "the case file changed since").exitCode, 0);
-  // Another commit's results, or none, render too; a file that is not results is refused.
+  // A run that took its verdict holds it in its own results.json, for the next to take.
+  const auto relayed = harness("run " + casePath("small") + from + " --out " + (root_ / "relay").string());
+  ASSERT_NE(relayed.output.find("verdict: from"), std::string::npos) << relayed.output;
+  const auto chained = run("small", " --verdict-from " + (root_ / "relay" / "results.json").string());
+  EXPECT_NE(chained.output.find("verdict: from"), std::string::npos) << chained.output;
+  EXPECT_EQ(lineOf(chained.output, "small"), lineOf(shard.output, "small")) << chained.output;
+  // Goldens that appeared since, another CI setting or another SPIR-V folder render.
+  fs::create_directories(root_ / "goldens" / "small");
+  std::ofstream(root_ / "goldens" / "small" / "manifest.json") << "{}";
+  rendered("small", "the case's goldens changed since");
+  fs::remove_all(root_ / "goldens");
+  EXPECT_EQ(test::runHarness("run " + casePath("small") + from + " --out " + (root_ / "out").string() + " ",
+                             "CI=true ").output.find("verdict: from"),
+            std::string::npos)
+      << "a missing golden fails under CI=true, so CI's verdict is not the local run's";
+  const fs::path shaders = root_ / "shaders";
+  fs::copy(shaderFolder(), shaders, fs::copy_options::recursive);
+  std::ofstream(shaders / "extra.spv") << "not loaded, but another folder's digest";
+  EXPECT_EQ(test::runHarness("run " + casePath("small") + from + " --out " + (root_ / "out").string() + " ",
+                             "CI=false TAA_SHADER_DIR=" + shaders.string() + " ")
+                .output.find("verdict: from"),
+            std::string::npos)
+      << "another SPIR-V folder is another build";
+  // Another build's or commit's results, or none, render too; a file that is not results is
+  // refused.
   const fs::path results = root_ / "shard" / "results.json";
   auto j = nlohmann::json::parse(readFile(results));
+  j["build"] = "build-id 0123456789abcdef | spirv 0 | x86-64 | device default | missing goldens skip";
+  std::ofstream(results) << j.dump(1);
+  rendered("small", "an earlier run of another build");
+  j = nlohmann::json::parse(readFile(results));
+  j["build"] = nlohmann::json::parse(readFile(root_ / "relay" / "results.json"))["build"];
   j["commit"] = "0123456789abcdef";
   std::ofstream(results) << j.dump(1);
   rendered("small", "an earlier run of another commit");

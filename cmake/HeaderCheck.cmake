@@ -2,10 +2,11 @@
 # holds nothing else, so a header that leans on what its includer happened to include first
 # fails to build. Unity batches hide that (a batch neighbour supplies the include), and
 # compiling every source file by file to expose it cost CI about four minutes; a header alone
-# costs a fraction of a second. `cmake --build B --target taa_header_check` builds only these.
-option(TAA_CHECK_HEADERS "Compile each header alone (target taa_header_check)" OFF)
+# costs a fraction of a second. With the option on, the check is part of the default build
+# (CI turns it on in its one GCC tree); `cmake --build B --target taa_header_check` builds only it.
+option(TAA_CHECK_HEADERS "Compile each header alone (target taa_header_check, part of all)" OFF)
 if(TAA_CHECK_HEADERS)
-  add_custom_target(taa_header_check)
+  add_custom_target(taa_header_check ALL)
 endif()
 
 # taa_check_headers(NAME DIRS dir... LIKE target [LIBS lib...]): the headers under each DIR

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_validate.h"
 #include "case/json_reader.h"
@@ -14,8 +15,6 @@
 #include "core/json_guard.h"
 #include "core/sha256.h"
 #include "invariants/registry.h"
-#include "user/glsl_compiler.h"
-#include "user/user_resolve.h"
 
 namespace taa::cases {
 
@@ -38,11 +37,11 @@ namespace {
 // The files a user's shader read to compile: itself, then every include inside its folder,
 // by path relative to that folder (the installed taa_user.h is the harness's, not the case's).
 std::vector<std::pair<std::string, std::string>> shaderInputs(const spec::CaseSpec& spec) {
-  const UserShader shader = loadUserShader(spec);
+  const LoadedUserShader shader(spec);
   std::vector<std::pair<std::string, std::string>> out{{"taa.shader", spec.taa.shader}};
   std::error_code ec;
-  const fs::path root = fs::canonical(shader.root, ec);
-  for (const auto& inc : shader.includes) {
+  const fs::path root = fs::canonical(shader.root(), ec);
+  for (const auto& inc : shader.includes()) {
     const fs::path rel = inc.lexically_relative(root);
     if (ec || rel.empty() || *rel.begin() == "..") continue;
     out.emplace_back("taa.shader (#include)", rel.generic_string());
@@ -96,10 +95,10 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
 nlohmann::json userShaderJson(const spec::CheckedCase& spec, const nlohmann::json& taa) {
   nlohmann::json out;
   for (const char* key : {"mode", "shader", "shader_language", "shader_clamps"}) out[key] = taa[key];
-  const UserShader shader = loadUserShader(spec);
-  if (shader.language == user::ShaderLanguage::Hlsl) out["shader_entry"] = taa["shader_entry"];
+  const LoadedUserShader shader(spec);
+  if (shader.hlsl()) out["shader_entry"] = taa["shader_entry"];
   auto params = nlohmann::json::array();
-  for (const auto& v : userParamValues(spec.taa, shader.interface))
+  for (const auto& v : shader.paramValues(spec.taa))
     params.push_back({{"name", v.name},
                       {"value", toJson(v.value)},
                       {"type", user::paramTypeName(v.type)},

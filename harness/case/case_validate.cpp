@@ -146,9 +146,7 @@ void validateVelocityInAlpha(Problems& p, const CaseSpec& s, const std::set<std:
           "taa.use_velocity: off or remove taa.velocity_in_alpha");
   const std::string colourOnly = "needs depth, velocity or ids, and with " + key +
                                  " the resolve reads colour only (seed 001); ";
-  for (const auto& [name, on] : {std::pair<const char*, bool>{"taa.depth_culling", t.depth_culling},
-                                 {"taa.consistency", t.consistency},
-                                 {"taa.anti_ghosting", t.anti_ghosting}})
+  for (const auto& [name, on] : spec::onScreenRejections(t))
     if (on) p.add(name, colourOnly + "set it false or remove " + key);
   for (const char* name : {"taa.velocity_sampling", "taa.reject_offscreen"})
     if (present.count(name))

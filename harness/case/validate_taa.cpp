@@ -1,5 +1,7 @@
 #include "case/validate_taa.h"
 
+#include <string>
+
 #include "spec/taa_modes.h"
 
 namespace taa::cases {
@@ -44,9 +46,15 @@ void adaptiveRules(Rules& r, const CaseSpec& s, bool resamples) {
   // The segmentation traces pixels the resolve rejected on screen; off-screen history is
   // FXAA's, so without a test that rejects on screen there is nothing to trace.
   const TaaSpec e = effectiveTaa(s.taa);
-  r.needs("adaptive.trace_disoccluded", e.depth_culling || e.consistency || e.anti_ghosting,
-          "taa.depth_culling, taa.consistency or taa.anti_ghosting is true (the resolve's only "
-          "on-screen rejections)");
+  const auto onScreen = onScreenRejections(e);
+  bool rejectsOnScreen = false;
+  std::string either;  // "taa.depth_culling, taa.consistency or taa.anti_ghosting"
+  for (size_t i = 0; i < onScreen.size(); ++i) {
+    rejectsOnScreen = rejectsOnScreen || onScreen[i].second;
+    either += (i == 0 ? "" : i + 1 == onScreen.size() ? " or " : ", ") + onScreen[i].first;
+  }
+  r.needs("adaptive.trace_disoccluded", rejectsOnScreen,
+          either + " is true (the resolve's only on-screen rejections)");
   if (!a.trace_all) return;
   for (const char* key :
        {"adaptive.threshold", "adaptive.weight_normal", "adaptive.weight_depth",

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <memory>
 
+#include "api/tracks.h"
 #include "case/case_error.h"
 #include "case/case_validate.h"
-#include "script/tracks.h"
 
 namespace taa::cases {
 
@@ -92,23 +92,19 @@ std::vector<std::pair<std::string, std::string>> trackProblems(
 
 void loadCaseTracks(spec::CaseSpec& spec, const std::set<std::string>& present) {
   spec.tracks.reset();
-  if (!script::usesTracks(spec)) return;
-  std::shared_ptr<const script::Tracks> tracks;
+  CaseTracks loaded;
   try {
-    tracks = std::make_shared<const script::Tracks>(script::loadTracks(spec));
+    loaded = readCaseTracks(spec);
   } catch (const script::TrackError& e) {
     throw CaseError({e.what()});
   }
   std::vector<std::string> problems;
-  const std::pair<bool, const char*> lens[] = {{tracks->cameraHasFov, "fov_y_deg"},
-                                               {tracks->cameraHasNear, "near"},
-                                               {tracks->cameraHasFar, "far"}};
-  for (const auto& [carried, key] : lens)
-    if (carried && present.count(std::string("camera.") + key))
+  for (const std::string& key : loaded.lensKeys)
+    if (present.count("camera." + key))
       problems.push_back(spec.file.string() + ": camera." + key + ": the camera track carries " +
                          key + " for every frame, which replaces this setting; remove it");
   if (!problems.empty()) throw CaseError(problems);
-  spec.tracks = std::move(tracks);
+  spec.tracks = std::move(loaded.tracks);
 }
 
 }  // namespace taa::cases

@@ -2,12 +2,9 @@
 
 #include <filesystem>
 
+#include "api/user_shader.h"
 #include "case/case_validate.h"
 #include "spec/taa_modes.h"
-#include "user/glsl_compiler.h"
-#include "user/shader_bounds.h"
-#include "user/user_capabilities.h"
-#include "user/user_resolve.h"
 
 namespace taa::cases {
 
@@ -43,7 +40,7 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   if (spec.debug.output != spec::DebugOutput::None)
     out.emplace_back("debug.output",
                      "debug views come from the built-in resolve; remove it with taa.shader");
-  if (present.count("taa.shader_entry") && userShaderLanguage(t) != user::ShaderLanguage::Hlsl)
+  if (present.count("taa.shader_entry") && !userShaderIsHlsl(t))
     out.emplace_back("taa.shader_entry",
                      "names an HLSL entry point, but " + t.shader +
                          " is GLSL (whose entry is main); remove it, or set taa.shader_language "
@@ -59,20 +56,18 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   }
   if (!out.empty()) return out;
   try {
-    const UserShader shader = loadUserShader(spec);
-    for (const auto& p : userParamProblems(t, shader.interface)) {
+    const LoadedUserShader shader(spec);
+    for (const auto& p : shader.paramProblems(t)) {
       const auto colon = p.find(": ");
       out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
     }
     if (!t.shader_capabilities_unchecked)
-      for (const auto& why : user::missingCapabilities(spec, shader.capabilities, t.shader))
+      for (const auto& why : shader.missingCapabilities(spec))
         out.emplace_back("taa.shader", why);
     // Array lengths the case's values give: the default passed when the shader loaded.
     if (out.empty())
-      if (const std::string why =
-              user::spirvMemoryProblem(shader.spirv, userSpecValues(t, shader.interface));
-          !why.empty())
-        out.emplace_back("taa.shader_params", "with these values " + shader.file.string() + ": " + why);
+      if (const std::string why = shader.memoryProblem(t); !why.empty())
+        out.emplace_back("taa.shader_params", "with these values " + shader.file().string() + ": " + why);
   } catch (const user::ShaderCompileError& e) {
     out.emplace_back("taa.shader", std::string("does not compile:\n") + e.what());
   }

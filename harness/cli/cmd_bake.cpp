@@ -1,12 +1,12 @@
 #include <filesystem>
 #include <iostream>
 
+#include "api/tracks.h"
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/output_file.h"
-#include "script/track_bake.h"
 
 namespace taa::cli {
 
@@ -30,7 +30,7 @@ int cmdBake(const Args& args) {
   const std::string description =
       "baked by taa-harness bake from " + spec.file.filename().string() + ": " +
       std::to_string(spec.script.frames) + " frames at " + std::to_string(spec.script.fps) + " fps";
-  const std::string text = script::bakeTrackJson(spec, description);
+  const std::string text = bakeCaseTrack(spec, description);
 
   const fs::path out = a.value("--out");
   if (out.has_parent_path()) createOutputDirectory(out.parent_path());

@@ -2,17 +2,17 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "api/scene_loading.h"
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/errors.h"
 #include "core/output_file.h"
-#include "scene/gltf_loader.h"
-#include "scene/scene.h"
 
 namespace taa::cli {
 
@@ -60,20 +60,8 @@ int cmdNewCase(const Args& args) {
   std::error_code ec;
   if (fs::exists(fs::symlink_status(out, ec))) throw UsageError(out.string() + " exists; choose another --name or delete it");
 
-  scene::Scene scene;
-  scene.models.push_back(scene::loadGltf(scenePath, scene));
-  // Posed at every frame the case plays and over one loop of its longest playing animation
-  // (the default fps, speed and offset), so a skinned, morphed or animated figure stays in
-  // view throughout, however many frames a user later gives it; at most 600 poses.
-  const int fps = spec::TimingSpec{}.fps;
-  double loop = 0.0;
-  for (const int anim : scene::playingAnimations(scene.models[0]))
-    loop = std::max(loop, double(scene.models[0].animations[size_t(anim)].duration));
-  const int poses = std::min(600, std::max(frames, int(std::ceil(loop * fps)) + 1));
-  std::vector<double> times;
-  for (int i = 0; i < poses; ++i) times.push_back(double(i) / fps);
-  glm::vec3 lo, hi;
-  scene::modelBounds(scene, 0, times, lo, hi);
+  // Posed at the default fps, speed and offset: what the case plays until a user changes them.
+  const auto [lo, hi] = gltfPosedBounds(scenePath, frames, spec::TimingSpec{}.fps);
   if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
     throw InputError(scenePath.string() + ": its posed bounds are not finite; check its transforms");
   const glm::vec3 centre = (lo + hi) * 0.5f;

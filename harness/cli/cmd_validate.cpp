@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "api/scene_loading.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "case/settings_table.h"
@@ -7,12 +8,11 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/errors.h"
-#include "scene/build_scene.h"
 
 namespace taa::cli {
 
 // Everything render reads before it needs a device: the case, its tracks and user shader
-// (loadCase), its scene, movers and debug image with their checks (buildScene). Each file's
+// (loadCase), its scene, movers and debug image with their checks (buildCaseScene). Each file's
 // problems are reported and the next file is still checked.
 int cmdValidate(const Args& args) {
   static const char* kUsage = "taa-harness validate [--print] CASE...";
@@ -23,7 +23,7 @@ int cmdValidate(const Args& args) {
   for (const auto& f : a.positional) {
     try {
       const auto loaded = cases::loadCase(f);
-      scene::buildScene(loaded.spec);
+      buildCaseScene(loaded.spec);
       if (print)
         std::cout << cases::resolvedJson(loaded.spec).dump(2) << "\n";
       else

@@ -5,7 +5,6 @@
 #include <iostream>
 
 #include "cli/exit_codes.h"
-#include "scene/build_scene.h"
 
 namespace taa::cli {
 
@@ -15,9 +14,9 @@ RunContext::RunContext(const spec::CaseSpec& spec, const std::string& device, bo
   DeviceOptions options;
   options.device = device;
   options.validate = validate;
-  scene_ = scene::buildScene(spec);
+  scene_ = buildCaseScene(spec);
   device_ = std::make_unique<Device>(options);
-  renderer_ = std::make_unique<Renderer>(*device_, spec, scene_, renderOptions);
+  renderer_ = std::make_unique<Renderer>(*device_, spec, *scene_, renderOptions);
 }
 
 RunContext::~RunContext() = default;

@@ -9,7 +9,7 @@
 
 #include "api/device.h"
 #include "api/renderer.h"
-#include "scene/scene.h"
+#include "api/scene_loading.h"
 #include "spec/case_spec.h"
 
 namespace taa::cli {
@@ -30,7 +30,7 @@ class RunContext {
   const spec::CaseSpec& spec_;
   bool validate_;
   std::unique_ptr<Device> device_;
-  scene::Scene scene_;
+  std::shared_ptr<const scene::Scene> scene_;
   std::unique_ptr<Renderer> renderer_;
 };
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "scene/gltf_loader.h"
+#include "api/scene_loading.h"
 #include "spec/taa_modes.h"
 
 namespace taa::invariants {
@@ -39,7 +39,7 @@ std::string whatMoves(const CaseSpec& spec) {
   if (cam.strafe.speed > 0.0f) return "camera.strafe.speed is " + num(cam.strafe.speed);
   if (!cam.cuts.empty()) return "camera.cuts has " + std::to_string(cam.cuts.size()) + " cut(s)";
   if (!spec.scene.gltf.empty() && spec.scene.animation_speed > 0.0f &&
-      scene::gltfHasAnimations(spec.file.parent_path() / spec.scene.gltf))
+      gltfAnimates(spec.file.parent_path() / spec.scene.gltf))
     return "the glTF scene's own animations play (scene.animation_speed is " +
            num(spec.scene.animation_speed) + "; 0 holds them)";
   for (size_t i = 0; i < spec.movers.size(); ++i) {

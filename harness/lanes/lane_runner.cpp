@@ -1,13 +1,12 @@
 #include "lanes/lane_runner.h"
 
 #include "api/renderer.h"
-#include "scene/build_scene.h"
 
 namespace taa::lanes {
 
 struct LaneRunner::Lane {
   LaneSetup setup;
-  scene::Scene ownScene;
+  std::shared_ptr<const scene::Scene> ownScene;
   std::unique_ptr<Renderer> renderer;
   LaneCost cost;
 };
@@ -18,8 +17,8 @@ LaneRunner::LaneRunner(Device& device, std::vector<LaneSetup> lanes) {
     lane->setup = std::move(setup);
     const spec::CaseSpec& spec = *lane->setup.spec;
     if (!lane->setup.scene) {
-      lane->ownScene = scene::buildScene(spec);
-      lane->setup.scene = &lane->ownScene;
+      lane->ownScene = buildCaseScene(spec);
+      lane->setup.scene = lane->ownScene.get();
     }
     lane->renderer =
         std::make_unique<Renderer>(device, spec, *lane->setup.scene, lane->setup.options);

@@ -13,8 +13,8 @@
 #include "api/device.h"
 #include "api/frame_record.h"
 #include "api/render_options.h"
+#include "api/scene_loading.h"
 #include "run/timing.h"
-#include "scene/scene.h"
 #include "spec/case_spec.h"
 
 namespace taa::lanes {

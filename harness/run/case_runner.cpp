@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include "api/scene_loading.h"
+#include "api/user_shader.h"
 #include "case/case_loader.h"
 #include "compare/metrics.h"
 #include "golden/environment.h"
@@ -17,8 +19,6 @@
 #include "run/invariant_run.h"
 #include "run/reference_key.h"
 #include "run/timing.h"
-#include "scene/build_scene.h"
-#include "user/user_resolve.h"
 
 namespace taa::run {
 
@@ -75,7 +75,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   result.fingerprint = env.fingerprint();
   fs::create_directories(options.outDir / spec.name);
 
-  const scene::Scene scene = scene::buildScene(spec);
+  const auto scene = buildCaseScene(spec);
   InvariantRun checks(spec);
   // Goldens are loaded and verified before rendering, so every frame can be checked as it comes.
   std::optional<GoldenCheck> golden;
@@ -89,7 +89,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   // Every frame's output is hashed for the goldens, and read for invariants that judge
   // warm-up frames too.
   std::vector<lanes::LaneSetup> sides{
-      caseLane(spec, scene, checks, options, golden.has_value() || checks.judgesWarmUp())};
+      caseLane(spec, *scene, checks, options, golden.has_value() || checks.judgesWarmUp())};
   if (!loaded.abCase.empty() && options.writeImages) {
     abSide = cases::parseCase(loaded.abCase, spec.file);
     sides.push_back({&abSide.spec, nullptr, {}, isChecked});
@@ -120,7 +120,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
     result.framesRendered += spec.script.frames * int(runner.size());
   }
   if (checks.needs().secondRun) {
-    lanes::LaneRunner repeat(device, {caseLane(spec, scene, checks, options, checks.judgesWarmUp())});
+    lanes::LaneRunner repeat(device, {caseLane(spec, *scene, checks, options, checks.judgesWarmUp())});
     repeat.run([&](lanes::LaneFrame& lf) { checks.observeRepeat(invariants::FrameView::of(lf.record)); }, 0,
                progress);
     result.framesRendered += spec.script.frames;

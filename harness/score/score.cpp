@@ -5,6 +5,7 @@
 #include <memory>
 #include <set>
 
+#include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "compare/flip.h"
@@ -15,8 +16,6 @@
 #include "lanes/lane_runner.h"
 #include "run/timing.h"
 #include "spec/taa_modes.h"
-#include "user/user_capabilities.h"
-#include "user/user_resolve.h"
 
 namespace taa::score {
 
@@ -95,7 +94,7 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
     lane->loaded = laneCase(base, file, spec);
     const auto& s = lane->loaded.spec;
     if (!s.taa.shader.empty())
-      for (const auto& why : user::missingCapabilities(s, loadUserShader(s).capabilities, s.taa.shader))
+      for (const auto& why : LoadedUserShader(s).missingCapabilities(s))
         lane->score.skipped += (lane->score.skipped.empty() ? "" : "; ") + why;
     lanes.push_back(std::move(lane));
   }

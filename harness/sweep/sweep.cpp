@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "compare/flip.h"
@@ -10,8 +11,6 @@
 #include "invariants/flicker_meter.h"
 #include "lanes/lane_runner.h"
 #include "run/timing.h"
-#include "user/user_capabilities.h"
-#include "user/user_resolve.h"
 
 namespace taa::sweep {
 
@@ -58,8 +57,7 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
     }
     const auto& spec = lane->loaded.spec;
     if (!spec.taa.shader.empty()) {
-      const auto missing = user::missingCapabilities(spec, loadUserShader(spec).capabilities,
-                                                     spec.taa.shader);
+      const auto missing = LoadedUserShader(spec).missingCapabilities(spec);
       for (const auto& why : missing) lane->skipped += (lane->skipped.empty() ? "" : "; ") + why;
     }
     (lane->skipped.empty() ? lanes : skippedLanes).push_back(std::move(lane));

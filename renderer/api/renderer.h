@@ -9,13 +9,15 @@
 
 #include "api/frame_record.h"
 #include "api/render_options.h"
-#include "scene/scene.h"
 #include "spec/case_spec.h"
 
 namespace taa {
 
 class Device;
 class ReferenceCache;
+namespace scene {
+struct Scene;  // api/scene_loading.h builds it; only the renderer looks inside
+}
 namespace vk {
 class Context;
 }

@@ -7,20 +7,12 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include "api/loader_errors.h"  // TrackError
 
 namespace taa::script {
-
-// A track that cannot be replayed. The message names the file and the line, frame
-// or key, and the fix; an InputError (exit code 2).
-class TrackError : public InputError {
- public:
-  using InputError::InputError;
-};
 
 // What a track drives: the allowed columns and keys differ (a lens for the camera,
 // a scale or matrix for a mover).

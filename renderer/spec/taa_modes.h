@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "spec/taa_spec.h"
 
@@ -134,6 +136,15 @@ inline TaaSpec effectiveTaa(const TaaSpec& user) {
 #undef TAA_RESET_E
 #undef TAA_RESET_B
 #undef TAA_RESET_F
+}
+
+// The rejection tests that judge history on screen (TAA_ON_SCREEN_REJECTIONS,
+// common/taa_settings.h) as ("taa.KEY", whether `t` sets it), in the list's order: what
+// validation checks and names.
+inline std::vector<std::pair<std::string, bool>> onScreenRejections(const TaaSpec& t) {
+#define TAA_ON_SCREEN_ROW(key) {"taa." #key, t.key},
+  return {TAA_ON_SCREEN_REJECTIONS(TAA_ON_SCREEN_ROW)};
+#undef TAA_ON_SCREEN_ROW
 }
 
 }  // namespace taa::spec

@@ -8,21 +8,12 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include "api/loader_errors.h"  // ShaderCompileError
 
 namespace taa::user {
-
-// The shader does not compile, names a file it may not read, or breaks taa_user.h's contract
-// (user_interface.h): bad input. what() is glslang's message with the user's file and line
-// first ("my.comp:12: 'x' : undeclared identifier"), or the file and the reason, and the fix.
-class ShaderCompileError : public InputError {
- public:
-  using InputError::InputError;
-};
 
 enum class ShaderLanguage { Glsl, Hlsl };
 const char* languageName(ShaderLanguage l);  // "glsl", "hlsl"

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "api/user_shader.h"  // ParamType
 #include "common/user_frame.h"
 #include "passes/resolve_inputs.h"
 
@@ -28,9 +29,6 @@ enum UserBinding : uint32_t {
   kUserPointSampler = TAA_USER_BINDING_POINT_SAMPLER,  // HLSL's taa_point_clamp
   kUserLinearSampler = TAA_USER_BINDING_LINEAR_SAMPLER,
 };
-
-enum class ParamType { Bool, Int, Uint, Float };
-const char* paramTypeName(ParamType t);
 
 struct UserParam {
   std::string name;

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 
+#include "api/user_shader.h"
 #include "passes/resolve_stage.h"
 #include "spec/case_spec.h"
 #include "user/glsl_compiler.h"
@@ -16,7 +17,8 @@
 
 namespace taa {
 
-// The shader of a case (taa.shader), compiled (or taken from the cache) and reflected.
+// The shader of a case (taa.shader), compiled (or taken from the cache) and reflected; the
+// harness holds it behind api/user_shader.h's LoadedUserShader.
 struct UserShader {
   std::filesystem::path file;
   std::filesystem::path root;  // the folder it and its includes stay inside
@@ -45,21 +47,9 @@ std::map<uint32_t, uint32_t> userSpecValues(const spec::TaaSpec& taa, const user
 // The specialization constants taa.shader_params gives (validated beforehand).
 vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserInterface& u);
 
-// Every constant the shader declares with the value it runs with, typed: "alpha=0.1 (float)",
-// "clip=true (bool, default)", for the run log, validate --print and the report.
-struct UserParamValue {
-  std::string name;
-  user::ParamType type;
-  uint32_t bits;       // as the specialization constant takes it
-  bool given;          // by taa.shader_params, else the shader's default
-  spec::NumberOrBool value;  // as JSON writes it: a bool as true/false
-};
+// Every constant the shader declares with the value it runs with (api/user_shader.h).
 std::vector<UserParamValue> userParamValues(const spec::TaaSpec& taa, const user::UserInterface& u);
 std::string describeUserParams(const std::vector<UserParamValue>& values);  // "none" if empty
-
-// "user shader my.hlsl (hlsl, entry main), params: alpha=0.1 (float)", for a report's case
-// header; "" when the case runs the built-in resolve.
-std::string describeUserShader(const spec::CaseSpec& spec);
 
 // The G-buffer inputs the shader declares: the plan allocates exactly these.
 GBufferNeeds userNeeds(const user::UserInterface& u);

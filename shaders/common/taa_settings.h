@@ -272,4 +272,11 @@
     "renderer/passes/taa_resolve.cpp")
 // clang-format on
 
+// The rejection tests that judge history on screen (their reasons run from
+// TAA_REJECT_FIRST_ON_SCREEN, common/shared.h), by key. Each compares this pixel with last
+// frame's surface at the reprojected position, so validation refuses it where the resolve does
+// not reproject (taa.velocity_in_alpha), and adaptive tracing (adaptive.trace_disoccluded)
+// traces what they reject, so it needs one of them. A new rejection test is listed here.
+#define TAA_ON_SCREEN_REJECTIONS(X) X(depth_culling) X(consistency) X(anti_ghosting)
+
 #endif

@@ -32,21 +32,17 @@ TEST(Layering, HarnessIncludesNoVulkanHeader) {
 }
 
 // The front door as an allow-list: a quoted include in harness/ resolves to the harness's own
-// files, to core/, or to one of the renderer's headers below; anything else (renderer/frame/,
-// passes/, vk/, shaders/common/, another scene/ header) fails here. renderer/api/ is the door;
-// spec/ is the case file's schema, shared by both sides; the loaders stand listed one by one
-// until api/ has a facade for scene, track and user-shader loading.
+// files, to core/, or to a renderer header under one of the folders below; anything else
+// (renderer/frame/, passes/, vk/, scene/, script/, user/, shaders/common/) fails here.
+// renderer/api/ is the door (device, renderer, frame record, options, and the facades for
+// scene, track and user-shader loading); spec/ is the case file's schema, shared by both sides.
 TEST(Layering, HarnessIncludesOnlyTheRenderersAllowList) {
   namespace fs = std::filesystem;
   const fs::path source(TAA_SOURCE_DIR);
   const fs::path harness = source / "harness", renderer = source / "renderer";
   const std::vector<std::string> allowedPrefixes = {"api/", "spec/"};
-  const std::set<std::string> allowedLoaders = {
-      "scene/build_scene.h",    "scene/gltf_loader.h",    "scene/scene.h",
-      "script/track_bake.h",    "script/tracks.h",        "user/glsl_compiler.h",
-      "user/shader_bounds.h",   "user/user_capabilities.h", "user/user_resolve.h"};
   const std::regex quoted(R"(^\s*#\s*include\s*"([^"]+)\")");
-  std::set<std::string> rendererHeaders;
+  std::set<std::string> usedPrefixes;
   int includes = 0;
   for (const auto& entry : fs::recursive_directory_iterator(harness)) {
     const auto ext = entry.path().extension();
@@ -62,19 +58,51 @@ TEST(Layering, HarnessIncludesOnlyTheRenderersAllowList) {
       if (fs::exists(entry.path().parent_path() / path) || fs::exists(harness / path) ||
           (path.rfind("core/", 0) == 0 && fs::exists(source / path)))
         continue;
-      const bool allowed =
-          fs::exists(renderer / path) &&
-          (allowedLoaders.count(path) != 0 ||
-           std::any_of(allowedPrefixes.begin(), allowedPrefixes.end(),
-                       [&](const std::string& p) { return path.rfind(p, 0) == 0; }));
-      if (allowed) rendererHeaders.insert(path);
+      const auto prefix =
+          std::find_if(allowedPrefixes.begin(), allowedPrefixes.end(),
+                       [&](const std::string& p) { return path.rfind(p, 0) == 0; });
+      const bool allowed = fs::exists(renderer / path) && prefix != allowedPrefixes.end();
+      if (allowed) usedPrefixes.insert(*prefix);
       EXPECT_TRUE(allowed) << entry.path().string() << ":" << n << ": " << line
                            << "\n  the harness includes the renderer's renderer/api/ and spec/ "
-                              "headers and the listed loaders only; reach the rest through api/";
+                              "headers only; reach the rest through a facade in api/";
     }
   }
   EXPECT_GT(includes, 200);  // the walk read the harness's includes
-  // A listed loader nobody includes any more leaves the list: the list is what is in use.
-  for (const std::string& loader : allowedLoaders)
-    EXPECT_TRUE(rendererHeaders.count(loader) != 0) << loader << " is listed but not included";
+  // An entry nobody includes any more leaves the list: the list is what is in use.
+  for (const std::string& prefix : allowedPrefixes)
+    EXPECT_TRUE(usedPrefixes.count(prefix) != 0) << prefix << " is listed but not included";
+}
+
+// The door holds behind the harness too: what renderer/api/ and spec/ include is each other,
+// core/ and shaders/common/'s declarations shared with GLSL, never the renderer's internals
+// (where Vulkan lives) or a Vulkan header. A facade that needs an internal type forward-declares
+// it and keeps it behind a handle.
+TEST(Layering, RenderersPublicHeadersIncludeNoInternals) {
+  namespace fs = std::filesystem;
+  const fs::path renderer = fs::path(TAA_SOURCE_DIR) / "renderer";
+  const std::vector<std::string> allowed = {"api/", "spec/", "core/", "common/"};
+  const std::regex quoted(R"(^\s*#\s*include\s*"([^"]+)\")");
+  const std::regex vulkanInclude(R"(^\s*#\s*include\s*<(vulkan/|volk\.h))");
+  int headers = 0;
+  for (const char* door : {"api", "spec"})
+    for (const auto& entry : fs::directory_iterator(renderer / door)) {
+      if (entry.path().extension() != ".h") continue;
+      ++headers;
+      std::ifstream in(entry.path());
+      std::string line;
+      std::smatch m;
+      for (int n = 1; std::getline(in, line); ++n) {
+        EXPECT_FALSE(std::regex_search(line, vulkanInclude))
+            << entry.path().string() << ":" << n << ": " << line;
+        if (!std::regex_search(line, m, quoted)) continue;
+        const std::string path = m[1];
+        EXPECT_TRUE(std::any_of(allowed.begin(), allowed.end(),
+                                [&](const std::string& p) { return path.rfind(p, 0) == 0; }))
+            << entry.path().string() << ":" << n << ": " << line
+            << "\n  a public header may include api/, spec/, core/ and common/ only; "
+               "forward-declare the internal type";
+      }
+    }
+  EXPECT_GT(headers, 10);  // the walk found the doors
 }

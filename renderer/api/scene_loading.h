@@ -1,0 +1,36 @@
+// A case's scene as the harness sees it: built once and handed to each Renderer of the case
+// (api/renderer.h takes it by reference), never looked into. scene/scene.h's data and the
+// glTF loader stay inside renderer/.
+#pragma once
+
+#include <filesystem>
+#include <glm/vec3.hpp>
+#include <memory>
+
+#include "spec/case_spec.h"
+
+namespace taa {
+
+namespace scene {
+struct Scene;
+}
+
+// The world plus one model per mover (scene::buildScene), shared by the renderers that replay
+// the case. Throws SceneError (an InputError) naming the file, the problem and the fix.
+std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec);
+
+// Whether the glTF file lists any animation (scene::gltfHasAnimations): false when it cannot be
+// read, which loading the scene then reports.
+bool gltfAnimates(const std::filesystem::path& file);
+
+struct SceneBounds {
+  glm::vec3 lo{0.0f};
+  glm::vec3 hi{0.0f};
+};
+
+// The object-space bounds of the glTF file's scene posed at every one of `frames` frames at
+// `fps` and over one loop of its longest playing animation, for framing a camera on it (at most
+// 600 poses). Throws SceneError.
+SceneBounds gltfPosedBounds(const std::filesystem::path& file, int frames, int fps);
+
+}  // namespace taa

@@ -34,9 +34,12 @@ std::string cpuFeatureLevel() {
   if (const char* o = std::getenv("GALLIUM_OVERRIDE_CPU_CAPS"); o && *o) return std::string("override:") + o;
   const auto f = cpuFlags();
   if (f.empty()) return "unknown";
-  // The psABI micro-architecture levels; lavapipe's LLVM picks instructions by them.
+  // The psABI micro-architecture levels; lavapipe's LLVM picks instructions by them. Less one
+  // flag: the CI machine kind (an AMD EPYC guest) hides `abm` (LZCNT) from /proc/cpuinfo, and
+  // with it classed x86-64-v2 every golden blessed at v4 fell to the tolerance path there,
+  // although all 111 cases rendered the goldens' frame hashes bit for bit.
   if (!hasAll(f, {"cx16", "lahf_lm", "popcnt", "sse4_1", "sse4_2", "ssse3"})) return "x86-64";
-  if (!hasAll(f, {"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "abm", "movbe", "xsave"})) return "x86-64-v2";
+  if (!hasAll(f, {"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "movbe", "xsave"})) return "x86-64-v2";
   if (!hasAll(f, {"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"})) return "x86-64-v3";
   return "x86-64-v4";
 }

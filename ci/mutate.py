@@ -63,6 +63,8 @@ def restore_leftover(out):
         (ROOT / data["file"]).write_bytes(bytes.fromhex(data["original"]))
         b.unlink()
         log(f"restored {data['file']} left mutated by an interrupted run")
+        return True
+    return False
 
 
 def resumed(out, chosen):
@@ -129,9 +131,9 @@ def main():
     else:
         chosen = every if args.all else ops.select(every, args.seed, args.max, args.harness_share)
         chosen += [by_id[i] for i in args.also if by_id[i] not in chosen]
-    # Shader mutants first: they need only the SPIR-V rebuilt; the first harness mutant also
-    # builds the unit tests.
-    chosen.sort(key=lambda m: m.kind != "shader")
+    # Shader mutants built into a copy first: they need only the SPIR-V rebuilt. Those edited
+    # in the tree (harness, shared.h) last, each rebuilding the build folder from the tree.
+    chosen.sort(key=lambda m: (bool(ops.tree_targets(m)), m.kind != "shader"))
     if args.list:
         for m in chosen:
             print(f"{m.id}\tline {m.line}\t{m.before}  ->  {m.after}")
@@ -139,10 +141,12 @@ def main():
 
     out = Path(args.out).resolve()
     (out / "work").mkdir(parents=True, exist_ok=True)
-    restore_leftover(out)
+    leftover = restore_leftover(out)
     signal.signal(signal.SIGTERM, _on_signal)
     signal.signal(signal.SIGINT, _on_signal)
     runner = Runner(args)
+    if leftover and not runner.ninja(ops.TREE_TARGETS, out / "work" / "restore-build.log"):
+        sys.exit(f"mutate: the restored tree does not build (see {out}/work/restore-build.log)")
     base_outputs, ordered, total = runner.baseline()
     log(f"baseline: {len(base_outputs)} cases, {total:.0f} s; {len(chosen)} mutants")
     records, judged = [], load_judged()
@@ -155,7 +159,7 @@ def main():
                 records.append(done[m.id])
                 continue
             start = time.monotonic()
-            if m.kind == "shader":
+            if not ops.tree_targets(m):
                 status, detail = runner.judge(m, base_outputs, ordered, total)
             else:
                 original = (ROOT / m.file).read_bytes()
@@ -176,8 +180,9 @@ def main():
         return 130
     finally:
         # Leave the build folder matching the restored sources.
-        if any(m.kind == "harness" for m in chosen):
-            runner.ninja(["taa-harness", "taa_tests"], out / "work" / "final-build.log")
+        rebuilt = sorted({t for m in chosen for t in ops.tree_targets(m)})
+        if rebuilt:
+            runner.ninja(rebuilt, out / "work" / "final-build.log")
     summary = summarize(records, judged, args)
     write_reports(out, summary)
     c = summary["counts"]

@@ -37,6 +37,23 @@ _SKIP_LINE = re.compile(r"\bstatic_assert\b|\blayout\s*\(")
 _KEYWORD_STATEMENT = re.compile(r"^\s*(return|break|continue|case|default|if|for|while|else)\b")
 
 
+# Shader files the C++ side includes too (its structs, bindings and mask values): a mutant
+# of one must reach both sides, as a real edit would, so it is edited in the tree and the
+# SPIR-V, the harness and the tests are rebuilt from it.
+HOST_SHARED = {"shaders/common/shared.h"}
+
+
+TREE_TARGETS = ["taa_shaders", "taa-harness", "taa_tests"]
+
+
+def tree_targets(mutant):
+    """The build targets a mutant edited in the tree rebuilds, or [] for a shader mutant
+    built into a private copy of the SPIR-V (the tree and the build folder untouched).
+    Always all three: the build folder must match the tree a mutant leaves behind, the
+    SPIR-V a restored shared.h mutant rebuilt included, before the next one runs."""
+    return TREE_TARGETS if mutant.kind == "harness" or mutant.file in HOST_SHARED else []
+
+
 @dataclass
 class Mutant:
     id: str

@@ -190,7 +190,8 @@ class Runner:
     def build_shader_mutant(self, mutant, work):
         """Shader mutants never touch the tree or the build folder: the mutation goes into a
         copy of shaders/, the SPIR-V it changes into a copy of the build's, which the harness
-        loads through TAA_SHADER_DIR. (So shared.h mutants change the GLSL side only.)"""
+        loads through TAA_SHADER_DIR. (shared.h, which C++ includes too, is edited in the
+        tree instead: mutate_ops.tree_targets.)"""
         src, spv = work / "src", work / "spv"
         for d in (src, spv):
             shutil.rmtree(d, ignore_errors=True)
@@ -244,7 +245,8 @@ class Runner:
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
-        if mutant.kind == "shader":
+        targets = ops.tree_targets(mutant)
+        if not targets:
             self.env["TAA_SHADER_DIR"] = str(work / "spv")
             if not self.build_shader_mutant(mutant, work):
                 return "stillborn", "does not compile"
@@ -256,8 +258,10 @@ class Runner:
                 return verdict or ("no-change", "no case loads the rebuilt SPIR-V (" +
                                    ", ".join(sorted(self.rebuilt)) + ")")
         else:
+            # Edited in the tree (ci/mutate.py restores it): the build's own SPIR-V, which
+            # the rebuild replaced where it reads the file, and the C++ side alike.
             self.env.pop("TAA_SHADER_DIR", None)
-            if not self.ninja(["taa-harness", "taa_tests"], work / "build.log"):
+            if not self.ninja(targets, work / "build.log"):
                 return "stillborn", "does not build"
         if mutant.kind == "harness":
             verdict = self.unit_tests(mutant, work)

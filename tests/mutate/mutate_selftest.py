@@ -104,5 +104,21 @@ with tempfile.TemporaryDirectory() as tmp:
     check(cold == warm, "a user shader's SPIR-V provenance does not make a case's outputs differ")
     check(cold != results("from the cache", "4x4"), "the rest of the line still counts")
 
+# shared.h is C++ too: its mutant is edited in the tree and rebuilds the SPIR-V and the harness
+# (a copy of the GLSL side alone left the C++ side reading the old value: a false survivor).
+# Other shader mutants stay in their private copy; harness mutants rebuild the same targets.
+every = ops.all_mutants(ROOT)
+shared = next(m for m in every if m.file == "shaders/common/shared.h")
+shader = next(m for m in every if m.kind == "shader" and m.file.endswith(".comp"))
+harness = next(m for m in every if m.kind == "harness")
+for m in (shared, harness):
+    check({"taa_shaders", "taa-harness", "taa_tests"} <= set(ops.tree_targets(m)),
+          f"{m.id} rebuilds the SPIR-V, the harness and the tests (got {ops.tree_targets(m)})")
+check(ops.tree_targets(shader) == [], f"{shader.id} is built into a copy, the tree untouched")
+order = [line.split("\t")[0] for line in listing("--max", "200")]
+in_tree = [i for i in order if i.startswith("harness/") or i.startswith("shaders/common/shared.h")]
+check(in_tree and order[-len(in_tree):] == in_tree,
+      "mutants edited in the tree run after every mutant built into a copy")
+
 print("mutate selftest:", "FAIL" if failures else "ok", f"({len(failures)} failure(s))")
 sys.exit(1 if failures else 0)

@@ -6,10 +6,11 @@ is opaque); the right one's float COLOR_0 alpha runs from -1 (left edge) to 1 (r
 so its left half falls below 0 and is cut.
 Only the standard library: the buffers are data URIs.
 """
-import base64
 import json
 import os
 import struct
+
+from gltf_buffers import Buffer
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -27,19 +28,9 @@ def floor():
 
 
 def write(name, meshes, nodes, materials, textures, images):
-    blob = b""
-    views, accessors, gltf_meshes = [], [], []
-
-    def add(data, target, ctype, count, typ, extra=None):
-        nonlocal blob
-        while len(blob) % 4:
-            blob += b"\x00"
-        views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": len(data), "target": target})
-        blob += data
-        acc = {"bufferView": len(views) - 1, "componentType": ctype, "count": count, "type": typ}
-        acc.update(extra or {})
-        accessors.append(acc)
-        return len(accessors) - 1
+    buf = Buffer()
+    add = buf.add
+    gltf_meshes = []
 
     for (pos, normals, uvs, colors, idx), material in meshes:
         attrs = {
@@ -63,10 +54,9 @@ def write(name, meshes, nodes, materials, textures, images):
         "textures": textures,
         "samplers": [{"magFilter": 9728, "minFilter": 9728}],
         "images": [{"uri": i} for i in images],
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
+        "accessors": buf.accessors,
+        "bufferViews": buf.views,
+        "buffers": buf.buffers(),
     }
     with open(os.path.join(HERE, name), "w") as f:
         json.dump(doc, f, indent=1)

@@ -9,11 +9,12 @@ normal_bumps.gltf: an 8x8 floor whose UVs repeat a 64x64 map of round bumps (nor
   once per unit; the case normal_map_bumps shows their speculars under camera motion.
 Only the standard library: PNGs are written with zlib, the buffers as data URIs.
 """
-import base64
 import json
 import math
 import os
 import struct
+
+from gltf_buffers import Buffer
 import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -60,19 +61,9 @@ def quad(x0, x1, z0, z1, u1, v1):
 
 
 def gltf(path, quads, materials, images):
-    blob = b""
-    views, accessors, primitives = [], [], []
-
-    def add(data, target, ctype, count, typ, extra=None):
-        nonlocal blob
-        while len(blob) % 4:
-            blob += b"\x00"
-        views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": len(data), "target": target})
-        blob += data
-        acc = {"bufferView": len(views) - 1, "componentType": ctype, "count": count, "type": typ}
-        acc.update(extra or {})
-        accessors.append(acc)
-        return len(accessors) - 1
+    buf = Buffer()
+    add = buf.add
+    primitives = []
 
     for (pos, uv, idx), material in zip(quads, range(len(quads))):
         p = add(b"".join(struct.pack("<3f", *v) for v in pos), 34962, 5126, 4, "VEC3",
@@ -92,10 +83,9 @@ def gltf(path, quads, materials, images):
         "textures": [{"source": i, "sampler": 0} for i in range(len(images))],
         "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
         "images": [{"uri": name} for name in images],
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
+        "accessors": buf.accessors,
+        "bufferViews": buf.views,
+        "buffers": buf.buffers(),
     }
     with open(path, "w") as f:
         json.dump(doc, f, indent=1)

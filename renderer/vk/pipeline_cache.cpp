@@ -1,5 +1,7 @@
 #include "vk/pipeline_cache.h"
 
+#include <cassert>
+
 #include "vk/pipeline.h"
 
 namespace taa::vk {
@@ -34,6 +36,7 @@ void PipelineCache::evictUnused() {
   for (auto it = recent_.end(); unused > keepUnused_ && it != recent_.begin();) {
     --it;
     auto entry = entries_.find(*it);
+    assert(entry != entries_.end());  // recent_ lists exactly the keys of entries_
     if (entry->second.objects.use_count() != 1) continue;
     entries_.erase(entry);
     it = recent_.erase(it);

@@ -1,21 +1,11 @@
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include "case/case_error.h"
 #include "case/case_loader.h"
+#include "support/case_problems.h"
 
-using taa::cases::CaseError;
 using taa::cases::parseCase;
-
-namespace {
-std::vector<std::string> problemsOf(const std::string& json) {
-  try {
-    parseCase(json, "cases/t.json");
-  } catch (const CaseError& e) {
-    return e.problems();
-  }
-  return {};
-}
-}  // namespace
+using taa::test::caseProblems;
 
 TEST(CaseLoader, EmptyObjectGivesDefaults) {
   const auto loaded = parseCase("{}", "cases/defaults.json");
@@ -27,60 +17,60 @@ TEST(CaseLoader, EmptyObjectGivesDefaults) {
 }
 
 TEST(CaseLoader, UnknownKeySuggestsNearMiss) {
-  const auto p = problemsOf(R"({"render": {"widht": 64}})");
+  const auto p = caseProblems(R"({"render": {"widht": 64}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("cases/t.json: render.widht: unknown key; did you mean 'render.width'?"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, OutOfRangeNamesKeyAndRange) {
-  const auto p = problemsOf(R"({"render": {"width": 9000}})");
+  const auto p = caseProblems(R"({"render": {"width": 9000}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("render.width: 9000 is out of range; allowed [1, 8192]"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, FrameCountBounded) {
-  const auto p = problemsOf(R"({"script": {"frames": 100001}})");
+  const auto p = caseProblems(R"({"script": {"frames": 100001}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("script.frames"), std::string::npos);
 }
 
 TEST(CaseLoader, WrongTypeIsReported) {
-  const auto p = problemsOf(R"({"script": {"fps": 59.5}})");
+  const auto p = caseProblems(R"({"script": {"fps": 59.5}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("script.fps: expected an integer"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, BadEnumSuggestsName) {
-  const auto p = problemsOf(R"({"jitter": {"pattern": "haltn"}})");
+  const auto p = caseProblems(R"({"jitter": {"pattern": "haltn"}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("did you mean 'halton'"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, SyntaxErrorGivesLineAndColumn) {
-  const auto p = problemsOf("{\n  \"render\": {\"width\": 64,}\n}");
+  const auto p = caseProblems("{\n  \"render\": {\"width\": 64,}\n}");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("cases/t.json:2:"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, AllProblemsReportedTogether) {
-  const auto p = problemsOf(R"({"render": {"width": 0, "height": -1}, "bogus": 1})");
+  const auto p = caseProblems(R"({"render": {"width": 0, "height": -1}, "bogus": 1})");
   EXPECT_EQ(p.size(), 3u);
 }
 
 TEST(CaseLoader, OutputFramePastEndIsRejected) {
-  const auto p = problemsOf(R"({"script": {"frames": 4}, "output": {"frames": [4]}})");
+  const auto p = caseProblems(R"({"script": {"frames": 4}, "output": {"frames": [4]}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("output.frames[0]"), std::string::npos) << p[0];
 }
 
 TEST(CaseLoader, SceneOutsideCaseFolderIsRefused) {
-  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "../secret.gltf"}})").empty());
-  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "http://example.com/a.gltf"}})").empty());
-  EXPECT_FALSE(problemsOf(R"({"scene": {"gltf": "/etc/a.gltf"}})").empty());
+  EXPECT_FALSE(caseProblems(R"({"scene": {"gltf": "../secret.gltf"}})").empty());
+  EXPECT_FALSE(caseProblems(R"({"scene": {"gltf": "http://example.com/a.gltf"}})").empty());
+  EXPECT_FALSE(caseProblems(R"({"scene": {"gltf": "/etc/a.gltf"}})").empty());
 }
 
 TEST(CaseLoader, SettingIgnoredByChosenPatternIsAnError) {
-  const auto p = problemsOf(R"({"jitter": {"pattern": "uniform4", "length": 16}})");
+  const auto p = caseProblems(R"({"jitter": {"pattern": "uniform4", "length": 16}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("jitter.length"), std::string::npos);
 }

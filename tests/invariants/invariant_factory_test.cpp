@@ -1,27 +1,15 @@
 // The factory and the case-file rule: listed invariants must apply to the case, and an
 // invariant's parameters may only be set when it is listed.
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
-#include "case/case_error.h"
 #include "case/case_loader.h"
 #include "invariants/invariant_fixtures.h"
+#include "support/case_problems.h"
 
 using namespace taa;
 using namespace taa::invariants;
 using namespace taa::invariants::fixtures;
-
-namespace {
-
-std::vector<std::string> problemsOf(const std::string& json) {
-  try {
-    cases::parseCase(json, "cases/t.json");
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
-}
-
-}  // namespace
 
 TEST(InvariantTable, EveryRowBuildsAnInvariantReportedUnderItsName) {
   std::vector<std::string> seen;
@@ -80,7 +68,7 @@ TEST(InvariantFactory, NeedsMatchWhatEachInvariantReads) {
 }
 
 TEST(InvariantValidation, InapplicableInvariantIsAProblemAtItsKey) {
-  const auto p = problemsOf(
+  const auto p = test::caseProblems(
       R"({"taa": {"rectify": "none"}, "checks": {"invariants": ["finite", "history_bounded"]}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(
@@ -92,7 +80,7 @@ TEST(InvariantValidation, InapplicableInvariantIsAProblemAtItsKey) {
 
 TEST(InvariantValidation, ParametersOfAnUnlistedInvariantAreAProblem) {
   const auto p =
-      problemsOf(R"({"checks": {"invariants": ["energy"], "no_ghosting": {"frames": 4}}})");
+      test::caseProblems(R"({"checks": {"invariants": ["energy"], "no_ghosting": {"frames": 4}}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(
       contains(p[0],
@@ -102,25 +90,25 @@ TEST(InvariantValidation, ParametersOfAnUnlistedInvariantAreAProblem) {
 }
 
 TEST(InvariantValidation, DuplicateIsAProblem) {
-  const auto p = problemsOf(R"({"checks": {"invariants": ["energy", "energy"]}})");
+  const auto p = test::caseProblems(R"({"checks": {"invariants": ["energy", "energy"]}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(contains(p[0], "checks.invariants[1]: 'energy' is listed twice")) << p[0];
 }
 
 TEST(InvariantValidation, ApplicableInvariantsWithTheirParametersLoad) {
-  EXPECT_TRUE(problemsOf(R"({
+  EXPECT_TRUE(test::caseProblems(R"({
     "movers": [{"speed": 2}],
     "checks": {"invariants": ["history_bounded", "no_ghosting", "temporal_stability", "finite",
                              "energy", "determinism"],
                "no_ghosting": {"frames": 4}, "energy": {"epsilon": 0.05}}})")
                   .empty());
-  EXPECT_TRUE(problemsOf(R"({"jitter": {"pattern": "none"},
+  EXPECT_TRUE(test::caseProblems(R"({"jitter": {"pattern": "none"},
     "checks": {"invariants": ["bit_stable"], "bit_stable": {"after_frame": 8}}})")
                   .empty());
 }
 
 TEST(InvariantValidation, EveryListedProblemIsReported) {
-  const auto p = problemsOf(R"({"checks": {"invariants": ["no_ghosting", "bit_stable", "converges"],
+  const auto p = test::caseProblems(R"({"checks": {"invariants": ["no_ghosting", "bit_stable", "converges"],
     "temporal_stability": {"factor": 2}}})");
   ASSERT_EQ(p.size(), 3u);  // no movers; halton jitter; parameters without listing
   EXPECT_TRUE(contains(p[0], "checks.invariants[0]: no_ghosting")) << p[0];
@@ -129,7 +117,7 @@ TEST(InvariantValidation, EveryListedProblemIsReported) {
 }
 
 TEST(InvariantValidation, UnknownNameIsAProblemWithTheTableAndAGuess) {
-  const auto p = problemsOf(R"({"checks": {"invariants": ["finite", "energi"]}})");
+  const auto p = test::caseProblems(R"({"checks": {"invariants": ["finite", "energi"]}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(contains(
       p[0], "cases/t.json: checks.invariants[1]: 'energi' is not one of history_bounded, "))

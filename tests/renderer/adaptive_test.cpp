@@ -11,9 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "case/case_error.h"
-#include "case/case_loader.h"
 #include "common/shared.h"
+#include "support/case_problems.h"
 #include "support/gpu.h"
 #include "support/process.h"
 
@@ -253,14 +252,6 @@ TEST(AdaptiveCases, RenderCleanUnderValidation) {
   }
 }
 
-std::vector<std::string> problemsOf(const std::string& json) {
-  try {
-    cases::parseCase(json, "cases/t.json");
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
-}
 
 bool mentions(const std::vector<std::string>& problems, const std::string& text) {
   for (const auto& p : problems)
@@ -269,27 +260,27 @@ bool mentions(const std::vector<std::string>& problems, const std::string& text)
 }
 
 TEST(AdaptiveSpec, KeysNeedAdaptiveModeAndAnUnresampledOutput) {
-  EXPECT_TRUE(problemsOf(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 8}})").empty());
-  EXPECT_TRUE(mentions(problemsOf(R"({"adaptive": {"samples": 8}})"), "adaptive.samples"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "full"}, "adaptive": {"ray_lod": false}})"),
+  EXPECT_TRUE(test::caseProblems(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 8}})").empty());
+  EXPECT_TRUE(mentions(test::caseProblems(R"({"adaptive": {"samples": 8}})"), "adaptive.samples"));
+  EXPECT_TRUE(mentions(test::caseProblems(R"({"taa": {"mode": "full"}, "adaptive": {"ray_lod": false}})"),
                        "taa.mode is adaptive"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "render": {"upsample": 2}})"),
+  EXPECT_TRUE(mentions(test::caseProblems(R"({"taa": {"mode": "adaptive"}, "render": {"upsample": 2}})"),
                        "taa.mode"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"debug": {"output": "segmentation"}})"), "debug.output"));
+  EXPECT_TRUE(mentions(test::caseProblems(R"({"debug": {"output": "segmentation"}})"), "debug.output"));
   EXPECT_TRUE(
-      problemsOf(R"({"taa": {"mode": "adaptive"}, "debug": {"output": "segmentation"}})").empty());
+      test::caseProblems(R"({"taa": {"mode": "adaptive"}, "debug": {"output": "segmentation"}})").empty());
   EXPECT_TRUE(mentions(
-      problemsOf(
+      test::caseProblems(
           R"({"taa": {"mode": "adaptive"}, "adaptive": {"trace_all": true, "threshold": 1}})"),
       "adaptive.threshold"));
-  EXPECT_TRUE(mentions(problemsOf(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 17}})"),
+  EXPECT_TRUE(mentions(test::caseProblems(R"({"taa": {"mode": "adaptive"}, "adaptive": {"samples": 17}})"),
                        "samples"));
   EXPECT_TRUE(
-      problemsOf(
+      test::caseProblems(
           R"({"taa": {"mode": "adaptive"}, "checks": {"invariants": ["adaptive_unmarked"]}})")
           .empty());
   EXPECT_TRUE(
-      mentions(problemsOf(R"({"checks": {"invariants": ["adaptive_unmarked"]}})"), "adaptive"));
+      mentions(test::caseProblems(R"({"checks": {"invariants": ["adaptive_unmarked"]}})"), "adaptive"));
 }
 
 }  // namespace

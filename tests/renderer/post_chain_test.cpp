@@ -208,7 +208,7 @@ TEST(PostChain, SpeedInAlphaWithoutMotionBlurFallsBackToTheVelocityBuffer) {
   EXPECT_FALSE(logged(b, "taa_resolve: taa.velocity_in_alpha falls back"));
 }
 
-std::vector<std::string> problemsOf(const std::string& extra) {
+std::vector<std::string> chainProblems(const std::string& extra) {
   try {
     makeCase(extra);
   } catch (const cases::CaseError& e) {
@@ -225,21 +225,21 @@ bool mentions(const std::vector<std::string>& problems, const std::string& a,
 }
 
 TEST(PostValidation, RefusesSettingsThePassesWouldIgnore) {
-  auto p = problemsOf(R"("post": {"sharpen_amount": 0.3})");
+  auto p = chainProblems(R"("post": {"sharpen_amount": 0.3})");
   EXPECT_TRUE(mentions(p, "post.sharpen_amount", "post.sharpen to gradient or cas")) << p.size();
-  p = problemsOf(R"("post": {"motion_blur_samples": 4, "motion_blur_scale": 0.5})");
+  p = chainProblems(R"("post": {"motion_blur_samples": 4, "motion_blur_scale": 0.5})");
   EXPECT_TRUE(mentions(p, "post.motion_blur_samples", "post.motion_blur: true"));
   EXPECT_TRUE(mentions(p, "post.motion_blur_scale", "post.motion_blur: true"));
-  p = problemsOf(R"("taa": {"velocity_in_alpha": true}, "post": {"motion_blur": true})");
+  p = chainProblems(R"("taa": {"velocity_in_alpha": true}, "post": {"motion_blur": true})");
   EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.velocity_alpha: true"));
   EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.use_velocity: off"));
   // Without motion blur it falls back to the velocity buffer, which use_velocity off never reads.
-  p = problemsOf(R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true,
+  p = chainProblems(R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true,
                             "use_velocity": "off"})");
   EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.use_velocity: all"));
-  EXPECT_TRUE(problemsOf(R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true})").empty());
+  EXPECT_TRUE(chainProblems(R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true})").empty());
   // The colour-only resolve has no depth, velocity or ids for these.
-  p = problemsOf(
+  p = chainProblems(
       R"("taa": {"velocity_in_alpha": true, "velocity_alpha": true, "use_velocity": "off",
                             "depth_culling": true, "consistency": true, "anti_ghosting": true,
                             "velocity_sampling": "pixel", "reject_offscreen": true},
@@ -249,11 +249,11 @@ TEST(PostValidation, RefusesSettingsThePassesWouldIgnore) {
   for (const char* key : {"taa.velocity_sampling", "taa.reject_offscreen"})
     EXPECT_TRUE(mentions(p, key, "does not reproject")) << key;
   EXPECT_TRUE(mentions(p, "debug.output", "taa.velocity_in_alpha"));
-  p = problemsOf(R"("taa": {"mode": "basic", "velocity_in_alpha": true, "velocity_alpha": true,
+  p = chainProblems(R"("taa": {"mode": "basic", "velocity_in_alpha": true, "velocity_alpha": true,
                             "use_velocity": "off"}, "post": {"motion_blur": true})");
   EXPECT_TRUE(mentions(p, "taa.velocity_in_alpha", "taa.mode: full"));
-  EXPECT_TRUE(problemsOf(kEverything).empty());
-  EXPECT_TRUE(problemsOf(R"("post": {"sharpen": "cas", "sharpen_amount": 0.3, "motion_blur": true,
+  EXPECT_TRUE(chainProblems(kEverything).empty());
+  EXPECT_TRUE(chainProblems(R"("post": {"sharpen": "cas", "sharpen_amount": 0.3, "motion_blur": true,
                                      "motion_blur_samples": 4})")
                   .empty());
 }

@@ -1,6 +1,7 @@
 #include "case/case_loader.h"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <tuple>
 

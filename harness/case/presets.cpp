@@ -1,5 +1,7 @@
 #include "case/presets.h"
 
+#include <nlohmann/json.hpp>
+
 #include "case/case_error.h"
 #include "invariants/registry.h"
 

@@ -1,5 +1,6 @@
 #include "case/settings_table.h"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace taa::cases {

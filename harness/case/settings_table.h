@@ -2,7 +2,7 @@
 // document cannot drift from what the reader accepts (taa-harness techniques --markdown).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 namespace taa::cases {

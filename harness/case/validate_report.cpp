@@ -1,5 +1,7 @@
 #include "case/validate_report.h"
 
+#include <nlohmann/json.hpp>
+
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "case/json_reader.h"

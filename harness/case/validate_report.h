@@ -3,7 +3,7 @@
 // unknown preset or a patch that breaks the case is bad input before anything renders.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <set>
 #include <string>
 #include <utility>

@@ -1,4 +1,5 @@
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "api/scene_loading.h"
 #include "case/case_error.h"

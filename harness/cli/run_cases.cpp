@@ -1,5 +1,6 @@
 #include "cli/run_cases.h"
 
+#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <unistd.h>
 

@@ -4,7 +4,7 @@
 // so goldens from elsewhere are compared with tolerances instead.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "api/device.h"

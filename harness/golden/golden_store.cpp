@@ -1,6 +1,7 @@
 #include "golden/golden_store.h"
 
 #include <fcntl.h>
+#include <nlohmann/json.hpp>
 #include <sys/file.h>
 #include <stdio.h>
 #include <unistd.h>

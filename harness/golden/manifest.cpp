@@ -1,5 +1,6 @@
 #include "golden/manifest.h"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 

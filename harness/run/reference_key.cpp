@@ -1,6 +1,7 @@
 #include "run/reference_key.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "case/case_loader.h"
 

@@ -2,7 +2,7 @@
 // the JUnit file and the HTML report.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <map>
 #include <string>
 #include <utility>

@@ -2,6 +2,7 @@
 // line, or a lanes file), and its convergence rule.
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "case/case_error.h"

@@ -1,5 +1,6 @@
 #include "scene/gltf_loader.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>

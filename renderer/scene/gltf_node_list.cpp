@@ -3,6 +3,7 @@
 // Model's 456-byte nodes, the converted model): about 1.1 KB a node. Here each entry of the
 // document's node array is read and freed in turn, and tinygltf never sees the array.
 #include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
 
 #include "scene/gltf_convert.h"
 

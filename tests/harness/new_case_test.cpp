@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "case/case_loader.h"
 #include "harness/cli_fixture.h"

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include "scene/gltf_checks.h"
 #include "scene/gltf_convert.h"

@@ -18,7 +18,7 @@ using taa::compare::FlipOptions;
 namespace {
 
 // Deterministic noise in [-0.5, 0.5]; flip_reference.py has the same hash.
-double noise(uint32_t x, uint32_t y, uint32_t c) {
+double flipNoise(uint32_t x, uint32_t y, uint32_t c) {
   uint32_t h = (x * 73856093u) ^ (y * 19349663u) ^ (c * 83492791u);
   h ^= h >> 13;
   h *= 0x5bd1e995u;
@@ -44,7 +44,7 @@ Image withNoise(const Image& img, double amplitude) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
       for (int c = 0; c < 3; ++c) {
-        const double v = double(img.at(x, y, c)) + amplitude * noise(x, y, c);
+        const double v = double(img.at(x, y, c)) + amplitude * flipNoise(x, y, c);
         out.at(x, y, c) = float(std::clamp(v, 0.0, 1.0));
       }
   return out;

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Configures and builds the sanitizer tree shared by ci/sanitize.sh and ci/fuzz.sh: clang
-# with AddressSanitizer and UndefinedBehaviorSanitizer (any UB report aborts), plus
-# libFuzzer's coverage instrumentation so the fuzz targets are guided through the readers.
-# Usage: ci/asan-build.sh TARGET...   (build folder: $TAA_ASAN_BUILD, default build-asan)
+# with AddressSanitizer and UndefinedBehaviorSanitizer (any UB report aborts); with
+# TAA_BUILD_FUZZ the libraries also get libFuzzer's coverage instrumentation, so the fuzz
+# targets are guided through the readers.
+# Usage: ci/asan-build.sh TARGET...   (build folder: $TAA_ASAN_BUILD, default build-asan;
+#        more configure arguments: $TAA_ASAN_CMAKE_ARGS)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
-flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 # Test files that render or run the taa-harness binary or chromium (they include support/gpu.h,
 # effects.h, gpu_resolve.h, process.h or a fixture built on them, such as settings_audit.h,
 # which renders though its test need not include gpu.h): lavapipe's JIT under ASan is
@@ -19,5 +21,5 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_CO
   -DTAA_BUILD_BENCH=OFF -DTAA_BUILD_FUZZ=ON -DCMAKE_CXX_FLAGS="$flags" \
   -DTAA_TESTS_LEAVE_OUT="$render_tests" \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" ${TAA_ASAN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j"${TAA_JOBS:-2}" --target "$@"

@@ -111,6 +111,22 @@ TEST(MotionBlur, NearerSurfacesDoNotBleedIntoTheBlurOfFartherOnes) {
   EXPECT_GT(out.at(kPostMotionBlurEdge, 0, 0), 0.0f);
 }
 
+// The near limit's epsilon (1e-7 past centreDepth * (1 + tolerance)) keeps a tap of the centre's
+// own depth when the tolerance is 0, and a tap of the far plane (reversed Z 0) at any tolerance:
+// without it every tap of a surface of one depth would drop out, the centre included, and the
+// pixel would keep its unblurred colour. (Cases run the default tolerance over the depth of real
+// surfaces, where the epsilon is lost in the product; the sky has no velocity.)
+TEST(MotionBlur, TapsOfTheCentresOwnDepthCountAtZeroToleranceAndOnTheFarPlane) {
+  for (const float depth : {0.5f, 0.0f}) {
+    Inputs in = movingTopHalf({8.0f, 0.0f});
+    in.depth = Image(kPostMotionBlurW, kPostMotionBlurH, 1, depth);
+    const Image out = blur({16, 1.0f, false, depth == 0.0f ? 0.05f : 0.0f}, in);
+    int ramp = 0;
+    for (int x = 0; x < kPostMotionBlurW; ++x) ramp += out.at(x, 0, 0) > 0.0f && out.at(x, 0, 0) < 1.0f;
+    EXPECT_EQ(ramp, 8) << "depth " << depth << ": the step edge blurs into a ramp";
+  }
+}
+
 TEST(MotionBlur, NonFiniteColourOrVelocityStaysInItsPixel) {
   Inputs in = movingTopHalf({6.0f, 0.0f});
   setPixel(in.color, 10, 2, kNaN);

@@ -72,7 +72,7 @@ Checked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
 
 // Motions stay below one pixel per frame so that RG16F stores them to 2^-12 px and
 // the comparison measures the renderer, not the format.
-const char* kBase = R"({
+const char* kVelocityBase = R"({
   "scene": {"builtin": "checkerboard"},
   "jitter": {"pattern": "none"},
   "taa": {"mode": "off"},
@@ -81,14 +81,14 @@ const char* kBase = R"({
   %s
 })";
 
-spec::CaseSpec makeCase(const std::string& extra) {
+spec::CaseSpec velocityCase(const std::string& extra) {
   char buf[2048];
-  std::snprintf(buf, sizeof(buf), kBase, extra.c_str());
+  std::snprintf(buf, sizeof(buf), kVelocityBase, extra.c_str());
   return test::caseFromJson(buf, "velocity");
 }
 
 TEST(Velocity, StaticGeometryUnderStrafingCameraMatchesAnalyticMotion) {
-  const auto spec = makeCase(R"("camera": {"strafe": {"speed": 0.5}})");
+  const auto spec = velocityCase(R"("camera": {"strafe": {"speed": 0.5}})");
   const auto frames = test::renderCase(spec);
   const auto c = checkVelocity(spec, frames[3]);
   EXPECT_GT(c.pixels, 5000);
@@ -97,7 +97,7 @@ TEST(Velocity, StaticGeometryUnderStrafingCameraMatchesAnalyticMotion) {
 }
 
 TEST(Velocity, RotatingCameraMatchesAnalyticMotionIncludingSky) {
-  const auto spec = makeCase(R"("camera": {"rotate": {"yaw_deg_per_s": 6.0}})");
+  const auto spec = velocityCase(R"("camera": {"rotate": {"yaw_deg_per_s": 6.0}})");
   const auto frames = test::renderCase(spec);
   const auto c = checkVelocity(spec, frames[3]);
   EXPECT_GT(c.pixels, 5000);
@@ -106,7 +106,7 @@ TEST(Velocity, RotatingCameraMatchesAnalyticMotionIncludingSky) {
 }
 
 TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
-  const auto spec = makeCase(
+  const auto spec = velocityCase(
       R"("camera": {"strafe": {"speed": 0.3}},
          "movers": [{"shape": "cube", "start": [-1, 0.6, 2], "end": [1, 0.6, 2], "speed": 0.6,
                      "rotation_speed_deg": 5, "rotation_axis": [0, 1, 0]}])");
@@ -123,7 +123,7 @@ TEST(Velocity, MovingObjectUnderMovingCameraMatchesAnalyticMotion) {
 }
 
 TEST(Velocity, IsZeroForAStaticCameraAndScene) {
-  const auto spec = makeCase(R"("camera": {})");
+  const auto spec = velocityCase(R"("camera": {})");
   const auto frames = test::renderCase(spec);
   const Image& v = test::capturedImage(frames[3], Capture::Velocity);
   // Rounding of the two (identical) projections may differ by an ulp once fused.

@@ -220,6 +220,10 @@ TEST_F(Verdicts, OnAnotherCpuLevelEveryFrameIsCheckedBySignature) {
       std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("cell (row 2, column 1 of 8x8)"), std::string::npos) << r.output;
+  // The worst cell over the sequence is frame 2's, though frames 3 to 5 came after it.
+  const auto q = results()["cases"][0]["sequence_check"];
+  EXPECT_EQ(q["worst_cell_frame"], 2) << q.dump();
+  EXPECT_EQ(q["worst_mean_frame"], 2) << q.dump();
 }
 
 TEST_F(Verdicts, AnOverwrittenGoldenExrIsAFailureNamingTheFileAndTheFix) {

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/image_io.h"
 #include "invariants/invariant_fixtures.h"
@@ -83,6 +84,24 @@ TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
     EXPECT_EQ(valueOf(o, "x"), 5.0);
     EXPECT_EQ(valueOf(o, "y"), 4.0);
     EXPECT_TRUE(contains(o.detail, "at frame 2 (5, 4)")) << o.detail;
+  }
+}
+
+// The image's first and last rows and columns are checked too (their boxes are clamped 2x3 or
+// 3x2 neighbourhoods).
+TEST(InvariantHistoryBounded, APixelOnEachEdgeIsChecked) {
+  for (const auto& [x, y] : {std::pair{0, 4}, {kW - 1, 4}, {5, 0}, {5, kH - 1}}) {
+    auto seq = boundedSequence(3);
+    const Image& cur = seq[1].current;
+    float hi[3] = {0, 0, 0};
+    for (int j = std::max(y - 1, 0); j <= std::min(y + 1, kH - 1); ++j)
+      for (int i = std::max(x - 1, 0); i <= std::min(x + 1, kW - 1); ++i)
+        for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
+    setRgb(seq[1].output, x, y, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+    const auto o = runAll("history_bounded", rgbCase(), seq);
+    EXPECT_FALSE(o.passed) << x << ", " << y;
+    EXPECT_EQ(valueOf(o, "x"), double(x));
+    EXPECT_EQ(valueOf(o, "y"), double(y));
   }
 }
 

@@ -69,6 +69,16 @@ TEST(CaseLoader, SceneOutsideCaseFolderIsRefused) {
   EXPECT_FALSE(caseProblems(R"({"scene": {"gltf": "/etc/a.gltf"}})").empty());
 }
 
+// Any rotation speed but 0 needs an axis to turn about, 1 degree a second as much as 45.
+TEST(CaseLoader, AMoverThatRotatesNeedsANonZeroAxis) {
+  for (const char* speed : {"1", "45", "-0.5"}) {
+    const auto p = caseProblems(std::string(R"({"movers": [{"shape": "cube", "rotation_speed_deg": )") +
+                                speed + R"(, "rotation_axis": [0, 0, 0]}]})");
+    ASSERT_EQ(p.size(), 1u) << speed;
+    EXPECT_NE(p[0].find("movers[0].rotation_axis: a zero axis cannot rotate"), std::string::npos) << p[0];
+  }
+}
+
 TEST(CaseLoader, SettingIgnoredByChosenPatternIsAnError) {
   const auto p = caseProblems(R"({"jitter": {"pattern": "uniform4", "length": 16}})");
   ASSERT_EQ(p.size(), 1u);

@@ -79,6 +79,23 @@ TEST(CaseLoader, AMoverThatRotatesNeedsANonZeroAxis) {
   }
 }
 
+// report.zoom must lie in the output, across (the eyes side by side) and down.
+TEST(CaseLoader, AZoomRegionLeavingTheOutputIsRefused) {
+  auto zoomProblems = [](const std::string& zoom, const std::string& more = "") {
+    return caseProblems(R"({"render": {"width": 64, "height": 36}, "report": {"zoom": )" + zoom + "}" +
+                        more + "}");
+  };
+  EXPECT_TRUE(zoomProblems(R"({"x": 48, "y": 27, "width": 16, "height": 9})").empty());
+  for (const char* zoom : {R"({"x": 49, "y": 0, "width": 16, "height": 9})",
+                           R"({"x": 0, "y": 28, "width": 16, "height": 9})"}) {
+    const auto p = zoomProblems(zoom);
+    ASSERT_EQ(p.size(), 1u) << zoom;
+    EXPECT_NE(p[0].find("leaves the 64x36 output"), std::string::npos) << p[0];
+  }
+  const std::string stereo = R"(, "taa": {"mode": "tscmaa"}, "tscmaa": {"eyes": 2})";
+  EXPECT_TRUE(zoomProblems(R"({"x": 112, "y": 0, "width": 16, "height": 9})", stereo).empty());
+}
+
 TEST(CaseLoader, SettingIgnoredByChosenPatternIsAnError) {
   const auto p = caseProblems(R"({"jitter": {"pattern": "uniform4", "length": 16}})");
   ASSERT_EQ(p.size(), 1u);

@@ -106,6 +106,17 @@ TEST(InertKeys, HistoryFormatNeedsABlendingMode) {
       inertCaseProblems(R"({"taa": {"mode": "basic", "history_format": "rgba32f"}})").empty());
 }
 
+// A moving twin is read only in the modes its still setting is: variance_gamma in full only.
+TEST(InertKeys, TaaMovingFloatNeedsAModeThatReadsIt) {
+  const auto p = inertCaseProblems(R"({"taa": {"mode": "basic", "moving": {"variance_gamma": 2}}})");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("taa.moving.variance_gamma: has no effect unless taa.mode is full"), std::string::npos)
+      << p[0];
+  EXPECT_TRUE(inertCaseProblems(
+                  R"({"taa": {"mode": "full", "variance_clip": true, "moving": {"variance_gamma": 2}}})")
+                  .empty());
+}
+
 TEST(InertKeys, TaaMovingRampNeedsAMovingFloat) {
   for (const std::string k : {R"("from_px": 1)", R"("to_px": 6)", R"("depth": 6)"}) {
     const std::string key = "taa.moving." + k.substr(1, k.find('"', 1) - 1);

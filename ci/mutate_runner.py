@@ -28,6 +28,12 @@ def log(*parts):
     print(time.strftime("%H:%M:%S"), *parts, flush=True)
 
 
+# Shader folders whose tests are named after the pass that uses them: shaders/trace/ is the
+# adaptive pass's tracer, and its tests (adaptive_shading_test.cpp's traced vertex colours)
+# say adaptive, not trace.
+PASS_ALIASES = {"trace": ("adaptive",)}
+
+
 def pass_word(rel):
     """The pass a shader file belongs to, as run logs and tests name it: cas.comp -> cas,
     tscmaa/zshape.glsl -> tscmaa, taa/rectify.glsl -> taa, motion_blur.comp -> motion."""
@@ -40,7 +46,7 @@ def test_sources(rel):
     """Harness files: the tests of the matching tests/ folder. Shader files: the GPU tests
     (tests/renderer, tests/effects) whose file name holds the pass's or the file's name."""
     if rel.startswith("shaders/"):
-        words = (pass_word(rel), Path(rel).stem)
+        words = (pass_word(rel), Path(rel).stem) + PASS_ALIASES.get(pass_word(rel), ())
         return [src for d in ("tests/renderer", "tests/effects")
                 for src in sorted((ROOT / d).glob("*_test.cpp"))
                 if any(src.name.startswith(w + "_") or "_" + w + "_" in src.name for w in words)]

@@ -13,8 +13,7 @@
 #include <string>
 
 #include "api/device_error.h"
-#include "case/case_error.h"
-#include "case/case_loader.h"
+#include "support/case_problems.h"
 #include "support/effects.h"
 #include "support/process.h"
 #include "vk/context.h"
@@ -168,24 +167,15 @@ TEST(EffectMsaa, TheCliRefusesAnUnofferedCountWithExitTwo) {
   EXPECT_NE(r.output.find("render.msaa"), std::string::npos) << r.output;
 }
 
-std::vector<std::string> msaaProblems(const std::string& json) {
-  try {
-    cases::parseCase(json, "cases/msaa.json");
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
-}
-
 TEST(EffectMsaa, ValidationRefusesOtherCountsAndTheDeferredPath) {
-  auto p = msaaProblems(R"({"render": {"msaa": 3}})");
+  auto p = test::caseProblems(R"({"render": {"msaa": 3}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("render.msaa: a sample count is 1, 2, 4 or 8"), std::string::npos) << p[0];
-  p = msaaProblems(R"({"render": {"msaa": 4, "path": "deferred"}})");
+  p = test::caseProblems(R"({"render": {"msaa": 4, "path": "deferred"}})");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("render.msaa: multisampling needs forward shading"), std::string::npos)
       << p[0];
-  EXPECT_TRUE(msaaProblems(R"({"render": {"msaa": 4}})").empty());
+  EXPECT_TRUE(test::caseProblems(R"({"render": {"msaa": 4}})").empty());
 }
 
 }  // namespace

@@ -11,11 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "case/case_error.h"
-#include "case/case_loader.h"
 #include "passes/taa_resolve.h"
 #include "script/frame_state.h"
 #include "spec/taa_modes.h"
+#include "support/case_problems.h"
 #include "support/gpu.h"
 
 namespace taa {
@@ -41,12 +40,7 @@ float movingAlphaAt(const spec::CaseSpec& spec, int frame) {
 }
 
 std::vector<std::string> movingProblems(const std::string& taa) {
-  try {
-    cases::parseCase(R"({"script": {"frames": 2}, "taa": )" + taa + "}", "cases/moving.json");
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
+  return test::caseProblems(R"({"script": {"frames": 2}, "taa": )" + taa + "}");
 }
 
 TEST(TaaMoving, AlphaIsStillAtRestMovingAtSpeedAndBetweenOnTheRamp) {

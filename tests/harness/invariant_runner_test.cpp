@@ -46,9 +46,10 @@ const char* kWarmUpNan = R"({
   "checks": {"golden": false, "from_frame": FROM, "invariants": ["finite", "energy"],
              "energy": {"epsilon": 0.5}}})";
 
-std::string withFromFrame(int from) {
+std::string withFromFrame(int from, int nanFrame = 1) {
   std::string json = kWarmUpNan;
   json.replace(json.find("FROM"), 4, std::to_string(from));
+  json.replace(json.find("[1]"), 3, "[" + std::to_string(nanFrame) + "]");
   return json;
 }
 
@@ -66,6 +67,16 @@ TEST(InvariantRunner, FiniteJudgesWarmUpFramesWhileEnergyStartsAtFromFrame) {
   EXPECT_TRUE(energy->passed) << energy->detail;  // frame 1's NaN is before from_frame
   EXPECT_EQ(valueNamed(*energy, "frames"), 2.0);
   EXPECT_EQ(r.status, run::CaseStatus::Fail);
+}
+
+// The smallest from_frame that leaves a warm-up frame: frame 0 is still read back for finite.
+TEST(InvariantRunner, FromFrameOneLeavesFrameZeroToFinite) {
+  const auto r = runCaseJson(withFromFrame(1, 0), "warm_up_nan_frame_0");
+  const auto* finite = invariantNamed(r, "finite");
+  ASSERT_NE(finite, nullptr);
+  EXPECT_FALSE(finite->passed) << finite->detail;
+  EXPECT_NE(finite->detail.find("first at frame 0 (5, 5)"), std::string::npos) << finite->detail;
+  EXPECT_EQ(valueNamed(*finite, "frames"), 4.0);
 }
 
 TEST(InvariantRunner, FromFrameZeroLetsEveryInvariantSeeTheDefect) {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "core/image_io.h"
+#include "invariants/history_box.h"
 #include "invariants/invariant_fixtures.h"
 
 using namespace taa;
@@ -173,6 +174,15 @@ TEST(InvariantHistoryBounded, KarisAcceptsItsLiftedNegativeHistory) {
   EXPECT_TRUE(karis.passed) << karis.detail;
   setRgb(f1.output, kW / 2 - 1, 5, 0.45f, 0.9f, 0.1f);  // no lift explains this green
   EXPECT_FALSE(runAll("history_bounded", s, {f0, f1}).passed);
+}
+
+// Every RGB channel goes negative somewhere in this YCoCg box, but no colour in it has all
+// three negative (its Y >= 0.125), so a lift raised two channels at most. Lowering all three
+// of (1, 0.5, 0.5) would bring it to 0.0417 of the box; the best pair leaves 0.0625.
+TEST(InvariantHistoryBounded, ALiftRaisesTwoChannelsAtMost) {
+  const box::Box b{{0.125, 0.0625, -0.5}, {0.25, 0.4375, 0.25}};
+  const double o[3] = {1.0, 0.5, 0.5};
+  EXPECT_NEAR(box::liftedExcess(o, b, box::Lift::NegativeChannels), 0.0625, 1e-4);
 }
 
 // shrink_chroma lets the box's chroma reach an eighth of the luma extent around the current

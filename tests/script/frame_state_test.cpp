@@ -6,11 +6,14 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frame_state_bytes.h"
 #include "script/projection.h"
 
 using taa::script::FrameState;
 using taa::script::frameState;
 using taa::spec::CaseSpec;
+using taa::test::cameraBytes;
+using taa::test::frameStateBytes;
 
 namespace {
 
@@ -41,62 +44,21 @@ CaseSpec busyCase() {
   return s;
 }
 
-template <class T>
-void append(std::vector<unsigned char>& out, const T& v) {
-  const auto* p = reinterpret_cast<const unsigned char*>(&v);
-  out.insert(out.end(), p, p + sizeof(T));
-}
-
-void appendCamera(std::vector<unsigned char>& out, const taa::script::CameraState& c) {
-  append(out, c.position);
-  append(out, c.view);
-  append(out, c.projection);
-  append(out, c.viewProjection);
-  append(out, c.fovY);
-  append(out, c.aspect);
-  append(out, c.nearPlane);
-  append(out, c.farPlane);
-}
-
-// Field by field, so struct padding never enters the comparison.
-std::vector<unsigned char> bytes(const FrameState& fs) {
-  std::vector<unsigned char> out;
-  append(out, fs.frame);
-  append(out, fs.time);
-  append(out, fs.renderSize);
-  append(out, fs.renderScale);
-  appendCamera(out, fs.camera);
-  appendCamera(out, fs.prevCamera);
-  append(out, fs.jitter);
-  append(out, fs.jitteredProjection);
-  for (const auto& m : fs.movers) append(out, m);
-  for (const auto& m : fs.prevMovers) append(out, m);
-  for (double t : fs.moverAnimTime) append(out, t);
-  append(out, fs.cameraCut);
-  append(out, fs.resetHistory);
-  return out;
-}
-
-std::vector<unsigned char> cameraBytes(const taa::script::CameraState& c) {
-  std::vector<unsigned char> out;
-  appendCamera(out, c);
-  return out;
-}
-
 }  // namespace
 
 TEST(FrameStatePure, SameFrameTwiceGivesIdenticalBytes) {
   const CaseSpec s = busyCase();
-  for (int f : {0, 3, 10, 15}) EXPECT_EQ(bytes(frameState(s, f)), bytes(frameState(s, f))) << f;
+  for (int f : {0, 3, 10, 15})
+    EXPECT_EQ(frameStateBytes(frameState(s, f)), frameStateBytes(frameState(s, f))) << f;
 }
 
 TEST(FrameStatePure, OutOfOrderEvaluationMatchesInOrder) {
   const CaseSpec s = busyCase();
   std::vector<std::vector<unsigned char>> inOrder;
-  for (int f = 0; f < 16; ++f) inOrder.push_back(bytes(frameState(s, f)));
+  for (int f = 0; f < 16; ++f) inOrder.push_back(frameStateBytes(frameState(s, f)));
   for (int i = 0; i < 16; ++i) {
     const int f = (i * 7 + 3) % 16;  // a fixed permutation of 0..15
-    EXPECT_EQ(bytes(frameState(s, f)), inOrder[f]) << f;
+    EXPECT_EQ(frameStateBytes(frameState(s, f)), inOrder[f]) << f;
   }
   // The frames really differ, so equality above is not vacuous.
   EXPECT_NE(inOrder[1], inOrder[2]);

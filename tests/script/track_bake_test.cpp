@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "case/case_loader.h"
+#include "frame_state_bytes.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"
 #include "support/process.h"
@@ -23,42 +24,6 @@ namespace {
 using taa::test::readFile;
 
 namespace fs = std::filesystem;
-
-template <class T>
-void append(std::vector<unsigned char>& out, const T& v) {
-  const auto* p = reinterpret_cast<const unsigned char*>(&v);
-  out.insert(out.end(), p, p + sizeof(T));
-}
-
-void appendCamera(std::vector<unsigned char>& out, const CameraState& c) {
-  append(out, c.position);
-  append(out, c.view);
-  append(out, c.projection);
-  append(out, c.viewProjection);
-  append(out, c.fovY);
-  append(out, c.aspect);
-  append(out, c.nearPlane);
-  append(out, c.farPlane);
-}
-
-// Every bit the renderer reads from a FrameState.
-std::vector<unsigned char> bytesOf(const FrameState& fs) {
-  std::vector<unsigned char> out;
-  append(out, fs.frame);
-  append(out, fs.time);
-  append(out, fs.renderSize);
-  appendCamera(out, fs.camera);
-  appendCamera(out, fs.prevCamera);
-  append(out, fs.jitter);
-  append(out, fs.jitteredProjection);
-  for (const auto& m : fs.movers) append(out, m);
-  for (const auto& m : fs.prevMovers) append(out, m);
-  for (double t : fs.moverAnimTime) append(out, t);
-  for (double t : fs.prevMoverAnimTime) append(out, t);
-  append(out, fs.cameraCut);
-  append(out, fs.resetHistory);
-  return out;
-}
 
 // Jitter, a teleporting cut, every procedural camera motion and three kinds of mover.
 const char* kBusy = R"({
@@ -108,7 +73,8 @@ Pair bakeAndReplay(const std::string& json) {
 void expectSameFrameStates(const Pair& p) {
   ASSERT_TRUE(p.replay.tracks);
   for (int f = 0; f < p.original.script.frames; ++f)
-    ASSERT_EQ(bytesOf(frameState(p.original, f)), bytesOf(frameState(p.replay, f)))
+    ASSERT_EQ(test::frameStateBytes(frameState(p.original, f)),
+              test::frameStateBytes(frameState(p.replay, f)))
         << "frame " << f;
 }
 

@@ -186,7 +186,7 @@ std::string spirvMemoryProblem(const std::vector<uint32_t>& w,
   for (size_t i = 5; i < w.size();) {
     const uint32_t count = w[i] >> 16, opcode = w[i] & 0xffffu;
     if (count == 0 || i + count > w.size()) break;  // reflection reports the malformed module
-    const uint32_t* o = &w[i + 1];
+    const uint32_t* o = w.data() + i + 1;  // one past the end when the instruction has no operands
     const size_t n = count - 1;
     i += count;
     switch (opcode) {

@@ -8,7 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
-flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+# _GLIBCXX_ASSERTIONS: libstdc++ checks its preconditions (an index within a vector's size, not
+# only within its allocation as ASan sees it; a value in an optional before it is read).
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
 # Test files that render or run the taa-harness binary or chromium (they include support/gpu.h,
 # effects.h, gpu_resolve.h, process.h or a fixture built on them, such as settings_audit.h,
 # which renders though its test need not include gpu.h): lavapipe's JIT under ASan is

@@ -1,6 +1,8 @@
 // Replacing a case's goldens is all or nothing: a failure part-way (or a bless
 // killed before its exchange) leaves the previous set whole and loadable.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -70,6 +72,37 @@ TEST(GoldenStore, FailurePartWayLeavesTheOldSetWhole) {
   EXPECT_EQ(loaded->manifest.bless.reason, "good");
   for (const auto& f : loaded->manifest.frames) EXPECT_FLOAT_EQ(loaded->load(f).at(0, 0, 0), 0.25f);
   for (const auto& e : fs::directory_iterator(root)) EXPECT_EQ(e.path().filename(), "c");  // no staging left
+}
+
+// A goldens folder bless may not write to is refused up front, by name, with the old set
+// untouched. Root passes every permission check, so as root the bless runs in a child that
+// first drops to user nobody.
+TEST(GoldenStore, AnUnwritableGoldensFolderIsRefusedByName) {
+  const fs::path root = freshRoot("unwritable");
+  const auto good = manifestFor("good", {1}, 0.25f);
+  replaceGoldens(root, good, filesFor(good, 0.25f));
+  const auto next = manifestFor("next", {2}, 0.5f);
+  const auto files = filesFor(next, 0.5f);
+  fs::permissions(root, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                            fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::geteuid() == 0 && ::setuid(65534) != 0) ::_exit(3);
+    try {
+      replaceGoldens(root, next, files);
+    } catch (const std::exception& e) {
+      ::_exit(std::string(e.what()).find("the goldens folder is not writable") != std::string::npos ? 0 : 1);
+    }
+    ::_exit(2);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  fs::permissions(root, fs::perms::owner_all);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: refused for another reason; 2: not refused; 3: cannot drop root";
+  const auto loaded = loadGoldens(root, "c");
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->manifest.bless.reason, "good");
 }
 
 TEST(GoldenStore, LeftoversOfAKilledBlessAreIgnoredThenCleaned) {

@@ -53,6 +53,13 @@ TEST(InvariantFinite, IgnoresFromFrame) {
   EXPECT_FALSE(runAll("finite", s, seq).passed);
 }
 
+// An invariant that judged no frame has shown nothing: that is no pass.
+TEST(InvariantFinite, NoFrameIsNoPass) {
+  const auto o = runAll("finite", staticCase(), {});
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.detail, "no frames observed")) << o.detail;
+}
+
 TEST(InvariantFinite, ApplicableToEveryCase) {
   auto s = staticCase();
   s.taa.mode = spec::TaaMode::Off;

@@ -74,6 +74,20 @@ TEST_F(UserCaseTest, WrongTypeIsRefused) {
       << p[0];
 }
 
+// A parameter missing its value would silently be 0; one missing its name sets nothing.
+TEST_F(UserCaseTest, AParameterWithoutItsValueOrNameIsRefused) {
+  auto p = problems(R"({"shader": "mine.comp", "shader_params": [{"name": "alpha"}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_params[0].value: is missing; give the constant's value"),
+            std::string::npos)
+      << p[0];
+  p = problems(R"({"shader": "mine.comp", "shader_params": [{"value": 0.5}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_params[0].name: is missing; give the constant's name"),
+            std::string::npos)
+      << p[0];
+}
+
 TEST_F(UserCaseTest, CompileErrorNamesShaderFileAndLine) {
   std::ofstream(dir_ / "bad.comp")
       << "#version 450\n#include \"taa_user.h\"\nvoid main() {\n  oops();\n}\n";

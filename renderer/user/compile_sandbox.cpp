@@ -58,6 +58,7 @@ void* sandboxThread(void* arg) {
   return nullptr;
 }
 
+#ifndef TAA_SANDBOX_NO_AS_LIMIT
 // The child's virtual size now: the limit is set on top of it, since the child inherits
 // every mapping of the parent (a Vulkan driver's, a loaded scene's).
 uint64_t sandboxVirtualBytes() {
@@ -66,6 +67,7 @@ uint64_t sandboxVirtualBytes() {
   statm >> pages;
   return pages * uint64_t(sysconf(_SC_PAGESIZE));
 }
+#endif
 
 bool sandboxWriteAll(int fd, const char* data, size_t size) {
   while (size > 0) {

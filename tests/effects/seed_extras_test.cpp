@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <string>
 
-#include "case/case_error.h"
 #include "script/frame_state.h"
+#include "support/case_problems.h"
 #include "support/effects.h"
 #include "support/gpu.h"
 #include "support/gpu_resolve.h"
@@ -95,14 +95,11 @@ TEST(SeedExtrasUnjitter, NeighbourhoodBoxIsBuiltAtThePixelCentres) {
 
 TEST(SeedExtrasUnjitter, RefusedWhereThereIsNoJitterToUndo) {
   for (const char* key : {"unjitter_current", "unjitter_neighborhood"}) {
-    std::vector<std::string> problems;
-    try {
+    const auto problems = test::caseRefusal([&] {
       test::caseFromJson(std::string(R"({"scene": {"builtin": "checkerboard"},
         "jitter": {"pattern": "none"}, "taa": {")") +
                          key + R"(": true}})");
-    } catch (const cases::CaseError& e) {
-      problems = e.problems();
-    }
+    });
     ASSERT_EQ(problems.size(), 1u) << key;
     EXPECT_NE(problems[0].find("the case jitters"), std::string::npos) << problems[0];
   }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "case/case_error.h"
+#include "support/case_problems.h"
 #include "support/effects.h"
 #include "support/gpu.h"
 #include "support/gpu_resolve.h"
@@ -16,13 +16,10 @@ namespace taa {
 namespace {
 
 std::vector<std::string> seedCaseProblems(const std::string& members) {
-  try {
+  return test::caseRefusal([&] {
     test::caseFromJson(R"({"scene": {"builtin": "checkerboard"}, )" + members + "}",
                        "seed_fidelity");
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
+  });
 }
 
 bool seedMentions(const std::vector<std::string>& problems, const std::string& key,

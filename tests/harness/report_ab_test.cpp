@@ -8,10 +8,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "case/case_error.h"
 #include "case/case_loader.h"
 #include "report/html_report.h"
 #include "run/case_runner.h"
+#include "support/case_problems.h"
 #include "support/gpu.h"
 #include "support/text.h"
 
@@ -51,12 +51,7 @@ class ReportAb : public ::testing::Test {
   }
 
   std::vector<std::string> problems(const std::string& report) {
-    try {
-      cases::loadCase(writeCase(report));
-    } catch (const cases::CaseError& e) {
-      return e.problems();
-    }
-    return {};
+    return test::caseRefusal([&] { cases::loadCase(writeCase(report)); });
   }
 
   fs::path root_;

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "api/renderer.h"
-#include "case/case_error.h"
 #include "scene/build_scene.h"
 #include "spec/taa_modes.h"
+#include "support/case_problems.h"
 #include "support/effects.h"
 #include "support/gpu.h"
 
@@ -36,14 +36,9 @@ std::string withMode(const std::string& json, TaaMode mode) {
 
 // Whether validation refuses `key` in the case.
 bool refuses(const std::string& json, const std::string& key) {
-  try {
-    test::caseFromJson(json, "mode_rules");
-  } catch (const cases::CaseError& e) {
-    const auto& p = e.problems();
-    return std::any_of(p.begin(), p.end(),
-                       [&](const std::string& s) { return s.find(key) != std::string::npos; });
-  }
-  return false;
+  const auto p = test::caseRefusal([&] { test::caseFromJson(json, "mode_rules"); });
+  return std::any_of(p.begin(), p.end(),
+                     [&](const std::string& s) { return s.find(key) != std::string::npos; });
 }
 
 const Image& lastFrame(const std::vector<FrameRecord>& run) {

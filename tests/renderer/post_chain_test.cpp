@@ -10,9 +10,9 @@
 #include <regex>
 
 #include "api/renderer.h"
-#include "case/case_error.h"
 #include "passes/taa_resolve.h"
 #include "scene/build_scene.h"
+#include "support/case_problems.h"
 #include "support/gpu.h"
 #include "support/process.h"
 
@@ -209,12 +209,7 @@ TEST(PostChain, SpeedInAlphaWithoutMotionBlurFallsBackToTheVelocityBuffer) {
 }
 
 std::vector<std::string> chainProblems(const std::string& extra) {
-  try {
-    makeCase(extra);
-  } catch (const cases::CaseError& e) {
-    return e.problems();
-  }
-  return {};
+  return test::caseRefusal([&] { makeCase(extra); });
 }
 
 bool mentions(const std::vector<std::string>& problems, const std::string& a,

@@ -5,13 +5,17 @@
 
 namespace taa::test {
 
-std::vector<std::string> caseProblems(const std::string& json) {
+std::vector<std::string> caseRefusal(const std::function<void()>& load) {
   try {
-    cases::parseCase(json, "cases/t.json");
+    load();
   } catch (const cases::CaseError& e) {
     return e.problems();
   }
   return {};
+}
+
+std::vector<std::string> caseProblems(const std::string& json) {
+  return caseRefusal([&] { cases::parseCase(json, "cases/t.json"); });
 }
 
 }  // namespace taa::test

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "case/case_error.h"
 #include "case/case_loader.h"
 #include "invariants/registry.h"
+#include "support/case_problems.h"
 
 namespace {
 
@@ -35,12 +35,8 @@ void main() {
 )";
   }
   std::vector<std::string> problems(const std::string& taa) {
-    try {
-      taa::cases::parseCase(R"({"taa": )" + taa + "}", dir_ / "c.json");
-    } catch (const taa::cases::CaseError& e) {
-      return e.problems();
-    }
-    return {};
+    return taa::test::caseRefusal(
+        [&] { taa::cases::parseCase(R"({"taa": )" + taa + "}", dir_ / "c.json"); });
   }
   static std::string joined(const std::vector<std::string>& v) {
     std::string s;
@@ -158,13 +154,10 @@ void main() {
 
 TEST_F(UserCaseTest, ACaseNeedingACapabilityTheShaderLacksIsRefused) {
   const auto load = [&](const std::string& shader, const std::string& render) {
-    try {
+    return joined(taa::test::caseRefusal([&] {
       taa::cases::parseCase(R"({"render": )" + render + R"(, "taa": {"shader": ")" + shader + R"("}})",
                             dir_ / "c.json");
-    } catch (const taa::cases::CaseError& e) {
-      return joined(e.problems());
-    }
-    return std::string();
+    }));
   };
   const std::string up = load("mine.comp", R"({"width": 64, "height": 36, "upsample": 2})");
   EXPECT_NE(up.find("c.json: taa.shader: the case renders at 32x18 under its 64x36 output "

@@ -31,10 +31,13 @@ probe_cases=(rough_floor_mover_ycocg_variance shadows_deferred_open_area gltf_an
   gltf_skinned_normals_cubic stress_hdr_highlights tscmaa_fence msaa_4x_fence sharpen_cas
   motion_blur_velocity_in_alpha adaptive_aniso)
 same_as_native() {
-  local out=out/cpu-probe files=()
+  local out=out/cpu-probe files=() earlier=()
   for c in "${probe_cases[@]}"; do files+=("cases/$c.json"); done
+  # The native frames come from the main job's results when this very build made them from the
+  # same inputs (run --verdict-from checks that, and renders otherwise).
+  [ -f out/results.json ] && earlier=(--verdict-from out/results.json)
   rm -rf "$out"
-  "$harness" run "${files[@]}" --out "$out/native" >/dev/null || true
+  "$harness" run "${files[@]}" "${earlier[@]}" --out "$out/native" >/dev/null || true
   GALLIUM_OVERRIDE_CPU_CAPS=$1 "$harness" run "${files[@]}" --out "$out/$1" >/dev/null || true
   python3 - "$out/native/results.json" "$out/$1/results.json" <<'EOF'
 import json, sys

@@ -36,20 +36,20 @@ double valueNamed(const run::InvariantResult& r, const std::string& name) {
   return -1.0;
 }
 
-// A NaN written into frame 1's colour reaches the output with the resolve off (frame 0 is a
-// history reset, which energy skips).
+// A NaN written into frame NAN_FRAME's colour (1 by default) reaches the output with the
+// resolve off (frame 0 is a history reset, which energy skips).
 const char* kWarmUpNan = R"({
   "scene": {"builtin": "checkerboard"}, "render": {"width": 32, "height": 18},
   "taa": {"mode": "off"}, "script": {"frames": 4}, "output": {"frames": [3]},
   "reference": {"samples": 4},
-  "inject": {"frames": [1], "pixels": [[5, 5]], "value": "nan"},
+  "inject": {"frames": [NAN_FRAME], "pixels": [[5, 5]], "value": "nan"},
   "checks": {"golden": false, "from_frame": FROM, "invariants": ["finite", "energy"],
              "energy": {"epsilon": 0.5}}})";
 
 std::string withFromFrame(int from, int nanFrame = 1) {
   std::string json = kWarmUpNan;
   json.replace(json.find("FROM"), 4, std::to_string(from));
-  json.replace(json.find("[1]"), 3, "[" + std::to_string(nanFrame) + "]");
+  json.replace(json.find("NAN_FRAME"), 9, std::to_string(nanFrame));
   return json;
 }
 

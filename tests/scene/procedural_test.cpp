@@ -110,17 +110,17 @@ TEST(ProceduralScenes, FillTheDefaultView) {
   const DefaultCamera cam;
   for (BuiltinScene which : kAll) {
     SCOPED_TRACE(nameOf(which));
-    const Scene s = build(which);
+    const auto triangles = testing::posedTriangles(build(which), 0);
     int hits = 0, total = 0;
     for (int y = 0; y < 18; ++y)
       for (int x = 0; x < 32; ++x, ++total)
-        hits += testing::castRay(s, 0, cam.eye,
+        hits += testing::castRay(triangles, cam.eye,
                                  cam.ray((float(x) + 0.5f) * 10.0f, (float(y) + 0.5f) * 10.0f))
                     .has_value();
     const double coverage = double(hits) / double(total);
     if (which == BuiltinScene::Quad) {
       // One unit quad six units away: about 30 x 30 pixels in the middle of the frame.
-      EXPECT_TRUE(testing::castRay(s, 0, cam.eye, cam.ray(160.0f, 90.0f)).has_value());
+      EXPECT_TRUE(testing::castRay(triangles, cam.eye, cam.ray(160.0f, 90.0f)).has_value());
       EXPECT_GT(coverage, 0.005);
     } else {
       EXPECT_GT(coverage, 0.55) << "too much empty sky";

@@ -1,6 +1,7 @@
 // Helpers shared by the scene tests: the default camera, projection and ray casting.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -68,33 +69,39 @@ struct DefaultCamera {
   }
 };
 
-// Nearest hit distance of a ray with a model's posed triangles (alpha ignored).
-inline std::optional<float> castRay(const Scene& scene, int model, const glm::vec3& o,
-                                    const glm::vec3& d) {
-  std::optional<float> best;
-  for (const MeshDraw& draw : poseModel(scene, model, 0.0)) {
-    for (const Primitive& p : scene.meshes[size_t(draw.mesh)].primitives) {
+// A model's triangles posed at time 0, in world space: posed once, cast at by many rays.
+inline std::vector<std::array<glm::vec3, 3>> posedTriangles(const Scene& scene, int model) {
+  std::vector<std::array<glm::vec3, 3>> out;
+  for (const MeshDraw& draw : poseModel(scene, model, 0.0))
+    for (const Primitive& p : scene.meshes[size_t(draw.mesh)].primitives)
       for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
-        glm::vec3 v[3];
+        auto& v = out.emplace_back();
         for (int k = 0; k < 3; ++k) {
           const uint32_t idx =
               scene.indices[p.firstIndex + i + uint32_t(k)] + uint32_t(p.vertexOffset);
-          v[k] = glm::vec3(draw.transform * glm::vec4(scene.vertices[idx].position, 1.0f));
+          v[size_t(k)] = glm::vec3(draw.transform * glm::vec4(scene.vertices[idx].position, 1.0f));
         }
-        // Moller-Trumbore, both sides.
-        const glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], pv = glm::cross(d, e2);
-        const float det = glm::dot(e1, pv);
-        if (std::fabs(det) < 1e-12f) continue;
-        const glm::vec3 tv = o - v[0];
-        const float u = glm::dot(tv, pv) / det;
-        if (u < 0.0f || u > 1.0f) continue;
-        const glm::vec3 qv = glm::cross(tv, e1);
-        const float w = glm::dot(d, qv) / det;
-        if (w < 0.0f || u + w > 1.0f) continue;
-        const float t = glm::dot(e2, qv) / det;
-        if (t > 1e-4f && (!best || t < *best)) best = t;
       }
-    }
+  return out;
+}
+
+// Nearest hit distance of a ray with posed triangles (alpha ignored).
+inline std::optional<float> castRay(const std::vector<std::array<glm::vec3, 3>>& triangles,
+                                    const glm::vec3& o, const glm::vec3& d) {
+  std::optional<float> best;
+  for (const auto& v : triangles) {
+    // Moller-Trumbore, both sides.
+    const glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], pv = glm::cross(d, e2);
+    const float det = glm::dot(e1, pv);
+    if (std::fabs(det) < 1e-12f) continue;
+    const glm::vec3 tv = o - v[0];
+    const float u = glm::dot(tv, pv) / det;
+    if (u < 0.0f || u > 1.0f) continue;
+    const glm::vec3 qv = glm::cross(tv, e1);
+    const float w = glm::dot(d, qv) / det;
+    if (w < 0.0f || u + w > 1.0f) continue;
+    const float t = glm::dot(e2, qv) / det;
+    if (t > 1e-4f && (!best || t < *best)) best = t;
   }
   return best;
 }

@@ -2,13 +2,16 @@
 // reading its mask and list headers.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "api/renderer.h"
 #include "passes/tscmaa.h"
+#include "scene/build_scene.h"
 #include "script/frame_state.h"
 #include "support/gpu.h"
 #include "vk/timestamps.h"
@@ -80,15 +83,6 @@ inline Image blockNoise(int w, int h, uint32_t seed) {
 inline uint32_t groupsFor(uint32_t count) {
   return (count + TSCMAA_LIST_GROUP - 1) / TSCMAA_LIST_GROUP;
 }
-
-}  // namespace taa::tscmaatest
-
-#include <algorithm>
-
-#include "api/renderer.h"
-#include "scene/build_scene.h"
-
-namespace taa::tscmaatest {
 
 // Renders every frame of `spec` with images for every frame.
 inline std::vector<FrameRecord> renderAll(const spec::CaseSpec& spec, RenderOptions options = {}) {

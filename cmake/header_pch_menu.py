@@ -47,14 +47,28 @@ def lines_without_comments(path):
 class Tree:
     def __init__(self, root):
         self.root = os.path.realpath(root)
-        self.files = []
-        for d, dirs, names in os.walk(self.root):
-            if "CMakeCache.txt" in names:  # a build tree inside the sources holds no header of ours
-                dirs[:] = []
-                continue
-            dirs[:] = [x for x in dirs if not x.startswith(".")]
-            self.files += [os.path.join(d, n) for n in names]
+        self.files = self.tracked()
+        if self.files is None:  # not a git checkout: every file, less build trees
+            self.files = []
+            for d, dirs, names in os.walk(self.root):
+                if "CMakeCache.txt" in names:
+                    dirs[:] = []
+                    continue
+                dirs[:] = [x for x in dirs if not x.startswith(".")]
+                self.files += [os.path.join(d, n) for n in names]
         self.memo = {}
+
+    def tracked(self):
+        """The checkout's files, new ones included, less what .gitignore leaves out (build
+        trees, out/ and the copies of the sources the mutation loop keeps there)."""
+        try:
+            r = subprocess.run(["git", "-C", self.root, "ls-files", "-z", "--cached", "--others",
+                                "--exclude-standard"], capture_output=True)
+        except OSError:
+            return None
+        if r.returncode != 0:
+            return None
+        return [os.path.join(self.root, f) for f in r.stdout.decode().split("\0") if f]
 
     def in_tree(self, name):
         return [f for f in self.files if f.endswith("/" + name)]

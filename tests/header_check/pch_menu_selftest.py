@@ -4,6 +4,8 @@ header may only be given a PCH of names its own compile would include anyway, or
 stops being exact; these build small trees where that rule has a way to go wrong.
 Usage: pch_menu_selftest.py CXX. Exit 0 pass, 1 fail."""
 
+import atexit
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -26,6 +28,7 @@ def check(ok, what):
 
 def tree(files):
     root = Path(tempfile.mkdtemp(prefix="pch-menu-"))
+    atexit.register(shutil.rmtree, root, ignore_errors=True)
     for name, text in files.items():
         (root / name).parent.mkdir(parents=True, exist_ok=True)
         (root / name).write_text("#pragma once\n" + text if name.endswith(".h") else text)
@@ -63,6 +66,14 @@ check(reach("a/expands.h") == {"vector"}, f"a list expanded inside code is allow
 check(reach("a/twice.h") is None, "a quoted name two files could be: no PCH")
 check(reach("a/angled_ours.h") is None, "an angled name the tree holds: no PCH")
 check(reach("a/commented.h") == {"vector"}, f"comments are not code: {reach('a/commented.h')}")
+
+# In a git checkout, what .gitignore leaves out (a copy of the sources under out/) does not
+# make a name ambiguous; untracked new headers still count.
+root = tree({"a/user.h": '#include "base.h"\n', "b/base.h": "#include <vector>\n",
+             "out/copy/b/base.h": "#include <map>\n", ".gitignore": "out/\n"})
+subprocess.run(["git", "init", "-q", str(root)], check=True)
+t = menu.Tree(str(root))
+check(t.external(str(root / "a/user.h")) == {"vector"}, "ignored files are not the tree's")
 
 # The whole script: every PCH's names lie within what each of its headers reaches.
 cxx = sys.argv[1] if len(sys.argv) > 1 else "c++"

@@ -10,7 +10,7 @@
 namespace taa {
 namespace {
 
-const char* kMoving = R"({
+const char* kDeterminismMoving = R"({
   "scene": {"builtin": "rough_floor"},
   "camera": {"strafe": {"speed": 1.5, "distance": 0.5}, "rotate": {"yaw_deg_per_s": 10}},
   "movers": [{"shape": "sphere", "start": [-1.5, 0.5, 1], "end": [1.5, 0.5, 1], "speed": 2}],
@@ -26,7 +26,7 @@ std::vector<std::string> hashes(const std::vector<FrameRecord>& frames) {
 }
 
 TEST(Determinism, TwoRendersInOneProcessAreIdentical) {
-  const auto spec = test::caseFromJson(kMoving, "determinism");
+  const auto spec = test::caseFromJson(kDeterminismMoving, "determinism");
   const auto a = hashes(test::renderCase(spec));
   const auto b = hashes(test::renderCase(spec));
   ASSERT_EQ(a.size(), 2u);

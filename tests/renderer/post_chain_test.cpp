@@ -20,7 +20,7 @@ namespace taa {
 namespace {
 
 // A strafing camera and a fast mover: motion for the blur, edges for the rest.
-const char* kBase = R"({
+const char* kPostChainBase = R"({
   "scene": {"builtin": "checkerboard"},
   "render": {"width": 160, "height": 90 %s},
   "camera": {"strafe": {"speed": 3.0, "distance": 1.0}},
@@ -32,7 +32,7 @@ const char* kBase = R"({
 
 spec::CaseSpec makeCase(const std::string& extra, const std::string& render = "") {
   char buf[2048];
-  std::snprintf(buf, sizeof(buf), kBase, render.c_str(),
+  std::snprintf(buf, sizeof(buf), kPostChainBase, render.c_str(),
                 extra.empty() ? "" : (", " + extra).c_str());
   return test::caseFromJson(buf, "post_chain");
 }

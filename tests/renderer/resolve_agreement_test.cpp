@@ -69,7 +69,7 @@ Image inputScale(const Image& current, const Image& history) {
   return m;
 }
 
-struct Agreement {
+struct ResolverAgreement {
   double maxRelative = 0.0;     // max |gpu - cpu| / max(|cpu|, 1e-3)
   double maxOfScale = 0.0;      // max |gpu - cpu| / M
   int maxHalfUlps = 0;          // RGBA16F: the largest distance in half ulps
@@ -78,7 +78,7 @@ struct Agreement {
   int differing = 0;            // channels not bit-identical
   int channels = 0;
 
-  void add(const Agreement& o) {
+  void add(const ResolverAgreement& o) {
     maxRelative = std::max(maxRelative, o.maxRelative);
     maxOfScale = std::max(maxOfScale, o.maxOfScale);
     maxHalfUlps = std::max(maxHalfUlps, o.maxHalfUlps);
@@ -97,8 +97,8 @@ struct Comparison {
 };
 
 // `cpuOut` is the mirror's float result, rounded here as the history format stores it.
-Agreement compare(const Image& gpuOut, const Image& cpuOut, const Comparison& k) {
-  Agreement a;
+ResolverAgreement compare(const Image& gpuOut, const Image& cpuOut, const Comparison& k) {
+  ResolverAgreement a;
   for (int y = 0; y < cpuOut.height; ++y)
     for (int x = 0; x < cpuOut.width; ++x) {
       const double lumaCpu = luminance(cpuOut, x, y);
@@ -158,7 +158,7 @@ void checkAgreement(const Mutate& technique, const Mutate& control,
     spec.taa.history_format = half ? spec::HistoryFormat::Rgba16f : spec::HistoryFormat::Rgba32f;
     spec::TaaSpec controlSpec = spec.taa;
     control(controlSpec);
-    Agreement total, controlTotal;
+    ResolverAgreement total, controlTotal;
     for (size_t v = 0; v < velocities.size(); ++v) {
       test::SyntheticResolve in;
       in.current = hdrNoise(0x1234u + uint32_t(v));
@@ -194,7 +194,7 @@ using spec::ToneWeight;
 
 const Mutate kRgb = [](spec::TaaSpec& t) { t.color_space = ColorSpace::Rgb; };
 const Mutate kNoRectify = [](spec::TaaSpec& t) { t.rectify = Rectify::None; };
-const Mutate kBilinear = [](spec::TaaSpec& t) { t.history_filter = HistoryFilter::Bilinear; };
+const Mutate kBilinearFilter = [](spec::TaaSpec& t) { t.history_filter = HistoryFilter::Bilinear; };
 const Mutate kNoToneWeight = [](spec::TaaSpec& t) { t.tonemap_weighting = ToneWeight::None; };
 
 TEST(ResolveAgreement, ClampRgb) {
@@ -261,12 +261,12 @@ TEST(ResolveAgreement, Bilinear) {
 }
 
 TEST(ResolveAgreement, BSpline) {
-  checkAgreement([](spec::TaaSpec& t) { t.history_filter = HistoryFilter::BSpline; }, kBilinear,
+  checkAgreement([](spec::TaaSpec& t) { t.history_filter = HistoryFilter::BSpline; }, kBilinearFilter,
                  kPhases);
 }
 
 TEST(ResolveAgreement, CatmullRom9) {
-  checkAgreement([](spec::TaaSpec& t) { t.history_filter = HistoryFilter::CatmullRom9; }, kBilinear,
+  checkAgreement([](spec::TaaSpec& t) { t.history_filter = HistoryFilter::CatmullRom9; }, kBilinearFilter,
                  kPhases);
 }
 
@@ -277,7 +277,7 @@ TEST(ResolveAgreement, CatmullRom5) {
 
 TEST(ResolveAgreement, CatmullRom16) {
   checkAgreement([](spec::TaaSpec& t) { t.history_filter = HistoryFilter::CatmullRom16; },
-                 kBilinear, kPhases);
+                 kBilinearFilter, kPhases);
 }
 
 TEST(ResolveAgreement, KarisToneWeighting) {

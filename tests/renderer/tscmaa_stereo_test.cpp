@@ -11,7 +11,7 @@ namespace taa {
 namespace {
 
 // A 1 x 1 quad at z = 0 seen head-on from 4 units away.
-const char* kQuad =
+const char* kStereoQuad =
     R"("scene": {"builtin": "quad"}, "script": {"frames": 3}, "jitter": {"pattern": "none"},
   "camera": {"position": [0, 0, 4], "target": [0, 0, 0]})";
 
@@ -32,7 +32,7 @@ double quadCentre(const Image& img, int eyeOffset, int eyeWidth, int y) {
 
 TEST(TscmaaStereo, EyesSitSideBySideApartByTheParallax) {
   const float separation = 0.5f, distance = 4.0f;
-  const auto spec = tscmaatest::tscmaaCase(R"("eyes": 2, "eye_separation": 0.5)", kQuad, 320, 180);
+  const auto spec = tscmaatest::tscmaaCase(R"("eyes": 2, "eye_separation": 0.5)", kStereoQuad, 320, 180);
   const auto frames = tscmaatest::renderAll(spec);
   const Image& out = frames.back().color;
   ASSERT_EQ(out.width, 640);

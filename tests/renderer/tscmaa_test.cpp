@@ -16,7 +16,7 @@ using tscmaatest::counter;
 using tscmaatest::samePixel;
 
 // A strafing camera over the fence: history moves, many thin edges.
-const char* kMoving = R"("scene": {"builtin": "fence"}, "script": {"frames": 6},
+const char* kTscmaaMoving = R"("scene": {"builtin": "fence"}, "script": {"frames": 6},
   "camera": {"strafe": {"speed": 0.6, "distance": 0.4}})";
 
 RenderOptions captures() {
@@ -30,7 +30,7 @@ uint32_t bits(const Image& mask, int x, int y) {
 }
 
 TEST(TscmaaGpu, PixelsOutsideTheTaaShareEqualTheCmaaOutput) {
-  const auto frames = tscmaatest::renderAll(tscmaatest::tscmaaCase("", kMoving), captures());
+  const auto frames = tscmaatest::renderAll(tscmaatest::tscmaaCase("", kTscmaaMoving), captures());
   int taaChanged = 0;
   for (const auto& r : frames) {
     const Image &mask = aux(r, "tscmaa_mask"), &cmaa = aux(r, "cmaa");
@@ -48,16 +48,16 @@ TEST(TscmaaGpu, PixelsOutsideTheTaaShareEqualTheCmaaOutput) {
 
 TEST(TscmaaGpu, TaaShareZeroGivesTheCmaaImage) {
   for (const auto& r :
-       tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("taa_share": 0)", kMoving), captures())) {
+       tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("taa_share": 0)", kTscmaaMoving), captures())) {
     EXPECT_EQ(counter(r, "tscmaa_taa_pixels"), 0.0);
     EXPECT_TRUE(posttest::sameBits(r.color, aux(r, "cmaa"))) << r.frame;
   }
 }
 
 TEST(TscmaaGpu, HistoryWeightChangesOnlyTaaPixels) {
-  const auto a = tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("history_weight": 0.8)", kMoving),
+  const auto a = tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("history_weight": 0.8)", kTscmaaMoving),
                                        captures());
-  const auto b = tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("history_weight": 0.3)", kMoving),
+  const auto b = tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("history_weight": 0.3)", kTscmaaMoving),
                                        captures());
   int differing = 0;
   for (size_t f = 0; f < a.size(); ++f) {
@@ -73,7 +73,7 @@ TEST(TscmaaGpu, HistoryWeightChangesOnlyTaaPixels) {
 }
 
 double edgesWith(const std::string& knobs) {
-  const auto frames = tscmaatest::renderAll(tscmaatest::tscmaaCase(knobs, kMoving));
+  const auto frames = tscmaatest::renderAll(tscmaatest::tscmaaCase(knobs, kTscmaaMoving));
   return counter(frames.back(), "tscmaa_edges");
 }
 
@@ -93,7 +93,7 @@ TEST(TscmaaGpu, StrongerNonDominantRemovalFindsFewerEdges) {
   EXPECT_GT(some, most);
 }
 
-std::vector<std::string> renderedHashes(const std::string& env) {
+std::vector<std::string> tscmaaHashes(const std::string& env) {
   const std::string out =
       std::string(TAA_TEST_OUT) + "/tscmaa-determinism-" + env.substr(env.find('=') + 1);
   const auto r = test::runHarness(
@@ -108,8 +108,8 @@ std::vector<std::string> renderedHashes(const std::string& env) {
 
 // The edge lists fill in thread-scheduling order; nothing may depend on that order.
 TEST(TscmaaGpu, OneAndTwoLavapipeThreadsGiveIdenticalFrames) {
-  const auto one = renderedHashes("LP_NUM_THREADS=1");
-  const auto two = renderedHashes("LP_NUM_THREADS=2");
+  const auto one = tscmaaHashes("LP_NUM_THREADS=1");
+  const auto two = tscmaaHashes("LP_NUM_THREADS=2");
   ASSERT_FALSE(one.empty());
   EXPECT_EQ(one, two);
 }

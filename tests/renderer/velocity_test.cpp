@@ -13,7 +13,7 @@
 namespace taa {
 namespace {
 
-struct Checked {
+struct VelocityChecked {
   int pixels = 0;
   double worst = 0.0;      // largest |measured - analytic| in pixels
   double maxMotion = 0.0;  // largest analytic motion: the test must see real motion
@@ -21,7 +21,7 @@ struct Checked {
 
 // Compares every pixel of `frame` against the analytic motion; sky pixels use the
 // view direction alone (rotation only).
-Checked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
+VelocityChecked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
   const auto s = script::frameState(spec, r.frame);
   const Image& depth = test::auxImage(r, "depth");
   const Image& velocity = test::capturedImage(r, Capture::Velocity);
@@ -29,7 +29,7 @@ Checked checkVelocity(const spec::CaseSpec& spec, const FrameRecord& r) {
   const glm::dmat4 inv = glm::inverse(glm::dmat4(s.camera.viewProjection));
   const glm::dmat4 prevVp(s.prevCamera.viewProjection);
   const glm::dvec2 size(s.renderSize);
-  Checked out;
+  VelocityChecked out;
   for (int y = 0; y < depth.height; y += 3)
     for (int x = 0; x < depth.width; x += 3) {
       const glm::dvec2 pixel(x + 0.5, y + 0.5);

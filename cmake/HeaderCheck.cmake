@@ -59,7 +59,7 @@ function(taa_check_headers name)
   endif()
   execute_process(
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/cmake/header_pch_menu.py --root ${CMAKE_SOURCE_DIR}
-            --compiler ${CMAKE_CXX_COMPILER} --flag=-std=c++${CMAKE_CXX_STANDARD}
+            --compiler ${CMAKE_CXX_COMPILER} --compiler-id ${CMAKE_CXX_COMPILER_ID} --flag=-std=c++${CMAKE_CXX_STANDARD}
             --cache ${CMAKE_BINARY_DIR}/header_check/pch_weights.json ${checked}
     OUTPUT_VARIABLE menu ERROR_VARIABLE menu_error RESULT_VARIABLE menu_status)
   if(NOT menu_status EQUAL 0)

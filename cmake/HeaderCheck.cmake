@@ -16,8 +16,9 @@ endif()
 # folders and definitions, with the usage requirements of LIBS (what LIKE links). Generated
 # units live in the build folder; nothing is written to the tree.
 #
-# Most of a header's CPU alone is the standard and third-party headers it includes, parsed
-# again for each of ours. cmake/header_pch_menu.py picks a few precompiled headers of them,
+# Most of a header's CPU alone is the standard, third-party and shared headers of ours it
+# includes, parsed again for each header. cmake/header_pch_menu.py picks a few precompiled
+# headers of them, priced for the compiler (clang loads one for far less than GCC does),
 # each given only to headers that include all of its names themselves, so the check stays
 # exact (the script says why); each PCH's units are one object library.
 function(taa_check_headers name)
@@ -90,9 +91,9 @@ function(taa_check_headers name)
     # Parsing is the check; no code generation is needed (the units define nothing).
     target_compile_options(${target} PRIVATE -O0 -g0)
     if(names)
+      # Angled names as written; our own headers come as absolute paths.
       string(REPLACE "," ";" names "${names}")
-      list(TRANSFORM names PREPEND "<")
-      list(TRANSFORM names APPEND ">")
+      list(TRANSFORM names REPLACE "^([^/].*)$" "<\\1>")
       target_precompile_headers(${target} PRIVATE ${names})
     endif()
     add_dependencies(taa_header_check ${target})

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Chooses precompiled headers for the header check (cmake/HeaderCheck.cmake).
 
-Each header of ours is compiled alone. Most of that CPU parses the same standard and
-third-party headers again and again, so headers that share them may start from a
-precompiled header (PCH) of them, as long as the check stays exact:
+Each header of ours is compiled alone. Most of that CPU parses the same standard,
+third-party and widely included headers of ours again and again, so headers that share them
+may start from a precompiled header (PCH) of them, as long as the check stays exact:
 
 - A header H may use a PCH only of names it includes itself, directly or through our
   headers, unconditionally (outside any #if): its compile alone would include every one of
-  them anyway, so the PCH adds nothing H would not see.
+  them anyway, so the PCH adds nothing H would not see. Our own headers among them are
+  named by absolute path; each is checked by its own unit, whose PCH never holds it.
 - The names arrive earlier than in H's compile alone. That can only hide a header X that
   uses a name before it includes it; every header's own check catches X's mistake, provided
   X's includes come before its code. A header with an #include after code (or a #define
@@ -16,7 +17,8 @@ precompiled header (PCH) of them, as long as the check stays exact:
   tree holds, is not followed: the header gets no PCH.
 
 Which PCHs to build is a trade: each costs one compile and a load per use. A greedy choice
-by the bytes each name pulls in (from the compiler's -M list) picks up to --max of them.
+by the bytes each name pulls in (from the compiler's -M list; one of ours weighs its own
+bytes) picks up to --max of them.
 The choice changes no verdict, only how fast it comes.
 
 Usage: header_pch_menu.py --root DIR --compiler CXX [--flag F]... --cache FILE HEADER...
@@ -84,8 +86,11 @@ class Tree:
         return os.path.realpath(found[0]) if len(found) == 1 else None
 
     def external(self, path):
-        """The angled names `path` reaches unconditionally through our headers, or None when
-        the header cannot take a PCH (an include after code, a name not resolved alone)."""
+        """The names `path` reaches unconditionally through our headers, or None when the
+        header cannot take a PCH (an include after code, a name not resolved alone): angled
+        names as written, and our own headers (with #pragma once) as absolute paths. Each of
+        ours is checked alone by its own unit, which never lists itself, so having it in an
+        includer's PCH hides nothing."""
         if path in self.memo:
             return self.memo[path]
         self.memo[path] = None  # an include cycle gets no PCH
@@ -112,10 +117,16 @@ class Tree:
                     if inner is None:
                         return None
                     names |= inner
+                    if self.once(target):
+                        names.add(target)
             elif not NOT_CODE.match(line):
                 code = True
         self.memo[path] = frozenset(names)
         return self.memo[path]
+
+    @staticmethod
+    def once(path):
+        return any(re.match(r"\s*#\s*pragma\s+once", l) for l in lines_without_comments(path))
 
     def is_list(self, m, includer):
         """A quoted list without #pragma once and without includes, expanded inside code."""
@@ -139,7 +150,7 @@ def weights(names, compiler, flags, cache_path):
     key = compiler + " " + " ".join(flags)
     files = cache.setdefault(key, {})
     for name in sorted(names):
-        if name not in files:
+        if not os.path.isabs(name) and name not in files:
             r = subprocess.run([compiler, *flags, "-M", "-x", "c++", "-"], input=f"#include <{name}>\n",
                                capture_output=True, text=True)
             deps = r.stdout.replace("\\\n", " ").split()[1:] if r.returncode == 0 else []
@@ -153,7 +164,8 @@ def weights(names, compiler, flags, cache_path):
     def cost(group):
         union = set()
         for n in group:
-            union.update(files[n])
+            # One of ours weighs its own bytes: the names it reaches are in the group too.
+            union.update([n] if os.path.isabs(n) else files[n])
         return sum(sizes.setdefault(f, os.path.getsize(f)) for f in union if os.path.exists(f))
     return cost
 

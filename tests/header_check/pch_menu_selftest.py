@@ -50,6 +50,8 @@ root = tree({
     "c/dup.h": "#include <string>\n",
     "a/angled_ours.h": "#include <a/base.h>\n",
     "a/commented.h": "/* a comment\n   over lines */\n// another\n#include <vector>\n",
+    "a/plain.inc": "#include <set>\n",
+    "a/uses_plain.h": '#include "plain.inc"\n',
 })
 t = menu.Tree(str(root))
 
@@ -58,7 +60,14 @@ def reach(name):
     return t.external(str((root / name).resolve()))
 
 
-check(reach("a/user.h") == {"vector", "string", "map"}, f"user.h reaches base.h's names: {reach('a/user.h')}")
+
+def ours(name):
+    return str((root / name).resolve())
+
+
+check(reach("a/user.h") == {"vector", "string", "map", ours("a/base.h")},
+      f"user.h reaches base.h and its names: {reach('a/user.h')}")
+check(reach("a/uses_plain.h") == {"set"}, f"only our headers with #pragma once are names: {reach('a/uses_plain.h')}")
 check(reach("a/cond.h") == {"vector"}, f"a name inside #if is not counted: {reach('a/cond.h')}")
 check(reach("a/late.h") is None, "an include after code: no PCH")
 check(reach("a/define_first.h") is None, "a #define before an include: no PCH")
@@ -73,7 +82,8 @@ root = tree({"a/user.h": '#include "base.h"\n', "b/base.h": "#include <vector>\n
              "out/copy/b/base.h": "#include <map>\n", ".gitignore": "out/\n"})
 subprocess.run(["git", "init", "-q", str(root)], check=True)
 t = menu.Tree(str(root))
-check(t.external(str(root / "a/user.h")) == {"vector"}, "ignored files are not the tree's")
+check(t.external(str(root / "a/user.h")) == {"vector", str((root / "b/base.h").resolve())},
+      "ignored files are not the tree's")
 
 # The whole script: every PCH's names lie within what each of its headers reaches.
 cxx = sys.argv[1] if len(sys.argv) > 1 else "c++"
@@ -81,6 +91,9 @@ many = {f"m/h{i}.h": "#include <vector>\n#include <string>\n#include <map>\n" + 
         for i in range(8)}
 # Two headers share only <vector>: worth a PCH where its load is cheap (clang), not under GCC.
 many.update({f"m/v{i}.h": "#include <vector>\n" for i in range(2)})
+# Headers of ours that include a large one of ours: it may be in their PCH, never in its own.
+many["m/big.h"] = "#include <vector>\n" + "".join(f"int big{i}(int);\n" for i in range(100000))
+many.update({f"m/u{i}.h": '#include "big.h"\n' for i in range(4)})
 many["m/late.h"] = "#include <vector>\nint g();\n#include <string>\n#include <map>\n"
 root = tree(many)
 headers = sorted(str(p) for p in root.glob("m/*.h"))
@@ -104,6 +117,7 @@ def menu_for(compiler_id):
     for h, names in given.items():
         check(names <= (t.external(h) or set()),
               f"{compiler_id}: {Path(h).name}: PCH {sorted(names)} within what it reaches")
+        check(str(Path(h).resolve()) not in names, f"{compiler_id}: {Path(h).name} is not in its own PCH")
     check(given.get(str(root / "m/late.h")) == set(), f"{compiler_id}: the header with a late include gets none")
     return given
 
@@ -111,6 +125,7 @@ def menu_for(compiler_id):
 # Clang loads a PCH for a fraction of what GCC pays, so the choice may differ, never the rule.
 gnu, clang = menu_for("GNU"), menu_for("Clang")
 check(menu_for("Intel") == gnu, "a compiler without costs of its own is priced as GCC")
+check(any(ours("m/big.h") in names for names in clang.values()), f"a header of ours is precompiled: {clang}")
 check(sum(map(len, clang.values())) > sum(map(len, gnu.values())),
       f"a cheaper load precompiles more: GNU {gnu}, Clang {clang}")
 

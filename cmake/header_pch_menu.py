@@ -21,7 +21,8 @@ by the bytes each name pulls in (from the compiler's -M list; one of ours weighs
 bytes) picks up to --max of them.
 The choice changes no verdict, only how fast it comes.
 
-Usage: header_pch_menu.py --root DIR --compiler CXX [--flag F]... --cache FILE HEADER...
+Usage: header_pch_menu.py --root DIR --compiler CXX [--compiler-id ID] [--flag F]... --cache FILE
+                          [--max N] HEADER...
 Prints one line per PCH, "name,name,...|header,header,...", then the headers that get none
 as a line starting with "|" (commas, not CMake's semicolons, so each line is one list item).
 """

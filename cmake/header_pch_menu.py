@@ -27,6 +27,7 @@ Prints one line per PCH, "name,name,...|header,header,...", then the headers tha
 as a line starting with "|" (commas, not CMake's semicolons, so each line is one list item).
 """
 import argparse
+import functools
 import json
 import os
 import re
@@ -43,6 +44,7 @@ NOT_CODE = re.compile(r'\s*#\s*(include|pragma|if|ifdef|ifndef|elif|else|endif)\
 COSTS = {"GNU": (0.35, 2.3), "Clang": (0.08, 1.4)}
 
 
+@functools.lru_cache(maxsize=None)
 def lines_without_comments(path):
     """The file's lines with comments blanked, so code is told apart from prose."""
     text = open(path, encoding="utf-8", errors="replace").read()
@@ -127,7 +129,8 @@ class Tree:
 
     @staticmethod
     def once(path):
-        return any(re.match(r"\s*#\s*pragma\s+once", l) for l in lines_without_comments(path))
+        """Whether cmake/HeaderCheck.cmake checks `path` alone: the same test it makes."""
+        return any(l.startswith("#pragma once") for l in lines_without_comments(path))
 
     def is_list(self, m, includer):
         """A quoted list without #pragma once and without includes, expanded inside code."""
@@ -137,7 +140,7 @@ class Tree:
         if not target:
             return False
         body = lines_without_comments(target)
-        return not any(re.match(r"\s*#\s*pragma\s+once", l) or INCLUDE.match(l) for l in body)
+        return not self.once(target) and not any(INCLUDE.match(l) for l in body)
 
 
 def weights(names, compiler, flags, cache_path):

@@ -162,6 +162,54 @@ void initGlslangOnce() {
   (void)done;
 }
 
+// What every compile of a language tells glslang besides its text, the one warm-up included.
+void configureShader(glslang::TShader& shader, const CompileOptions& o) {
+  if (o.language == ShaderLanguage::Hlsl) {
+    shader.setEnvInput(glslang::EShSourceHlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    // The SPIR-V keeps the name: glslang given only a source entry point falls back on a
+    // function called main, or renames the entry onto one, without a word.
+    shader.setEntryPoint(o.entry.c_str());
+    shader.setSourceEntryPoint(o.entry.c_str());
+  } else {
+    // The include extension is on for every user shader, as it is for the built-in ones.
+    shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
+    shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+  }
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+}
+
+EShMessages messagesFor(ShaderLanguage l) {
+  return EShMessages(EShMsgSpvRules | EShMsgVulkanRules |
+                     (l == ShaderLanguage::Hlsl ? EShMsgReadHlsl : EShMsgDefault));
+}
+
+int versionFor(ShaderLanguage l) { return l == ShaderLanguage::Hlsl ? 100 : 450; }
+
+// glslang parses the declarations of every built-in function into shared tables on a process's
+// first compile of a language and version: most of a small shader's compile (about 0.15 s of
+// CPU). Every compile runs in a child forked for it, which would build them again and die with
+// them. A fixed shader of ours, compiled here in the parent once per language, builds them
+// before the first fork, and every child inherits them (a user's shader that declares another
+// #version still builds its own in its child). The warm-up's result is not used: only the
+// tables it leaves behind.
+void warmBuiltinsOnce(ShaderLanguage language) {
+  static std::once_flag glsl, hlsl;
+  const bool isHlsl = language == ShaderLanguage::Hlsl;
+  std::call_once(isHlsl ? hlsl : glsl, [&] {
+    initGlslangOnce();
+    CompileOptions o;
+    o.language = language;
+    o.entry = "main";
+    const char* text = isHlsl ? "[numthreads(1, 1, 1)] void main() {}\n"
+                              : "#version 450\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
+    glslang::TShader shader(EShLangCompute);
+    shader.setStrings(&text, 1);
+    configureShader(shader, o);
+    shader.parse(GetDefaultResources(), versionFor(language), false, messagesFor(language));
+  });
+}
+
 // glslang's log, less its "ERROR: " prefixes, the trailing "N compilation errors" line and
 // lines containing `drop`, so each line starts with the user's file and line.
 std::string cleanLog(const std::string& log, const std::string& drop = "") {
@@ -222,23 +270,10 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
   const char* names[] = {name.c_str()};
   auto configure = [&](glslang::TShader& shader) {
     shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-    if (hlsl) {
-      shader.setEnvInput(glslang::EShSourceHlsl, EShLangCompute, glslang::EShClientVulkan, 100);
-      // The SPIR-V keeps the name: glslang given only a source entry point falls back on a
-      // function called main, or renames the entry onto one, without a word.
-      shader.setEntryPoint(o.entry.c_str());
-      shader.setSourceEntryPoint(o.entry.c_str());
-    } else {
-      // The include extension is on for every user shader, as it is for the built-in ones.
-      shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
-      shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
-    }
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+    configureShader(shader, o);
   };
-  const auto messages =
-      EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : EShMsgDefault));
-  const int version = hlsl ? 100 : 450;
+  const auto messages = messagesFor(o.language);
+  const int version = versionFor(o.language);
   auto fail = [](const UserIncluder& includer, const std::string& log) {
     // After the includer refused, glslang repeats "Could not process include directive" for
     // every include it still meets: the includer's one reason says it.
@@ -298,6 +333,7 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
 // memory or never finish is refused naming the bound, and the harness carries on.
 GlslangOutput runGlslang(const fs::path& source, const std::string& text, const fs::path& root,
                          const fs::path& headerDir, const CompileOptions& options) {
+  warmBuiltinsOnce(options.language);
   const SandboxLimits limits = compileLimits();
   const SandboxOutcome o = runSandboxed(
       [&] { return glslangInChild(source, text, root, headerDir, options); }, limits);

@@ -44,6 +44,17 @@ GltfDeform readGltfDeform(const fs::path& file, const tinygltf::Model& g,
                                "needs both, re-export it");
   if (j != prim.attributes.end()) {
     d.joints = read(j->second, "JOINTS_0", 4);
+    // Joint indices are whole and unsigned only in these types (glTF 2.0, 3.7.3.1): another
+    // type gives negative, fractional or huge floats, which no joint index can hold.
+    const tinygltf::Accessor& a = g.accessors[size_t(j->second)];
+    if ((a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) ||
+        a.normalized)
+      throw SceneError(file, what + " JOINTS_0 (accessors[" + std::to_string(j->second) +
+                                 "]) has componentType " + std::to_string(a.componentType) +
+                                 (a.normalized ? ", normalized" : "") +
+                                 "; joint indices are unsigned bytes (5121) or unsigned shorts "
+                                 "(5123), not normalized: re-export it");
     d.weights = read(w->second, "WEIGHTS_0", 4);
   }
   return d;

@@ -3,7 +3,10 @@
 // and three Khronos sample models (cases/scenes/khronos/).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include "frame/draw_list.h"
 #include "invariants/invariant_support.h"
@@ -69,6 +72,35 @@ TEST(GltfDeform, SeveralSkinsEachPoseTheirOwnDraw) {
     expectNearGltfDeform(first[i].position, rest + glm::vec3(0.0f, bend * 0.8f * float(t), 0.0f));
     // The second skin's joints both ride the slider (x += t); the lifter sinks 0.4 t.
     expectNearGltfDeform(second[i].position, rest + glm::vec3(float(t), -bend * 0.4f * float(t), 0.0f));
+  }
+}
+
+// A fuzzer's find: JOINTS_0 as signed bytes gave a joint index of -64, converted to an unsigned
+// index (undefined). Joint indices must be unsigned bytes or shorts, not normalized.
+TEST(GltfDeform, JointIndicesOfAnotherTypeAreRefusedByName) {
+  std::ifstream in(assetPath("skinned_quad.gltf"));
+  const nlohmann::json original = nlohmann::json::parse(in);
+  const int joints = original["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"];
+  for (const auto& [type, normalized] : {std::pair{5120, false}, {5121, true}}) {
+    nlohmann::json g = original;
+    g["accessors"][size_t(joints)]["componentType"] = type;
+    if (normalized) g["accessors"][size_t(joints)]["normalized"] = true;
+    const auto file = std::filesystem::path(TAA_TEST_OUT) / "gltf-joints" /
+                      ("joints_" + std::to_string(type) + (normalized ? "_normalized" : "") + ".gltf");
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream(file) << g.dump();
+    Scene s;
+    try {
+      loadGltf(file, s);
+      ADD_FAILURE() << file << " loaded";
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("JOINTS_0 (accessors[" + std::to_string(joints) + "]) has componentType " +
+                         std::to_string(type)),
+                std::string::npos)
+          << msg;
+      EXPECT_EQ(msg.find("normalized;") != std::string::npos, normalized) << msg;
+    }
   }
 }
 

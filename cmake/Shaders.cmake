@@ -3,10 +3,39 @@
 # shaders/ changes. The renderer finds SPIR-V by name at run time.
 set(TAA_SHADER_OUT ${CMAKE_BINARY_DIR}/shaders)
 
+# TAA_SPIRV_FROM: another build tree of this source tree, whose SPIR-V this tree copies instead of
+# compiling it again. CI's sanitizer tree takes the GCC tree's (69 files, about 33 s of CPU):
+# glslang's output does not depend on the C++ compiler. A copy older than its shader or than any
+# shader header fails the build, naming the tree to build first.
+set(TAA_SPIRV_FROM "" CACHE PATH "Build tree of this source tree whose SPIR-V is copied, not compiled")
+if(TAA_SPIRV_FROM)
+  set(from_cache ${TAA_SPIRV_FROM}/CMakeCache.txt)
+  set(from_home)
+  if(EXISTS ${from_cache})
+    file(STRINGS ${from_cache} from_home REGEX "^CMAKE_HOME_DIRECTORY:INTERNAL=")
+  endif()
+  if(NOT from_home STREQUAL "CMAKE_HOME_DIRECTORY:INTERNAL=${CMAKE_SOURCE_DIR}")
+    message(FATAL_ERROR "TAA_SPIRV_FROM=${TAA_SPIRV_FROM} is not a build tree of ${CMAKE_SOURCE_DIR} "
+                        "(its CMakeCache.txt names another source tree, or it has none); give a tree "
+                        "configured from this one, or leave TAA_SPIRV_FROM empty to compile the SPIR-V")
+  endif()
+endif()
+
 function(taa_compile_shader src out defines)
   file(GLOB_RECURSE headers CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/*.glsl
        ${CMAKE_SOURCE_DIR}/shaders/*.h)
   get_filename_component(name ${out} NAME)
+  if(TAA_SPIRV_FROM)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND ${CMAKE_COMMAND} -DFROM=${TAA_SPIRV_FROM}/shaders/${name} -DTO=${out}
+              "-DSOURCES=${CMAKE_CURRENT_SOURCE_DIR}/${src};${headers}"
+              -P ${CMAKE_SOURCE_DIR}/cmake/copy_spirv.cmake
+      DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src} ${headers} ${CMAKE_SOURCE_DIR}/cmake/copy_spirv.cmake
+      COMMENT "SPIR-V ${name} from ${TAA_SPIRV_FROM}"
+      VERBATIM)
+    return()
+  endif()
   # vulkan1.2 target: vulkan1.3 would emit LocalSizeId, which needs maintenance4.
   add_custom_command(
     OUTPUT ${out}

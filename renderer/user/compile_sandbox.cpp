@@ -156,8 +156,10 @@ void sandboxCpuBudget(int seconds, const std::string& result) {
   sandboxSetCpuLimit(std::min<long>(sandboxCpuSpent() + seconds, gSandboxCpuSeconds));
 }
 
-SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits) {
+SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits,
+                            const std::function<void()>& inParent) {
   std::lock_guard<std::mutex> lock(sandboxMutex());
+  if (inParent) inParent();
   SandboxOutcome out;
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) {

@@ -29,8 +29,11 @@ struct SandboxOutcome {
 
 // Calls `work` in a child process under `limits` and returns what it returned. An exception
 // `work` lets out of it is reported as Crashed, std::bad_alloc as OverMemory. Calls are
-// serialised: the child is forked while no other sandbox runs.
-SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits);
+// serialised: the child is forked while no other sandbox runs. `inParent`, when given, runs in
+// this process first, under the same lock: state the child inherits (glslang's built-in tables)
+// is then never half made by one thread while another forks its copy.
+SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits,
+                            const std::function<void()>& inParent = {});
 
 // Inside `work` only: from now on the child may use `seconds` more of CPU; past them it ends
 // at once as if `work` had returned `result` (a phase of the work with a tighter budget than

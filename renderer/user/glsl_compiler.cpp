@@ -192,7 +192,9 @@ int versionFor(ShaderLanguage l) { return l == ShaderLanguage::Hlsl ? 100 : 450;
 // them. A fixed shader of ours, compiled here in the parent once per language, builds them
 // before the first fork, and every child inherits them (a user's shader that declares another
 // #version still builds its own in its child). The warm-up's result is not used: only the
-// tables it leaves behind.
+// tables it leaves behind. It runs under the sandbox's lock (runSandboxed's inParent): a worker
+// forking while another was inside glslang here would give its child glslang's lock, held by a
+// thread the child does not have.
 void warmBuiltinsOnce(ShaderLanguage language) {
   static std::once_flag glsl, hlsl;
   const bool isHlsl = language == ShaderLanguage::Hlsl;
@@ -333,10 +335,10 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
 // memory or never finish is refused naming the bound, and the harness carries on.
 GlslangOutput runGlslang(const fs::path& source, const std::string& text, const fs::path& root,
                          const fs::path& headerDir, const CompileOptions& options) {
-  warmBuiltinsOnce(options.language);
   const SandboxLimits limits = compileLimits();
   const SandboxOutcome o = runSandboxed(
-      [&] { return glslangInChild(source, text, root, headerDir, options); }, limits);
+      [&] { return glslangInChild(source, text, root, headerDir, options); }, limits,
+      [&] { warmBuiltinsOnce(options.language); });
   if (o.end == SandboxEnd::Unavailable)
     throw EnvironmentError("cannot start the shader compiler's child process: " + o.detail);
   if (o.end != SandboxEnd::Done || o.output.empty())

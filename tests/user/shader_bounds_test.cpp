@@ -298,5 +298,22 @@ TEST(CompileSandbox, ReportsHowTheChildEnded) {
   EXPECT_EQ(phase.output, "phase over");
 }
 
+// What the parent makes before the fork (glslang's built-in tables), the child inherits; what
+// the child makes, the parent never sees.
+TEST(CompileSandbox, InParentRunsFirstAndTheChildInheritsIt) {
+  static int made = 0;
+  made = 0;
+  const SandboxOutcome o = runSandboxed(
+      [] {
+        const std::string seen = std::to_string(made);
+        made = 2;
+        return seen;
+      },
+      SandboxLimits{}, [] { made = 1; });
+  EXPECT_EQ(o.end, SandboxEnd::Done);
+  EXPECT_EQ(o.output, "1");
+  EXPECT_EQ(made, 1);
+}
+
 }  // namespace
 }  // namespace taa::user

@@ -9,17 +9,15 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <memory>
 #include <mutex>
 #include <sstream>
 
 #include "core/input_file.h"
-#include "core/output_file.h"
 #include "core/sha256.h"
 #include "user/compile_sandbox.h"
 #include "user/shader_bounds.h"
+#include "user/spirv_cache.h"
 #include "user/user_capabilities.h"
 #include "vk/pipeline.h"
 
@@ -35,14 +33,6 @@ constexpr const char* kCompilerTag = "taa-user 2 glslang 12 vulkan1.2 spv1.5";
 fs::path absoluteNormal(const fs::path& p) {
   std::error_code ec;
   return fs::absolute(p, ec).lexically_normal();
-}
-
-std::string readShaderText(const fs::path& file, const std::string& what) {
-  try {
-    return readInputFile(file, kMaxShaderFileBytes);
-  } catch (const InputFileError& e) {
-    throw ShaderCompileError(what + ": " + e.what());
-  }
 }
 
 // Resolves #include against the including file's folder, then the installed headers. A file
@@ -358,79 +348,6 @@ GlslangOutput runGlslang(const fs::path& source, const std::string& text, const 
   return out;
 }
 
-std::string fileSha(const fs::path& file) {
-  const std::string bytes = readShaderText(file, file.string());
-  return sha256Hex(bytes.data(), bytes.size());
-}
-
-// The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash and
-// the capabilities the shader declares; KEY.spv holds the words. A hit needs every include
-// unchanged and the words intact; on a miss `why` says what changed ("" when there is no
-// entry at all).
-bool readCache(const fs::path& dir, const std::string& key, CompiledShader& out, std::string& why) {
-  std::ifstream deps(dir / (key + ".deps"));
-  if (!deps) return false;
-  why = "the cache entry was damaged";
-  std::string kind, sha, spvSha;
-  std::vector<fs::path> includes;
-  std::vector<std::string> capabilities;
-  std::string line;
-  while (std::getline(deps, line)) {
-    std::istringstream l(line);
-    l >> kind >> sha;
-    std::string path;
-    std::getline(l >> std::ws, path);
-    if (kind == "spv") {
-      spvSha = sha;
-    } else if (kind == "cap") {
-      capabilities.push_back(sha);
-    } else if (kind == "inc") {
-      std::error_code ec;
-      if (!fs::is_regular_file(path, ec)) {
-        why = path + " is gone since it was cached";
-        return false;
-      }
-      try {
-        if (fileSha(path) != sha) {
-          why = path + " changed since it was cached";
-          return false;
-        }
-      } catch (const ShaderCompileError&) {
-        why = path + " cannot be read";
-        return false;
-      }
-      includes.emplace_back(path);
-    } else {
-      return false;
-    }
-  }
-  if (spvSha.empty()) return false;
-  std::string bytes;
-  try {
-    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16);
-  } catch (const InputFileError&) {
-    return false;
-  }
-  if (bytes.size() % 4 != 0 || sha256Hex(bytes.data(), bytes.size()) != spvSha) return false;
-  out.spirv.resize(bytes.size() / 4);
-  std::memcpy(out.spirv.data(), bytes.data(), bytes.size());
-  out.includes = std::move(includes);
-  out.capabilities = std::move(capabilities);
-  out.fromCache = true;
-  return true;
-}
-
-void writeCache(const fs::path& dir, const std::string& key, const CompiledShader& c) {
-  createOutputDirectory(dir);
-  const std::string_view bytes(reinterpret_cast<const char*>(c.spirv.data()), c.spirv.size() * 4);
-  // Words first: a deps file never names SPIR-V that is not there.
-  writeFileAtomically(dir / (key + ".spv"), bytes);
-  std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
-  for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
-  for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
-  writeFileAtomically(dir / (key + ".deps"), deps);
-}
-
 // What this process last did to get each cache key's SPIR-V (CompiledShader::provenance).
 std::string provenanceOf(const std::string& key, const std::string& happened, bool compiled) {
   static std::mutex mutex;
@@ -457,15 +374,6 @@ fs::path userHeaderDir() {
   return fs::path(vk::shaderDir()) / "include";
 }
 
-fs::path userShaderCacheDir() {
-  if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return fs::path(xdg) / "taa-harness" / "spirv";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".cache" / "taa-harness" / "spirv";
-  return fs::temp_directory_path() / "taa-harness-spirv";
-}
-
 CompiledShader compileComputeShader(const fs::path& source, const CompileOptions& o) {
   const fs::path headerDir = o.headerDir.empty() ? userHeaderDir() : o.headerDir;
   const fs::path cacheDir = o.cacheDir.empty() ? userShaderCacheDir() : o.cacheDir;
@@ -488,7 +396,7 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
 
   CompiledShader out;
   std::string miss;
-  if (readCache(cacheDir, key, out, miss)) {
+  if (readSpirvCache(cacheDir, key, out, miss)) {
     out.provenance = provenanceOf(key, "from the cache", false);
     return out;
   }
@@ -497,7 +405,7 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
   out.spirv = std::move(g.spirv);
   out.includes = std::move(g.includes);
   out.capabilities = declaredCapabilities(g.preprocessed, source.string());
-  writeCache(cacheDir, key, out);
+  writeSpirvCache(cacheDir, key, out);
   out.provenance = provenanceOf(
       key, miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss,
       true);

@@ -24,7 +24,7 @@ ShaderLanguage languageOf(const std::filesystem::path& file);
 struct CompileOptions {
   std::filesystem::path root;       // includes must resolve inside this folder
   std::filesystem::path headerDir;  // the installed taa_user.h folder; empty: userHeaderDir()
-  std::filesystem::path cacheDir;   // empty: userShaderCacheDir()
+  std::filesystem::path cacheDir;   // empty: userShaderCacheDir() (spirv_cache.h)
   ShaderLanguage language = ShaderLanguage::Glsl;
   std::string entry = "main";  // HLSL's entry point, kept as the SPIR-V's (GLSL's is main)
 };
@@ -49,8 +49,5 @@ CompiledShader compileComputeShader(const std::filesystem::path& source,
 
 // Where taa_user.h is: beside the SPIR-V the harness loads (vk::shaderDir()/include).
 std::filesystem::path userHeaderDir();
-
-// $TAA_SHADER_CACHE, else $XDG_CACHE_HOME/taa-harness/spirv, else ~/.cache/taa-harness/spirv.
-std::filesystem::path userShaderCacheDir();
 
 }  // namespace taa::user

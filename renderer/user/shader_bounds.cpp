@@ -5,7 +5,18 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "api/loader_errors.h"
+#include "core/input_file.h"
+
 namespace taa::user {
+
+std::string readShaderText(const std::filesystem::path& file, const std::string& what) {
+  try {
+    return readInputFile(file, kMaxShaderFileBytes);
+  } catch (const InputFileError& e) {
+    throw ShaderCompileError(what + ": " + e.what());
+  }
+}
 
 namespace {
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ inline constexpr uint64_t kMaxConstantArrayNumbers = 1024;
 // Workgroup (shared) memory: Vulkan's guaranteed minimum of maxComputeSharedMemorySize, so a
 // shader that loads runs on every device.
 inline constexpr uint64_t kMaxSharedBytes = uint64_t(16) << 10;
+
+// A user's shader or header, read whole within kMaxShaderFileBytes; a file missing, unreadable,
+// or over the bound is a ShaderCompileError starting with `what`.
+std::string readShaderText(const std::filesystem::path& file, const std::string& what);
 
 // The child process glslang runs in: CPU, memory, wall time and its thread's stack.
 SandboxLimits compileLimits();

@@ -1,0 +1,99 @@
+#include "user/spirv_cache.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "core/input_file.h"
+#include "core/output_file.h"
+#include "core/sha256.h"
+#include "user/shader_bounds.h"
+
+namespace taa::user {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fileSha(const fs::path& file) {
+  const std::string bytes = readShaderText(file, file.string());
+  return sha256Hex(bytes.data(), bytes.size());
+}
+
+}  // namespace
+
+bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader& out, std::string& why) {
+  std::ifstream deps(dir / (key + ".deps"));
+  if (!deps) return false;
+  why = "the cache entry was damaged";
+  std::string kind, sha, spvSha;
+  std::vector<fs::path> includes;
+  std::vector<std::string> capabilities;
+  std::string line;
+  while (std::getline(deps, line)) {
+    std::istringstream l(line);
+    l >> kind >> sha;
+    std::string path;
+    std::getline(l >> std::ws, path);
+    if (kind == "spv") {
+      spvSha = sha;
+    } else if (kind == "cap") {
+      capabilities.push_back(sha);
+    } else if (kind == "inc") {
+      std::error_code ec;
+      if (!fs::is_regular_file(path, ec)) {
+        why = path + " is gone since it was cached";
+        return false;
+      }
+      try {
+        if (fileSha(path) != sha) {
+          why = path + " changed since it was cached";
+          return false;
+        }
+      } catch (const ShaderCompileError&) {
+        why = path + " cannot be read";
+        return false;
+      }
+      includes.emplace_back(path);
+    } else {
+      return false;
+    }
+  }
+  if (spvSha.empty()) return false;
+  std::string bytes;
+  try {
+    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16);
+  } catch (const InputFileError&) {
+    return false;
+  }
+  if (bytes.size() % 4 != 0 || sha256Hex(bytes.data(), bytes.size()) != spvSha) return false;
+  out.spirv.resize(bytes.size() / 4);
+  std::memcpy(out.spirv.data(), bytes.data(), bytes.size());
+  out.includes = std::move(includes);
+  out.capabilities = std::move(capabilities);
+  out.fromCache = true;
+  return true;
+}
+
+void writeSpirvCache(const fs::path& dir, const std::string& key, const CompiledShader& c) {
+  createOutputDirectory(dir);
+  const std::string_view bytes(reinterpret_cast<const char*>(c.spirv.data()), c.spirv.size() * 4);
+  // Words first: a deps file never names SPIR-V that is not there.
+  writeFileAtomically(dir / (key + ".spv"), bytes);
+  std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
+  for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
+  for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
+  writeFileAtomically(dir / (key + ".deps"), deps);
+}
+
+fs::path userShaderCacheDir() {
+  if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return fs::path(xdg) / "taa-harness" / "spirv";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "taa-harness" / "spirv";
+  return fs::temp_directory_path() / "taa-harness-spirv";
+}
+
+}  // namespace taa::user

@@ -1,0 +1,26 @@
+// The on-disk cache of users' SPIR-V (compileComputeShader's): an entry per key of the
+// compile's inputs, valid while every file the shader included still hashes as it did.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "user/glsl_compiler.h"  // CompiledShader
+
+namespace taa::user {
+
+// $TAA_SHADER_CACHE, else $XDG_CACHE_HOME/taa-harness/spirv, else ~/.cache/taa-harness/spirv.
+std::filesystem::path userShaderCacheDir();
+
+// The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash and
+// the capabilities the shader declares; KEY.spv holds the words. A hit needs every include
+// unchanged and the words intact; on a miss `why` says what changed ("" when there is no
+// entry at all).
+bool readSpirvCache(const std::filesystem::path& dir, const std::string& key, CompiledShader& out,
+                    std::string& why);
+
+// Writes entry KEY (the words first, so a deps file never names SPIR-V that is not there).
+// Throws OutputError when the folder cannot be written.
+void writeSpirvCache(const std::filesystem::path& dir, const std::string& key, const CompiledShader& c);
+
+}  // namespace taa::user

@@ -15,15 +15,11 @@ ROOT = Path(__file__).resolve().parents[2]
 MENU = ROOT / "cmake" / "header_pch_menu.py"
 sys.dont_write_bytecode = True
 sys.path.insert(0, str(ROOT / "cmake"))
+sys.path.insert(0, str(ROOT / "tests" / "support"))
 import header_pch_menu as menu  # noqa: E402
+from selfcheck import SelfCheck  # noqa: E402
 
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
+check = SelfCheck("pch_menu_selftest")
 
 
 def tree(files):
@@ -129,5 +125,4 @@ check(any(ours("m/big.h") in names for names in clang.values()), f"a header of o
 check(sum(map(len, clang.values())) > sum(map(len, gnu.values())),
       f"a cheaper load precompiles more: GNU {gnu}, Clang {clang}")
 
-print("pch_menu_selftest:", "FAIL" if failures else "pass", f"({len(failures)} failures)")
-sys.exit(1 if failures else 0)
+check.finish()

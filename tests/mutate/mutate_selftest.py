@@ -13,15 +13,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.dont_write_bytecode = True
 sys.path.insert(0, str(ROOT / "ci"))
+sys.path.insert(0, str(ROOT / "tests" / "support"))
 import mutate_ops as ops  # noqa: E402
+from selfcheck import SelfCheck  # noqa: E402
 
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
+check = SelfCheck("mutate selftest")
 
 
 def listing(*extra):
@@ -120,5 +116,4 @@ in_tree = [i for i in order if i.startswith("harness/") or i.startswith("shaders
 check(in_tree and order[-len(in_tree):] == in_tree,
       "mutants edited in the tree run after every mutant built into a copy")
 
-print("mutate selftest:", "FAIL" if failures else "ok", f"({len(failures)} failure(s))")
-sys.exit(1 if failures else 0)
+check.finish()

@@ -12,6 +12,9 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CMAKE = sys.argv[1]
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
+from selfcheck import SelfCheck  # noqa: E402
 
 # A stand-in test binary: writes the gtest JSON report of the tests in $FAKE_REPORT (a Python
 # literal), or dies without one when it is "crash"; run with a filter alone, prints it.
@@ -34,13 +37,7 @@ with open(args["--gtest_output"][len("json:"):], "w") as f:
 sys.exit(1 if any(t.get("failures") for s in suites for t in s["testsuite"]) else 0)
 '''
 
-failures = 0
-
-
-def check(what, ok, detail=""):
-    global failures
-    print(("ok   " if ok else "FAIL ") + what + ("" if ok else ": " + detail))
-    failures += 0 if ok else 1
+check = SelfCheck("run_shard_selftest", verbose=True)
 
 
 def shard(tmp, report, suites):
@@ -71,27 +68,27 @@ with tempfile.TemporaryDirectory() as tmp:
         "Gamma": [{"name": "Skips", "result": "SKIPPED"}],
     })
     status, out = shard(tmp, report, ["Alpha", "Beta", "Gamma", "Delta"])
-    check("a shard with a failing test exits non-zero", status != 0, str(status))
+    check(status != 0, "a shard with a failing test exits non-zero", str(status))
     rc, text = suite(out, "Alpha")
-    check("the failing suite's test fails", rc != 0, text)
-    check("with the failure's text", "Expected 1, was 2" in text and "[  FAILED  ] Alpha.Bad" in text, text)
+    check(rc != 0, "the failing suite's test fails", text)
+    check("Expected 1, was 2" in text and "[  FAILED  ] Alpha.Bad" in text, "with the failure's text", text)
     rc, text = suite(out, "Beta")
-    check("an instantiated parameterized suite passes under its own name", rc == 0 and "[  PASSED  ] 1 tests." in text, text)
+    check(rc == 0 and "[  PASSED  ] 1 tests." in text, "an instantiated parameterized suite passes under its own name", text)
     rc, text = suite(out, "Gamma")
-    check("an all-skipped suite prints what ctest reads as skipped", rc == 0 and "[  PASSED  ] 0 tests" in text, text)
+    check(rc == 0 and "[  PASSED  ] 0 tests" in text, "an all-skipped suite prints what ctest reads as skipped", text)
     rc, text = suite(out, "Delta")
-    check("a suite the shard did not report runs alone", rc == 0 and "alone Delta.*:*/Delta.*" in text, text)
+    check(rc == 0 and "alone Delta.*:*/Delta.*" in text, "a suite the shard did not report runs alone", text)
     rc, text = suite(out, "Delta", alone_exit=1)
-    check("and fails when it fails alone", rc != 0, text)
+    check(rc != 0, "and fails when it fails alone", text)
 
     status, out = shard(tmp, "crash", ["Alpha"])
-    check("a shard that died fails", status != 0, str(status))
-    check("and leaves no verdict", not os.path.exists(os.path.join(out, "Alpha.txt")))
+    check(status != 0, "a shard that died fails", str(status))
+    check(not os.path.exists(os.path.join(out, "Alpha.txt")), "and leaves no verdict")
     rc, text = suite(out, "Alpha")
-    check("so its suites run alone", "alone Alpha" in text, text)
+    check("alone Alpha" in text, "so its suites run alone", text)
 
     status, out = shard(tmp, report, ["Beta"])
-    check("a shard of passing suites passes", status == 0, str(status))
-    check("and writes no verdict of a suite it was not given", not os.path.exists(os.path.join(out, "Alpha.txt")))
+    check(status == 0, "a shard of passing suites passes", str(status))
+    check(not os.path.exists(os.path.join(out, "Alpha.txt")), "and writes no verdict of a suite it was not given")
 
-sys.exit(1 if failures else 0)
+check.finish()

@@ -26,14 +26,14 @@ spec::CaseSpec wiresCase(spec::TaaMode mode) {
 }
 
 // Output images at kMeasured, and with `reference` the reference images too.
-struct Rendered {
+struct WireImages {
   std::vector<Image> color, reference;
 };
-Rendered render(const spec::CaseSpec& spec, const scene::Scene& scene, bool reference) {
+WireImages render(const spec::CaseSpec& spec, const scene::Scene& scene, bool reference) {
   RenderOptions o;
   if (reference) o.captures |= {Capture::Reference};
   Renderer renderer(test::gpu(), spec, scene, o);
-  Rendered out;
+  WireImages out;
   for (int f = 0; f < spec.script.frames; ++f) {
     const bool wanted = std::find(kMeasured.begin(), kMeasured.end(), f) != kMeasured.end();
     FrameRecord r = renderer.renderFrame(f, wanted);
@@ -94,7 +94,7 @@ TEST(AdaptiveWires, WiresKeptWithAdaptiveAndVanishingWithout) {
       for (auto& p : mesh.primitives) p.indexCount = 0;
 
   // The full resolve's run gives the reference too: a capture never changes the output.
-  const Rendered full = render(fullSpec, scene, true);
+  const WireImages full = render(fullSpec, scene, true);
   const auto background = render(fullSpec, bare, true).reference;
   const Coverage adaptive = measure(render(adaptiveSpec, scene, false).color, full.reference, background);
   const Coverage fullTaa = measure(full.color, full.reference, background);

@@ -20,8 +20,8 @@ struct DeviceOptions {
   // Case-insensitive substring of the device name; empty: $TAA_DEVICE, else lavapipe.
   std::string device;
   bool validate = false;  // Khronos validation layer; messages are counted and printed
-  // Mesa's shader cache folder; empty: the user's cache folder (vk/shader_cache.h). Tests
-  // keep theirs under the build tree.
+  // Mesa's shader cache folder; empty: the user's cache folder (vk/shader_cache.h), which the
+  // tests share with the harness they test.
   std::filesystem::path shaderCacheDir;
   // Devices of this process that render at the same time (run -j N's workers): lavapipe's
   // rasteriser threads are shared out among them (vk/context.h).

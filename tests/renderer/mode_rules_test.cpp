@@ -72,7 +72,7 @@ TEST(ModeRules, AStandInReplacesOnlyTheModesThatRenderAsTheFullResolve) {
 
 // stillImage: debug.image writes over the raster's colour, so in a mode that shows it alone
 // the hidden scene changes nothing. Any image of output size shows it; a 64x64 one (the bump
-// texture's pixels) keeps the fourteen renders at a tenth of the zone plate's 320x180.
+// texture's pixels) keeps the fourteen renders at 4,096 pixels, not the zone plate's 57,600.
 TEST(ModeRules, TheStillImageModesShowNothingOfTheHiddenScene) {
   const auto still = [](const char* scene) {
     return std::string(R"({"scene": {"builtin": ")") + scene + R"("},

@@ -19,7 +19,7 @@ Device& device() {
   // Mesa's shader cache where the harness keeps it (vk::shaderCacheDir: $TAA_SHADER_CACHE_DIR,
   // else the user's cache folder), not one of the build tree's own: a fresh clone's tests then
   // load the code the main job compiled instead of compiling every variant again (CI's unit
-  // tests spent about 30 s of their 150 s compiling). The cache is keyed by shader and driver,
+  // tests spent about 40 s of their 160 s compiling). The cache is keyed by shader and driver,
   // so what a test loads from it is what it would have compiled.
   static std::unique_ptr<Device> dev = std::make_unique<Device>(DeviceOptions{});
   return *dev;

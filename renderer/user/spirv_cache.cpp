@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/cache_folder.h"
 #include "core/input_file.h"
 #include "core/output_file.h"
 #include "core/sha256.h"
@@ -89,10 +90,7 @@ void writeSpirvCache(const fs::path& dir, const std::string& key, const Compiled
 
 fs::path userShaderCacheDir() {
   if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return fs::path(xdg) / "taa-harness" / "spirv";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".cache" / "taa-harness" / "spirv";
+  if (fs::path dir = userCacheFolder("spirv"); !dir.empty()) return dir;
   return fs::temp_directory_path() / "taa-harness-spirv";
 }
 

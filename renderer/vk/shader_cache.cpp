@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/cache_folder.h"
+
 namespace taa::vk {
 
 namespace fs = std::filesystem;
@@ -17,11 +19,7 @@ fs::path wantedDir() {
     const std::string v = env;
     return v == "off" ? fs::path() : fs::path(v);
   }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return fs::path(xdg) / "taa-harness" / "mesa";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".cache" / "taa-harness" / "mesa";
-  return {};
+  return userCacheFolder("mesa");
 }
 
 }  // namespace

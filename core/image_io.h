@@ -95,6 +95,9 @@ void writePngLinear8(const std::filesystem::path& path, const Image& rgb01);
 // A 1- or 2-channel image is treated as grey (channel 0 in R, G and B).
 // flipLdrFromHdr uses the same mapping so FLIP judges what the PNG shows.
 Image toDisplaySrgb(const Image& hdr);
+// One channel of that mapping, for a value that is not NaN. toDisplaySrgb answers halves (what
+// half-float targets read back as) from a table of this function's own values.
+float displayChannel(float linear);
 
 // IEEE 754 binary16 conversions, independent of the host's FPU modes.
 uint16_t floatToHalfBits(float value);  // round to nearest, ties to even

@@ -139,6 +139,26 @@ TEST(ImageIoExr, ReadingMissingOrNonExrFileNamesIt) {
   EXPECT_THROW(taa::readExr(dir / "a.png"), taa::ImageIoError);
 }
 
+// toDisplaySrgb answers halves from a table: every half that is not NaN (both signs, zero,
+// subnormals, Inf) and the floats either side of it, which the table must not answer, map to
+// the very bits displayChannel gives.
+TEST(ImageIoPng, DisplayTableGivesTheCurvesOwnValues) {
+  std::vector<float> values;
+  for (uint32_t bits = 0; bits < 0x10000u; ++bits) {
+    const float h = taa::halfBitsToFloat(uint16_t(bits));
+    if (std::isnan(h)) continue;
+    values.insert(values.end(), {h, std::nextafter(h, -INFINITY), std::nextafter(h, INFINITY)});
+  }
+  Image img(int(values.size()), 1, 1);
+  img.data = values;
+  const Image d = taa::toDisplaySrgb(img);
+  for (size_t i = 0; i < values.size(); ++i) {
+    const float want = taa::displayChannel(values[i]);
+    ASSERT_EQ(std::bit_cast<uint32_t>(d.data[i * 3]), std::bit_cast<uint32_t>(want))
+        << "linear " << values[i] << " (bits " << std::hex << std::bit_cast<uint32_t>(values[i]) << ")";
+  }
+}
+
 TEST(ImageIoPng, TonemapsWithReinhardAndSrgb) {
   Image hdr(6, 1, 4);
   const float inf = std::numeric_limits<float>::infinity();

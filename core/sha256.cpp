@@ -60,6 +60,7 @@ sha256detail::Compress compressor() {
 }  // namespace
 
 void Sha256::update(const void* data, size_t size) {
+  if (size == 0) return;  // data may then be null, which memcpy must not see
   const auto* p = static_cast<const uint8_t*>(data);
   total_ += size;
   if (buffered_ > 0) {

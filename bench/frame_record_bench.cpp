@@ -5,7 +5,8 @@
 // half-float target reads back, and of floats that are not halves (an RGBA32F target), which
 // the display mapping cannot answer from its table.
 //
-//   build/bench/taa_bench --benchmark_filter='PixelSha256|DisplaySrgb|FrameSignature|Sha256Compress'
+//   build/bench/taa_bench
+//   --benchmark_filter='PixelSha256|DisplaySrgb|FrameSignature|Sha256Compress'
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -53,8 +54,8 @@ BENCHMARK(BM_FrameSignature)->Unit(benchmark::kMillisecond);
 
 // Argument: 0 = portable rounds, 1 = the SHA extensions (skipped where the CPU has none).
 void BM_Sha256Compress(benchmark::State& state) {
-  const sha256detail::Compress fn = state.range(0) ? sha256detail::compressAccelerated()
-                                                   : &sha256detail::compressPortable;
+  const sha256detail::Compress fn =
+      state.range(0) ? sha256detail::compressAccelerated() : &sha256detail::compressPortable;
   if (!fn) {
     state.SkipWithError("this CPU has no SHA extensions");
     return;

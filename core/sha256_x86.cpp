@@ -36,8 +36,9 @@ TAA_SHA_TARGET void compressShaNi(uint32_t state[8], const uint8_t* data, size_t
                               byteSwap);
     }
     for (int quad = 0; quad < 16; ++quad) {
-      if (quad >= 4) w[quad % 4] = schedule(w[quad % 4], w[(quad + 1) % 4], w[(quad + 2) % 4],
-                                            w[(quad + 3) % 4]);
+      if (quad >= 4)
+        w[quad % 4] =
+            schedule(w[quad % 4], w[(quad + 1) % 4], w[(quad + 2) % 4], w[(quad + 3) % 4]);
       __m128i k = _mm_add_epi32(
           w[quad % 4], _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRound + 4 * quad)));
       // Two rounds take the low two words, two more the high two.
@@ -66,14 +67,18 @@ bool cpuHasShaNi() {
 
 }  // namespace
 
-Compress compressAccelerated() { return cpuHasShaNi() ? &compressShaNi : nullptr; }
+Compress compressAccelerated() {
+  return cpuHasShaNi() ? &compressShaNi : nullptr;
+}
 
 }  // namespace taa::sha256detail
 
 #else
 
 namespace taa::sha256detail {
-Compress compressAccelerated() { return nullptr; }
+Compress compressAccelerated() {
+  return nullptr;
+}
 }  // namespace taa::sha256detail
 
 #endif

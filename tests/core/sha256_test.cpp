@@ -9,7 +9,9 @@
 namespace taa {
 namespace {
 
-std::string hexOf(const std::string& text) { return sha256Hex(text.data(), text.size()); }
+std::string hexOf(const std::string& text) {
+  return sha256Hex(text.data(), text.size());
+}
 
 // Bytes that are a function of their index alone, so every length hashes distinct content.
 std::vector<uint8_t> pattern(size_t size) {
@@ -58,7 +60,8 @@ TEST(Sha256, AcceleratedCompressorEqualsThePortableOne) {
   const std::vector<uint8_t> bytes = pattern(64 * 40);
   for (size_t blocks = 0; blocks <= 40; ++blocks) {
     uint32_t portable[8], accelerated[8];
-    for (uint32_t i = 0; i < 8; ++i) portable[i] = accelerated[i] = 0x01234567u * (i + 1) + uint32_t(blocks);
+    for (uint32_t i = 0; i < 8; ++i)
+      portable[i] = accelerated[i] = 0x01234567u * (i + 1) + uint32_t(blocks);
     sha256detail::compressPortable(portable, bytes.data(), blocks);
     fast(accelerated, bytes.data(), blocks);
     EXPECT_EQ(0, std::memcmp(portable, accelerated, sizeof portable)) << blocks << " blocks";

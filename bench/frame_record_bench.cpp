@@ -5,8 +5,7 @@
 // half-float target reads back, and of floats that are not halves (an RGBA32F target), which
 // the display mapping cannot answer from its table.
 //
-//   build/bench/taa_bench
-//   --benchmark_filter='PixelSha256|DisplaySrgb|FrameSignature|Sha256Compress'
+//   build/bench/taa_bench --benchmark_filter='Sha256|DisplaySrgb|FrameSignature'
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

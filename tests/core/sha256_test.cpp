@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
+
+#include "support/noise.h"
 
 namespace taa {
 namespace {
@@ -16,13 +19,7 @@ std::string hexOf(const std::string& text) {
 // Bytes that are a function of their index alone, so every length hashes distinct content.
 std::vector<uint8_t> pattern(size_t size) {
   std::vector<uint8_t> out(size);
-  uint32_t x = 0x9e3779b9u;
-  for (auto& b : out) {
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    b = uint8_t(x >> 24);
-  }
+  for (size_t i = 0; i < size; ++i) out[i] = uint8_t(test::hash32(uint32_t(i)) >> 24);
   return out;
 }
 

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# The case suite at CPU feature levels other than the goldens' (GALLIUM_OVERRIDE_CPU_CAPS):
-# lavapipe generates other code there, so low bits differ and the harness takes its tolerance
-# path: stored frames against each case's checks.tolerance, every other frame by its quality
-# signature. Any failure here is either a real regression or a tolerance too tight for another
-# machine; both must be fixed, never ignored.
+# The case suite at CPU feature levels other than the primary positive's (GALLIUM_OVERRIDE_CPU_CAPS):
+# lavapipe generates other code there, so low bits differ. The goldens hold a positive of their
+# own for sse4.1 (blessed with `bless --from RUN --add-environment` from a run at that level), so
+# that level is compared bit for bit and run with --require-exact: a case without its positive
+# fails. A level without a positive (avx below, or any level TAA_CPU_LEVELS names) takes the
+# tolerance path: stored frames against each case's checks.tolerance, every other frame by its
+# quality signature (tests/harness/positives_test.cpp keeps that path tested at ssse3).
 #
 #   ci/cpu-level.sh [BUILD_DIR]                  levels: sse4.1, and avx (AVX2 without AVX-512)
 #                                                when the CPU has AVX-512, which the goldens used
+#   TAA_EXACT_LEVELS="sse4.1"                    the levels whose positives the goldens hold: run with
+#                                                TAA_REQUIRE_EXACT=1 (the others on the tolerance path)
 #   TAA_CPU_LEVELS="sse4.1 ssse3" ci/cpu-level.sh  other levels Mesa's override knows; each listed
 #                                                level runs the whole suite, no probe
 #
@@ -57,8 +61,10 @@ for level in $levels; do
     echo "cpu-level: avx left out: its $probed hash as at this machine's level, so ctest's exact verdicts hold for it (TAA_CPU_LEVELS=\"sse4.1 avx\" runs it anyway)"
     continue
   fi
-  echo "cpu-level: GALLIUM_OVERRIDE_CPU_CAPS=$level"
-  if ! CI=true GALLIUM_OVERRIDE_CPU_CAPS=$level "$harness" run cases --out "out/cpu-$level"; then
+  exact=0
+  for e in ${TAA_EXACT_LEVELS:-sse4.1}; do [ "$e" = "$level" ] && exact=1; done
+  echo "cpu-level: GALLIUM_OVERRIDE_CPU_CAPS=$level (TAA_REQUIRE_EXACT=$exact)"
+  if ! CI=true TAA_REQUIRE_EXACT=$exact GALLIUM_OVERRIDE_CPU_CAPS=$level "$harness" run cases --out "out/cpu-$level"; then
     echo "cpu-level: the suite fails at $level (report: out/cpu-$level/report.html)" >&2
     status=1
   fi

@@ -7,6 +7,7 @@
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "golden/manifest.h"
 #include "cli/run_cases.h"
 #include "cli/run_support.h"
 #include "core/image_io.h"
@@ -23,11 +24,6 @@ const char* kRenderUsage =
     "  frame in output.frames, aux buffers from output.aux, records.json and run.log;\n"
     "  --reference also writes frame_NNNN.reference.exr/.png, the supersampled ground truth";
 
-std::string frameName(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "frame_%04d", frame);
-  return buf;
-}
 }  // namespace
 
 int cmdRender(const Args& args) {
@@ -55,7 +51,7 @@ int cmdRender(const Args& args) {
     for (const auto& [pass, ms] : r.gpuMs) j["gpu_ms"][pass] = ms;
     for (const auto& [name, value] : r.stats) j["stats"][name] = value;
     if (r.hasImages) {
-      const std::string base = frameName(r.frame);
+      const std::string base = golden::frameBase(r.frame);
       writeExr(dir / (base + ".exr"), r.color);
       writePng(dir / (base + ".png"), r.color);
       // Depth, ids and velocities lose meaning in half floats; the colour buffers do not.

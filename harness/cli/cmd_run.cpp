@@ -30,7 +30,7 @@ std::string runUsage() {
   return "taa-harness run CASE... [--out DIR] [--goldens DIR] [-j N] [--shard I/N] [--device NAME] "
          "[--validate]\n"
          "                        [--metric NAME --above X] [--fail-fast] [--no-reference-cache]\n"
-         "                        [--verdict-from RESULTS]\n"
+         "                        [--verdict-from RESULTS] [--require-exact]\n"
          "  renders each case, compares its checked frames with goldens/NAME/, runs its invariants "
          "and\n"
          "  writes DIR/results.json, DIR/junit.xml and DIR/report.html (default DIR: out).\n"
@@ -48,6 +48,10 @@ std::string runUsage() {
          "  cover the cases run so far.\n"
          "  --metric NAME --above X: exit 1 when a checked frame's NAME (" +
          compare::metricList(compare::goldenMetrics()) +
+         "  --require-exact (or TAA_REQUIRE_EXACT=1) fails a case whose goldens hold no positive "
+         "for\n"
+         "  this environment instead of comparing it within tolerances (the positive's command is\n"
+         "  printed: bless --add-environment, or bless --from a run's folder).\n"
          ")\n  against its golden is past X (below X for psnr), else 0 (bit-exactness is not "
          "required).\n"
          "exit: 0 pass, 1 regression, 2 bad input, 3 environment";
@@ -117,7 +121,7 @@ std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, 
 
 int cmdRun(const Args& args) {
   const auto a =
-      parseArgs(args, {"--validate", "--fail-fast", "--no-reference-cache"},
+      parseArgs(args, {"--validate", "--fail-fast", "--no-reference-cache", "--require-exact"},
                 {"--out", "--goldens", "--shard", "--device", "--metric", "--above", "--jobs",
                  "--verdict-from"}, runUsage());
   if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + runUsage());
@@ -139,10 +143,12 @@ int cmdRun(const Args& args) {
     refuseOutputInGoldens(out, a.values.count("--goldens") ? fs::path(a.value("--goldens"))
                                                   : run::defaultGoldensRoot(c.spec.file));
   createOutputDirectory(out);
+  const bool requireExact = a.has("--require-exact") || requireExactFromEnvironment();
   if (a.values.count("--verdict-from"))
     if (const auto verdict =
             earlierVerdict(batch, a.value("--verdict-from"), out,
-                           run::buildIdentity(a.value("--device"), runningInCi()), a.value("--goldens")))
+                           run::buildIdentity(a.value("--device"), runningInCi(), requireExact),
+                           a.value("--goldens")))
       return *verdict;
   const auto start = std::chrono::steady_clock::now();
   const CpuTimes cpuBefore = cpuTimes();
@@ -155,6 +161,7 @@ int cmdRun(const Args& args) {
   options.validate = a.has("--validate");
   options.failFast = a.has("--fail-fast");
   options.run.missingGoldenFails = runningInCi();
+  options.run.requireExact = requireExact;
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
 
   writeFileAtomically(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");

@@ -189,6 +189,15 @@ struct StagingFolder {
 
 }  // namespace
 
+bool requireExactFromEnvironment() {
+  const char* v = std::getenv("TAA_REQUIRE_EXACT");
+  if (!v || !*v || std::string(v) == "0") return false;
+  if (std::string(v) == "1") return true;
+  throw UsageError(std::string("TAA_REQUIRE_EXACT='") + v +
+                   "': expected 1 (fail a case whose goldens have no positive for this "
+                   "environment) or 0");
+}
+
 bool runningInCi() {
   const char* ci = std::getenv("CI");
   if (!ci) return false;
@@ -337,8 +346,10 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   out.results.device = devices[0]->identity().name;
   out.environment = golden::currentEnvironment(devices[0]->identity());
   out.results.fingerprint = out.environment.fingerprint();
+  out.results.environment = out.environment;
   out.results.commit = golden::rendererCommit();
-  out.results.build = run::buildIdentity(options.device, options.run.missingGoldenFails);
+  out.results.build =
+      run::buildIdentity(options.device, options.run.missingGoldenFails, options.run.requireExact);
   out.results.suite = batch.suite;
   out.workers = workers;
   TerminalProgress progress(workers, count);

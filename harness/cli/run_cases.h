@@ -28,6 +28,10 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
 // Whether CI=true (or 1, yes) is set: a case without goldens then fails instead of skipping.
 bool runningInCi();
 
+// TAA_REQUIRE_EXACT=1: as `run --require-exact`, for CI jobs that must compare bit for bit.
+// UsageError for a value other than 0 or 1.
+bool requireExactFromEnvironment();
+
 // Throws UsageError (exit 2) when `out` is the goldens folder or lies inside it: `render`,
 // `run`, `sweep` and `bless` write frames there and would overwrite goldens.
 void refuseOutputInGoldens(const std::filesystem::path& out,
@@ -78,6 +82,7 @@ CpuTimes cpuTimes();
 std::string throughputLine(const BatchOutcome& outcome, double wallSeconds, const CpuTimes& before);
 
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
-                      const std::function<void(const run::CaseResult&)>& onCase, bool keepOutputs = false);
+                      const std::function<void(const run::CaseResult&)>& onCase,
+                      bool keepOutputs = false);
 
 }  // namespace taa::cli

@@ -22,12 +22,6 @@ std::string runCommand(const std::string& command) {
   return out;
 }
 
-std::string frameFile(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "frame_%04d.exr", frame);
-  return buf;
-}
-
 }  // namespace
 
 std::string todayUtc() {
@@ -63,7 +57,7 @@ Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env,
   m.sequence = sequence;
   m.signatures = digests.signatures;
   for (const auto& [frame, image] : frames) {
-    m.frames.push_back({frame, frameFile(frame), pixelSha256(image), image.width, image.height});
+    m.frames.push_back({frame, frameBase(frame) + ".exr", pixelSha256(image), image.width, image.height});
     if (size_t(frame) >= sequence.size() || sequence[size_t(frame)] != m.frames.back().sha256)
       throw std::logic_error("bless: frame " + std::to_string(frame) + " of " + m.caseName +
                              " hashes differently from the sequence rendered with it");

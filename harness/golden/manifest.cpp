@@ -1,6 +1,8 @@
 #include "golden/manifest.h"
 
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,8 +19,16 @@ std::string restoreHint(const std::filesystem::path& dir) {
          "` (or re-bless the case with a reason)";
 }
 
+std::string frameBase(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "frame_%04d", frame);
+  return buf;
+}
+
 namespace {
-nlohmann::json blessJson(const BlessRecord& b) { return {{"date", b.date}, {"commit", b.commit}, {"reason", b.reason}}; }
+nlohmann::json blessJson(const BlessRecord& b) {
+  return {{"date", b.date}, {"commit", b.commit}, {"reason", b.reason}};
+}
 BlessRecord blessFrom(const nlohmann::json& j) {
   return {j.value("date", ""), j.value("commit", ""), j.value("reason", "")};
 }
@@ -51,13 +61,59 @@ std::vector<std::string> runLengthValues(const nlohmann::json& list, const char*
       const auto frames = entry.at("frames").get<uint64_t>();
       if (frames == 0 || frames > kMaxManifestFrames - values.size())
         throw std::out_of_range(std::string(key) + ": a repeat of " + std::to_string(frames) +
-                                " frames is outside 1.." + std::to_string(kMaxManifestFrames) + " in all");
+                                " frames is outside 1.." + std::to_string(kMaxManifestFrames) +
+                                " in all");
       values.insert(values.end(), size_t(frames), entry.at("repeat").get<std::string>());
     }
   }
   return values;
 }
+
+nlohmann::json positiveJson(const Positive& p, const Manifest& m) {
+  nlohmann::json j = {{"environment", p.environment.toJson()},
+                      {"date", p.bless.date},
+                      {"renderer_commit", p.bless.commit},
+                      {"reason", p.bless.reason}};
+  if (p.sequence == m.sequence && p.signatures == m.signatures) {
+    j["same_frames_as_primary"] = true;
+  } else {
+    j["frame_sha256"] = runLengthJson(p.sequence);
+    j["frame_signatures"] = runLengthJson(p.signatures);
+  }
+  return j;
+}
+
+Positive positiveFrom(const nlohmann::json& j, const Manifest& m) {
+  Positive p;
+  p.environment = Environment::fromJson(j.at("environment"));
+  p.bless = {j.at("date").get<std::string>(), j.at("renderer_commit").get<std::string>(),
+             j.at("reason").get<std::string>()};
+  if (j.value("same_frames_as_primary", false)) {
+    p.sequence = m.sequence;
+    p.signatures = m.signatures;
+  } else {
+    p.sequence = runLengthValues(j.at("frame_sha256"), "other_environments.frame_sha256");
+    p.signatures = runLengthValues(j.at("frame_signatures"), "other_environments.frame_signatures");
+  }
+  if (p.sequence.empty() || p.signatures.size() != p.sequence.size())
+    throw std::out_of_range("other_environments: " + p.environment.fingerprint() + " lists " +
+                            std::to_string(p.sequence.size()) + " frame hashes and " +
+                            std::to_string(p.signatures.size()) + " signatures");
+  return p;
+}
 }  // namespace
+
+std::vector<Positive> Manifest::positives() const {
+  std::vector<Positive> all{{environment, bless, sequence, signatures}};
+  all.insert(all.end(), others.begin(), others.end());
+  return all;
+}
+
+std::optional<Positive> Manifest::positiveFor(const std::string& fingerprint) const {
+  for (auto& p : positives())
+    if (p.environment.fingerprint() == fingerprint) return p;
+  return std::nullopt;
+}
 
 nlohmann::json Manifest::toJson() const {
   nlohmann::json j = {{"case", caseName},
@@ -71,9 +127,16 @@ nlohmann::json Manifest::toJson() const {
                       {"frame_sha256", runLengthJson(sequence)},
                       {"frame_signatures", runLengthJson(signatures)}};
   for (const auto& h : history) j["history"].push_back(blessJson(h));
+  if (!others.empty()) {
+    j["other_environments"] = nlohmann::json::array();
+    for (const auto& p : others) j["other_environments"].push_back(positiveJson(p, *this));
+  }
   for (const auto& f : frames)
-    j["frames"].push_back(
-        {{"frame", f.frame}, {"file", f.file}, {"sha256", f.sha256}, {"width", f.width}, {"height", f.height}});
+    j["frames"].push_back({{"frame", f.frame},
+                           {"file", f.file},
+                           {"sha256", f.sha256},
+                           {"width", f.width},
+                           {"height", f.height}});
   return j;
 }
 
@@ -85,15 +148,19 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
     m.environment = Environment::fromJson(j.at("environment"));
     m.bless = {j.at("date").get<std::string>(), j.at("renderer_commit").get<std::string>(),
                j.at("reason").get<std::string>()};
-    for (const auto& h : j.value("history", nlohmann::json::array())) m.history.push_back(blessFrom(h));
+    for (const auto& h : j.value("history", nlohmann::json::array()))
+      m.history.push_back(blessFrom(h));
     for (const auto& f : j.at("frames"))
-      m.frames.push_back({f.at("frame").get<int>(), f.at("file").get<std::string>(), f.at("sha256").get<std::string>(),
-                          f.at("width").get<int>(), f.at("height").get<int>()});
+      m.frames.push_back({f.at("frame").get<int>(), f.at("file").get<std::string>(),
+                          f.at("sha256").get<std::string>(), f.at("width").get<int>(),
+                          f.at("height").get<int>()});
     // Absent in manifests blessed before every frame was hashed; the runner reports those.
     if (j.contains("frame_sha256"))
       m.sequence = runLengthValues(j.at("frame_sha256"), "frame_sha256");
     if (j.contains("frame_signatures"))
       m.signatures = runLengthValues(j.at("frame_signatures"), "frame_signatures");
+    for (const auto& o : j.value("other_environments", nlohmann::json::array()))
+      m.others.push_back(positiveFrom(o, m));
   } catch (const nlohmann::json::exception& e) {
     throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
                       restoreHint(where.parent_path()));
@@ -105,6 +172,11 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
     throw GoldenError(where.string() + ": frame_signatures lists " +
                       std::to_string(m.signatures.size()) + " frames, frame_sha256 " +
                       std::to_string(m.sequence.size()) + "; " + restoreHint(where.parent_path()));
+  std::set<std::string> fingerprints;
+  for (const auto& p : m.positives())
+    if (!fingerprints.insert(p.environment.fingerprint()).second)
+      throw GoldenError(where.string() + ": two positives for the environment '" +
+                        p.environment.fingerprint() + "'; " + restoreHint(where.parent_path()));
   for (const auto& f : m.frames)
     if (!m.sequence.empty() && (f.frame < 0 || size_t(f.frame) >= m.sequence.size() ||
                                 m.sequence[size_t(f.frame)] != f.sha256))
@@ -134,7 +206,8 @@ Manifest readManifest(const std::filesystem::path& file) {
   try {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw GoldenError(file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) + "); " + hint);
+    throw GoldenError(file.string() + ": not valid JSON (" + jsonErrorWithoutContent(e.what()) +
+                      "); " + hint);
   }
   return Manifest::fromJson(j, file);
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ class GoldenError : public InputError {
 // path relative to the working directory when it lies below it).
 std::string restoreHint(const std::filesystem::path& dir);
 
+// "frame_0015": a frame's file name less its extension, in a golden folder and in a run's
+// folder alike (bless --from finds a run's frames by it).
+std::string frameBase(int frame);
+
 struct GoldenFrame {
   int frame = 0;
   std::string file;    // relative to the golden folder, e.g. "frame_0015.exr"
@@ -39,6 +44,17 @@ struct BlessRecord {
   std::string reason;
 };
 
+// What one environment renders for the case: its fingerprint's exact expectation. The primary
+// positive is the manifest's own (environment, frames stored as EXR); every other environment
+// blessed since (bless --add-environment) keeps only its hashes and signatures, since the exact
+// path needs no image and the tolerance path compares with the primary's EXRs.
+struct Positive {
+  Environment environment;
+  BlessRecord bless;
+  std::vector<std::string> sequence;    // pixelSha256 of every rendered frame
+  std::vector<std::string> signatures;  // golden::frameSignature of every rendered frame
+};
+
 struct Manifest {
   std::string caseName;
   std::string caseSha256;  // of the case file's bytes when blessed
@@ -47,11 +63,19 @@ struct Manifest {
   std::vector<BlessRecord> history;  // earlier blesses, newest first
   std::vector<GoldenFrame> frames;   // the frames stored as EXR (the case's output.frames)
   // pixelSha256 of every rendered frame, index = frame number ("frame_sha256"): frames no EXR
-  // covers are still checked bit for bit in the golden's environment.
+  // covers are still checked bit for bit in the primary's environment.
   std::vector<std::string> sequence;
   // golden::frameSignature of every rendered frame ("frame_signatures"): what each frame looks
   // like, compared within tolerances in other environments, where the hashes differ.
   std::vector<std::string> signatures;
+  // Positives of other environments ("other_environments"), in the order they were added. One
+  // whose frames hash as the primary's is written as "same_frames_as_primary" (no second list).
+  std::vector<Positive> others;
+
+  // The primary positive, then the others.
+  std::vector<Positive> positives() const;
+  // The positive blessed in the environment of `fingerprint`, or nullopt.
+  std::optional<Positive> positiveFor(const std::string& fingerprint) const;
 
   nlohmann::json toJson() const;
   static Manifest fromJson(const nlohmann::json& j, const std::filesystem::path& where);

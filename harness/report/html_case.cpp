@@ -217,18 +217,24 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
     if (ownFingerprint) s += "<dt>fingerprint</dt><dd>" + escapeMarkup(c.fingerprint) + "</dd>";
     if (!c.goldenFingerprint.empty()) {
       const std::string& mine = c.fingerprint.empty() ? runFingerprint : c.fingerprint;
-      s += "<dt>golden made on</dt><dd>" + escapeMarkup(c.goldenFingerprint) +
-           (c.goldenFingerprint == mine ? " (same environment)" : " (different environment)") +
-           "</dd>";
+      // Which verdict: bit for bit against this environment's positive, or within tolerances
+      // for want of one (never a tolerance pass that reads like an exact one).
+      s += c.goldenMode == "tolerance"
+               ? "<dt>golden</dt><dd class=\"tolerance\">tolerance: no positive for " +
+                     escapeMarkup(mine) + "; compared with the positive of " +
+                     escapeMarkup(c.goldenFingerprint) + "</dd>"
+               : "<dt>golden</dt><dd>exact: this environment's positive (" +
+                     escapeMarkup(c.goldenFingerprint) + ")</dd>";
     }
     s += "</dl>\n";
   }
   s += "<h3>Frames compared with goldens</h3>\n" + metricsTable(c, id);
   if (const auto& q = c.sequenceCheck; !q.mode.empty())
     s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
-         (q.mode == "exact" ? "pixel hashes, bit-exact (golden's environment)"
-                            : "quality signatures within tolerance (another environment)" +
-                                  escapeMarkup(run::sequenceWorst(q))) +
+         (q.mode == "exact"
+              ? "pixel hashes, bit-exact (this environment's positive)"
+              : "quality signatures within tolerance (no positive for this environment)" +
+                    escapeMarkup(run::sequenceWorst(q))) +
          "</p>\n";
   s += firstDifference(c, id, dir);
   s += invariantsTable(c);

@@ -60,7 +60,8 @@ std::string renderJUnit(const run::RunResults& r) {
       case run::CaseStatus::Stale: {
         const auto lines = failureLines(c);
         // A case-level reason (unusable goldens, no goldens under CI) heads the list.
-        const std::string body = (c.message.empty() ? std::string() : c.message + "\n") + join(lines);
+        const std::string body =
+            (c.message.empty() ? std::string() : c.message + "\n") + join(lines);
         const bool stale = c.status == run::CaseStatus::Stale;
         const std::string summary = !firstLine.empty() ? firstLine
                                     : lines.empty()
@@ -80,6 +81,12 @@ std::string renderJUnit(const run::RunResults& r) {
         break;
     }
     std::string out = c.message.empty() ? "" : c.message + "\n";
+    // Which verdict the goldens gave: bit for bit, or within tolerances for want of a positive.
+    if (!c.goldenMode.empty())
+      out += "golden: " +
+             (c.goldenMode == "exact" ? std::string("exact (this environment's positive)")
+                                      : "tolerance: no positive for " + c.fingerprint) +
+             "\n";
     if (!c.blessCommand.empty()) out += "bless: " + c.blessCommand + "\n";
     if (!out.empty()) s += "<system-out>" + escapeMarkup(out) + "</system-out>\n";
     s += "</testcase>\n";

@@ -35,7 +35,8 @@ int readBuildId(dl_phdr_info* info, size_t, void* out) {
       const uint8_t* name = p + sizeof(note);
       const uint8_t* desc = name + align4(note.n_namesz);
       if (desc + note.n_descsz > end) break;
-      if (note.n_type == NT_GNU_BUILD_ID && note.n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0) {
+      if (note.n_type == NT_GNU_BUILD_ID && note.n_namesz == 4 &&
+          std::memcmp(name, "GNU", 4) == 0) {
         id = "build-id " + toHex(desc, note.n_descsz);
         return 1;
       }
@@ -80,7 +81,9 @@ std::string digestOf(std::vector<fs::path> files) {
   return hexOf(h);
 }
 
-std::string shaderIdentity() {
+}  // namespace
+
+std::string spirvIdentity() {
   std::vector<fs::path> files;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(shaderFolder(), ec))
@@ -88,15 +91,15 @@ std::string shaderIdentity() {
   return digestOf(std::move(files));
 }
 
-}  // namespace
-
-std::string buildIdentity(const std::string& deviceRequest, bool missingGoldenFails) {
+std::string buildIdentity(const std::string& deviceRequest, bool missingGoldenFails,
+                          bool requireExact) {
   std::string device = deviceRequest;
   if (device.empty())
     if (const char* env = std::getenv("TAA_DEVICE")) device = env;
-  return executableIdentity() + " | spirv " + shaderIdentity() + " | " + golden::cpuFeatureLevel() +
+  return executableIdentity() + " | spirv " + spirvIdentity() + " | " + golden::cpuFeatureLevel() +
          " | device " + (device.empty() ? "default" : device) +
-         (missingGoldenFails ? " | missing goldens fail" : " | missing goldens skip");
+         (missingGoldenFails ? " | missing goldens fail" : " | missing goldens skip") +
+         (requireExact ? " | exact required" : "");
 }
 
 std::string folderDigest(const fs::path& dir) {

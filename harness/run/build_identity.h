@@ -15,8 +15,14 @@ namespace taa::run {
 // file's own SHA-256 where it has none), a SHA-256 over every .spv file of shaderFolder()
 // (names and bytes: an edited shader or another TAA_SHADER_DIR is another identity), the CPU
 // feature level (golden/environment.h), the device asked for (--device, else $TAA_DEVICE) and
-// whether a case without goldens fails.
-std::string buildIdentity(const std::string& deviceRequest, bool missingGoldenFails);
+// whether a case without goldens fails, and whether one without a positive for this environment
+// does (--require-exact).
+std::string buildIdentity(const std::string& deviceRequest, bool missingGoldenFails,
+                          bool requireExact);
+
+// The SHA-256 over every .spv file of shaderFolder(), as buildIdentity has it: the built-in
+// shaders' bytes (`bless --from` refuses a run made from other ones).
+std::string spirvIdentity();
 
 // SHA-256 over a folder's regular files (names and bytes, sorted by name); "none" when it
 // does not exist: a case's goldens as a run read them.

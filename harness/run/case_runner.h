@@ -24,6 +24,9 @@ struct RunOptions {
   // A case without goldens fails (CI, where it means a golden was never committed) instead
   // of being a skip (a new case on a developer's machine).
   bool missingGoldenFails = false;
+  // A case whose goldens hold no positive for this environment fails instead of passing on the
+  // tolerance path (`run --require-exact`, TAA_REQUIRE_EXACT=1).
+  bool requireExact = false;
   // Called before each frame with (frame, frame count); for terminal progress.
   std::function<void(int, int)> progress;
   // Reference frames shared by the run's cases (and the frames of a still scene); null:

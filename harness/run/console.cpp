@@ -17,9 +17,15 @@ std::string fmt(const char* f, double v) {
 
 std::string sequenceWorst(const CaseResult::SequenceCheck& q) {
   if (q.mode != "signature") return "";
-  return " (worst: cell " + std::to_string(q.worstCell) + "/255 at frame " +
-         std::to_string(q.worstCellFrame) + ", channel mean " + fmt("%.3g", q.worstMean) +
-         " at frame " + std::to_string(q.worstMeanFrame) + ")";
+  // A measure that never rose above zero has no frame: say so, not "at frame -1".
+  std::string worst;
+  if (q.worstCellFrame >= 0)
+    worst =
+        "cell " + std::to_string(q.worstCell) + "/255 at frame " + std::to_string(q.worstCellFrame);
+  if (q.worstMeanFrame >= 0)
+    worst += (worst.empty() ? "" : ", ") + std::string("channel mean ") + fmt("%.3g", q.worstMean) +
+             " at frame " + std::to_string(q.worstMeanFrame);
+  return " (worst: " + (worst.empty() ? std::string("no difference") : worst) + ")";
 }
 
 bool caseFailed(const CaseResult& c) {
@@ -51,8 +57,8 @@ void printCase(std::ostream& out, const CaseResult& c) {
   }
   if (const auto& q = c.sequenceCheck; !q.mode.empty() && c.firstDifference.frame < 0)
     out << "PASS " << c.name << " sequence: " << q.frames << " frames "
-        << (q.mode == "exact" ? "identical to the golden's"
-                              : "within signature tolerance of the golden's")
+        << (q.mode == "exact" ? "identical to this environment's positive"
+                              : "within signature tolerance of the nearest positive's")
         << sequenceWorst(q) << "\n";
   if (const auto& d = c.firstDifference; d.frame >= 0) {
     out << "FAIL " << c.name << " frame " << d.frame << " sequence: " << d.detail;
@@ -95,10 +101,12 @@ void printCase(std::ostream& out, const CaseResult& c) {
 }
 
 void printSummary(std::ostream& out, const RunResults& r, double seconds) {
-  int pass = 0, skipped = 0, checks = 0;
+  int pass = 0, skipped = 0, checks = 0, exact = 0, tolerance = 0;
   std::string failed;
   for (const auto& c : r.cases) {
     checks += int(c.frames.size() + c.invariants.size());
+    exact += c.goldenMode == "exact";
+    tolerance += c.goldenMode == "tolerance";
     if (c.status == CaseStatus::Pass) {
       ++pass;
     } else if (c.status == CaseStatus::NoGolden) {
@@ -109,7 +117,9 @@ void printSummary(std::ostream& out, const RunResults& r, double seconds) {
   }
   out << "summary: " << r.cases.size() << " cases, " << pass << " pass, " << skipped
       << " skipped (no goldens), " << (r.cases.size() - size_t(pass + skipped)) << " fail; "
-      << checks << " checks; " << fmt("%.1f", seconds) << " s";
+      << checks << " checks; goldens: " << exact << " exact, " << tolerance << " by tolerance"
+      << (tolerance ? " (no positive for " + r.fingerprint + ")" : "") << "; "
+      << fmt("%.1f", seconds) << " s";
   if (!failed.empty()) out << "; failing: " << failed;
   out << "\n";
 }

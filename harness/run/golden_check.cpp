@@ -11,14 +11,9 @@
 namespace taa::run {
 
 namespace fs = std::filesystem;
+using golden::frameBase;
 
 namespace {
-
-std::string frameBase(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "frame_%04d", frame);
-  return buf;
-}
 
 std::string blessCommandFor(const spec::CaseSpec& spec) {
   return "taa-harness bless " + spec.file.string() + " --reason \"<why the image changed>\"";
@@ -103,6 +98,25 @@ void writeAbImages(const fs::path& caseDir, const std::string& rel, FrameCompari
   fc.images.zoomAb = rel + "/" + base + ".zoom_ab.png";
 }
 
+namespace {
+
+// Of the positives, the one whose environment shares the most with `env` (device, driver, Vulkan
+// version, CPU level, in that order of weight); the primary on a tie, since its EXRs are the
+// ones the stored frames are compared with anyway.
+const golden::Positive& nearestPositive(const std::vector<golden::Positive>& all,
+                                        const golden::Environment& env) {
+  auto score = [&](const golden::Environment& e) {
+    return (e.device == env.device) * 8 + (e.driverInfo == env.driverInfo) * 4 +
+           (e.apiVersion == env.apiVersion) * 2 + (e.cpuFeatures == env.cpuFeatures);
+  };
+  const golden::Positive* best = &all.front();
+  for (const auto& p : all)
+    if (score(p.environment) > score(best->environment)) best = &p;
+  return *best;
+}
+
+}  // namespace
+
 GoldenCheck::GoldenCheck(const spec::CheckedCase& spec, const golden::Environment& env,
                          const RunOptions& options)
     : spec_(spec), options_(options), environment_(env.fingerprint()) {
@@ -114,14 +128,18 @@ GoldenCheck::GoldenCheck(const spec::CheckedCase& spec, const golden::Environmen
   } catch (const golden::GoldenError& e) {
     problem_ = e.what();
   }
-  // Hashes are comparable only where lavapipe reproduces the golden's bytes; elsewhere every
+  // Hashes are comparable only where lavapipe reproduces a positive's bytes; elsewhere every
   // frame's signature is compared within tolerances.
   if (!goldens_) return;
-  const auto& m = goldens_->manifest;
-  if (m.environment.fingerprint() == environment_)
-    mode_ = m.sequence.empty() ? Mode::None : Mode::Exact;
-  else
-    mode_ = m.signatures.empty() ? Mode::None : Mode::Signature;
+  const auto all = goldens_->manifest.positives();
+  if (const auto own = goldens_->manifest.positiveFor(environment_)) {
+    positive_ = *own;
+    ownPositive_ = true;
+    mode_ = positive_.sequence.empty() ? Mode::None : Mode::Exact;
+  } else {
+    positive_ = nearestPositive(all, env);
+    mode_ = positive_.signatures.empty() ? Mode::None : Mode::Signature;
+  }
 }
 
 void GoldenCheck::observe(const FrameRecord& r) {
@@ -131,9 +149,9 @@ void GoldenCheck::observe(const FrameRecord& r) {
   const auto f = size_t(r.frame);
   std::string why;
   if (mode_ == Mode::Exact) {
-    const auto& golden = goldens_->manifest.sequence;
+    const auto& golden = positive_.sequence;
     if (f < golden.size() && golden[f] != r.colorSha256) why = "pixels";
-  } else if (const auto& golden = goldens_->manifest.signatures; f < golden.size()) {
+  } else if (const auto& golden = positive_.signatures; f < golden.size()) {
     const auto d = golden::signatureDistance(golden[f], signatures_.back());
     auto& q = worst_;
     if (d.cell > q.cell) {
@@ -164,7 +182,7 @@ void GoldenCheck::observe(const FrameRecord& r) {
 
 bool GoldenCheck::compareSequence(CaseResult& result) {
   const bool exact = mode_ == Mode::Exact;
-  const auto& golden = exact ? goldens_->manifest.sequence : goldens_->manifest.signatures;
+  const auto& golden = exact ? positive_.sequence : positive_.signatures;
   auto& q = result.sequenceCheck;
   q.mode = exact ? "exact" : "signature";
   q.frames = int(std::min(golden.size(), sequence_.size()));
@@ -192,11 +210,11 @@ bool GoldenCheck::compareSequence(CaseResult& result) {
                shortSha(d.actualSha256) + " != " + shortSha(d.goldenSha256) + ")" +
                (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are identical" : "");
   } else {
-    d.detail = "frame " + std::to_string(f) +
-               " is the first whose signature is out of tolerance against the golden's (another "
-               "environment): " +
-               firstDiffWhy_ +
-               (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are within tolerance" : "");
+    d.detail =
+        "frame " + std::to_string(f) +
+        " is the first whose signature is out of tolerance against the nearest positive's (" +
+        positive_.environment.fingerprint() + "): " + firstDiffWhy_ +
+        (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are within tolerance" : "");
   }
   if (!options_.writeImages) return true;
   const fs::path caseDir = options_.outDir / spec_.name;
@@ -247,66 +265,30 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
     return CaseStatus::Fail;
   }
   const auto& m = goldens_->manifest;
-  result.goldenFingerprint = m.environment.fingerprint();
-  const bool sameEnvironment = result.goldenFingerprint == environment_;
+  result.goldenFingerprint = positive_.environment.fingerprint();
+  result.goldenMode = ownPositive_ ? "exact" : "tolerance";
   bool anyFailed = false;
   std::vector<std::string> notes;
-  for (const auto& [frame, image] : outputs) {
-    FrameComparison fc;
-    fc.frame = frame;
-    fc.actualSha256 = sequence_.at(size_t(frame));
-    fc.toleranceMode = !sameEnvironment;
-    const golden::GoldenFrame* gf = m.find(frame);
-    if (!gf) {
-      fc.status = FrameStatus::MissingGolden;
-      fc.failures.push_back("frame " + std::to_string(frame) + " is checked but was never blessed");
+  if (!ownPositive_) {
+    notes.push_back(toleranceNote());
+    if (options_.requireExact) {
+      notes.push_back(requireExactNote());
       anyFailed = true;
-      if (options_.writeImages)
-        writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
-      result.frames.push_back(std::move(fc));
-      continue;
     }
-    fc.goldenSha256 = gf->sha256;
-    const bool exact = fc.actualSha256 == gf->sha256;
-    const Image& goldenImage = goldens_->load(*gf);
-    if (!goldenImage.sameShape(image)) {
-      fc.status = FrameStatus::Failed;
-      fc.failures.push_back("size " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height) + " differs from the golden's " +
-                            std::to_string(goldenImage.width) + "x" +
-                            std::to_string(goldenImage.height));
-      anyFailed = true;
-      result.frames.push_back(std::move(fc));
-      continue;
-    }
-    const auto measured =
-        compare::measureAgainstGolden(goldenImage, image, spec_.checks.tolerance.pixel_threshold);
-    fc.metrics = measured.metrics;
-    if (exact) {
-      fc.status = FrameStatus::Exact;
-    } else if (sameEnvironment) {
-      // Same driver and CPU level: lavapipe reproduces bytes, so any change is real.
-      fc.status = FrameStatus::Failed;
-      fc.failures.push_back("pixels differ from the golden in the same environment (sha256 " +
-                            shortSha(fc.actualSha256) + " != " + shortSha(gf->sha256) + ")");
-    } else {
-      fc.failures = compare::toleranceViolations(fc.metrics, spec_.checks.tolerance);
-      fc.status = fc.failures.empty() ? FrameStatus::WithinTolerance : FrameStatus::Failed;
-    }
-    anyFailed |= fc.status == FrameStatus::Failed;
-    if (options_.writeImages)
-      writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap,
-                       spec_.report.zoom);
-    result.frames.push_back(std::move(fc));
   }
-  if (sameEnvironment && m.sequence.empty()) {
+  for (const auto& [frame, image] : outputs) {
+    result.frames.push_back(compareStoredFrame(frame, image));
+    anyFailed |= result.frames.back().status == FrameStatus::Failed ||
+                 result.frames.back().status == FrameStatus::MissingGolden;
+  }
+  if (ownPositive_ && positive_.sequence.empty()) {
     notes.push_back(
         (dir_ / "manifest.json").string() +
         " has no frame_sha256 (blessed before every frame was hashed), so only the stored frames "
         "were checked; re-bless it");
     anyFailed = true;
   }
-  if (!sameEnvironment && m.signatures.empty()) {
+  if (!ownPositive_ && positive_.signatures.empty()) {
     notes.push_back((dir_ / "manifest.json").string() +
                     " has no frame_signatures (blessed before frames had signatures), so only the "
                     "stored frames were checked in this environment; re-bless it");
@@ -314,13 +296,82 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
   }
   if (mode_ != Mode::None) anyFailed |= compareSequence(result);
   const bool stale = m.caseSha256 != caseSha;
-  if (stale)
+  if (stale) {
+    // An edit that changed no frame (a description, a comment's worth of JSON) keeps its pass;
+    // one whose frames match no positive is stale on every path, the tolerance path too.
+    const auto all = m.positives();
+    const bool asBlessed = std::any_of(all.begin(), all.end(), [&](const golden::Positive& p) {
+      return !p.sequence.empty() && p.sequence == sequence_;
+    });
     notes.push_back(
         "the case file (or a file it references) changed since its goldens were blessed (" +
-        m.bless.date + ", \"" + m.bless.reason + "\")");
+        m.bless.date + ", \"" + m.bless.reason + "\")" +
+        (asBlessed ? "; its frames are still those of a positive"
+                   : "; its frames match no positive"));
+    anyFailed |= !asBlessed;
+  }
   for (const auto& n : notes) result.message += (result.message.empty() ? "" : "; ") + n;
   if (!anyFailed) return CaseStatus::Pass;
   return stale ? CaseStatus::Stale : CaseStatus::Fail;
+}
+
+std::string GoldenCheck::toleranceNote() const {
+  return "tolerance: no positive for " + environment_ + " (compared with the positive of " +
+         positive_.environment.fingerprint() + ")";
+}
+
+std::string GoldenCheck::requireExactNote() const {
+  return "--require-exact: no positive for this environment; add one from a run here with "
+         "`taa-harness bless --add-environment " +
+         spec_.file.string() +
+         " --reason \"<which machine>\"` or `taa-harness bless --from OUT --add-environment " +
+         spec_.file.string() + " --reason \"...\"`";
+}
+
+FrameComparison GoldenCheck::compareStoredFrame(int frame, const Image& image) {
+  const fs::path caseDir = options_.outDir / spec_.name;
+  FrameComparison fc;
+  fc.frame = frame;
+  fc.actualSha256 = sequence_.at(size_t(frame));
+  fc.toleranceMode = !ownPositive_;
+  const golden::GoldenFrame* gf = goldens_->manifest.find(frame);
+  if (!gf) {
+    fc.status = FrameStatus::MissingGolden;
+    fc.failures.push_back("frame " + std::to_string(frame) + " is checked but was never blessed");
+    if (options_.writeImages)
+      writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
+    return fc;
+  }
+  // The stored EXR is the primary positive's; another environment's positive has only its hash.
+  const auto& own = positive_.sequence;
+  fc.goldenSha256 = ownPositive_ && size_t(frame) < own.size() ? own[size_t(frame)] : gf->sha256;
+  const Image& goldenImage = goldens_->load(*gf);
+  if (!goldenImage.sameShape(image)) {
+    fc.status = FrameStatus::Failed;
+    fc.failures.push_back("size " + std::to_string(image.width) + "x" +
+                          std::to_string(image.height) + " differs from the golden's " +
+                          std::to_string(goldenImage.width) + "x" +
+                          std::to_string(goldenImage.height));
+    return fc;
+  }
+  const auto measured =
+      compare::measureAgainstGolden(goldenImage, image, spec_.checks.tolerance.pixel_threshold);
+  fc.metrics = measured.metrics;
+  if (fc.actualSha256 == fc.goldenSha256) {
+    fc.status = FrameStatus::Exact;
+  } else if (ownPositive_) {
+    // This environment has a positive: lavapipe reproduces bytes, so any change is real.
+    fc.status = FrameStatus::Failed;
+    fc.failures.push_back("pixels differ from this environment's positive (sha256 " +
+                          shortSha(fc.actualSha256) + " != " + shortSha(fc.goldenSha256) + ")");
+  } else {
+    fc.failures = compare::toleranceViolations(fc.metrics, spec_.checks.tolerance);
+    fc.status = fc.failures.empty() ? FrameStatus::WithinTolerance : FrameStatus::Failed;
+  }
+  if (options_.writeImages)
+    writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap,
+                     spec_.report.zoom);
+  return fc;
 }
 
 }  // namespace taa::run

@@ -1,6 +1,6 @@
 // A case's golden verdict: the goldens verified before use, every frame's hash against the
-// golden sequence (in the golden's environment), the checked frames' images against the
-// stored EXRs (bit-exact there, with tolerances elsewhere), and staleness.
+// positive of this run's environment where the set has one, the checked frames' images against
+// the stored EXRs (bit-exact there, with tolerances where it has none), and staleness.
 #pragma once
 
 #include <filesystem>
@@ -39,7 +39,7 @@ class GoldenCheck {
               const RunOptions& options);
 
   // Every rendered frame, in order, with its colour and hash: keeps the first frame whose
-  // hash differs from the golden sequence (only in the golden's environment).
+  // hash differs from the golden sequence (only where this environment has a positive).
   void observe(const FrameRecord& r);
 
   // The verdict, with result.frames, message, blessCommand, goldenFingerprint and
@@ -52,6 +52,11 @@ class GoldenCheck {
   // Fills result.firstDifference (and writes its images) when the sequence differs from
   // the golden's; returns whether it does.
   bool compareSequence(CaseResult& result);
+  // A stored (output) frame against its golden: by hash where this environment has a positive,
+  // by the case's tolerances against the primary's EXR elsewhere; writes its images.
+  FrameComparison compareStoredFrame(int frame, const Image& image);
+  std::string toleranceNote() const;
+  std::string requireExactNote() const;
 
   const spec::CheckedCase& spec_;
   const RunOptions& options_;
@@ -59,8 +64,11 @@ class GoldenCheck {
   std::string environment_;    // this run's fingerprint
   std::optional<golden::GoldenSet> goldens_;
   std::string problem_;  // why the goldens cannot be used (GoldenError), empty when fine
-  // How every frame is compared: by hash in the golden's environment, by signature elsewhere.
+  // How every frame is compared: by hash against this environment's positive where the set has
+  // one, else by signature against the nearest positive (and the stored EXRs by tolerance).
   enum class Mode { None, Exact, Signature } mode_ = Mode::None;
+  golden::Positive positive_;  // the positive compared with: this environment's, or the nearest
+  bool ownPositive_ = false;   // positive_ is this environment's
   std::vector<std::string> sequence_;    // this run's hashes, frame by frame
   std::vector<std::string> signatures_;  // and signatures
   struct {

@@ -80,6 +80,11 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
   RunResults out;
   out.device = first.results.device;
   out.fingerprint = first.results.fingerprint;
+  // Frames of several environments are no one environment's positive: bless --from refuses a
+  // merged folder whose environment is left empty.
+  out.environment = first.results.environment;
+  for (const auto& s : shards)
+    if (s.results.environment.fingerprint() != out.environment.fingerprint()) out.environment = {};
   out.commit = first.results.commit;
   // Shards of a CI matrix are built on machines of their own, so their builds may differ; the
   // merged results name one only where they agree (no later run takes verdicts from it else).

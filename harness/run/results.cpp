@@ -79,6 +79,7 @@ ImageMetrics metricsFrom(const nlohmann::json& j) {
 nlohmann::json toJson(const RunResults& r) {
   nlohmann::json out = {{"device", r.device},
                         {"fingerprint", r.fingerprint},
+                        {"environment", r.environment.toJson()},
                         {"commit", r.commit},
                         {"build", r.build},
                         {"suite",
@@ -100,11 +101,13 @@ nlohmann::json toJson(const RunResults& r) {
                          {"bless_command", c.blessCommand},
                          {"fingerprint", c.fingerprint},
                          {"golden_fingerprint", c.goldenFingerprint},
+                         {"golden_mode", c.goldenMode},
                          {"reference_rmse", c.referenceRmse},
                          {"frame_ms", c.frameMs},
                          {"frame_stats", c.frameStats},
                          {"log", c.log},
                          {"frame_sha256", c.frameSha256},
+                         {"frame_signatures", c.frameSignatures},
                          {"seconds", c.seconds}};
     if (const auto& q = c.sequenceCheck; !q.mode.empty())
       jc["sequence_check"] = {{"mode", q.mode},
@@ -163,6 +166,7 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
   RunResults r;
   r.device = j.value("device", "");
   r.fingerprint = j.value("fingerprint", "");
+  if (j.contains("environment")) r.environment = golden::Environment::fromJson(j.at("environment"));
   r.commit = j.value("commit", "");
   r.build = j.value("build", "");
   r.notRun = j.value("not_run", size_t(0));
@@ -193,12 +197,14 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     c.blessCommand = jc.value("bless_command", "");
     c.fingerprint = jc.value("fingerprint", "");
     c.goldenFingerprint = jc.value("golden_fingerprint", "");
+    c.goldenMode = jc.value("golden_mode", "");
     c.referenceRmse = jc.value("reference_rmse", std::vector<double>{});
     c.frameMs = jc.value("frame_ms", std::vector<double>{});
     c.frameStats = jc.value("frame_stats", std::map<std::string, std::vector<double>>{});
     c.log = jc.value("log", std::vector<std::string>{});
     c.seconds = jc.value("seconds", 0.0);
     c.frameSha256 = jc.value("frame_sha256", std::vector<std::string>{});
+    c.frameSignatures = jc.value("frame_signatures", std::vector<std::string>{});
     if (jc.contains("sequence_check")) {
       const auto& jq = jc["sequence_check"];
       auto& q = c.sequenceCheck;

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "golden/environment.h"
+
 namespace taa::run {
 
 struct ImageMetrics {
@@ -96,13 +98,16 @@ struct CaseResult {
   std::string message;        // error text, or the stale/no-golden explanation
   std::string blessCommand;   // what to run when the change is intended
   std::string fingerprint;    // this run's environment
-  std::string goldenFingerprint;
+  std::string goldenFingerprint;  // the positive compared with (this environment's, or the nearest)
+  // "exact": this environment has a positive, any changed byte fails; "tolerance": it has none,
+  // frames were compared within tolerances with goldenFingerprint's; "": no goldens compared.
+  std::string goldenMode;
   std::string goldensSha256;  // the case's golden folder as this run read it (run::folderDigest)
   std::vector<FrameComparison> frames;
   FirstDifference firstDifference;
   std::vector<std::string> frameSha256;  // every rendered frame's pixel hash, when goldens apply
-  std::vector<std::string> frameSignatures;  // and golden::frameSignature (for bless; not in JSON)
-  // How every frame compared with the golden sequence: "exact" (hashes, golden's environment),
+  std::vector<std::string> frameSignatures;  // and golden::frameSignature (bless, bless --from)
+  // How every frame compared with the golden sequence: "exact" (hashes, this environment's positive),
   // "signature" (within tolerances, elsewhere) or "" (not compared); with the largest signature
   // distances seen, so the tolerances can be judged against real runs.
   struct SequenceCheck {
@@ -136,8 +141,9 @@ struct SuiteInfo {
 struct RunResults {
   std::string device;
   std::string fingerprint;
-  std::string commit;  // the harness's source commit (golden::rendererCommit)
-  std::string build;   // the executable, SPIR-V, CPU level and device asked for (build_identity.h)
+  golden::Environment environment;  // the same, field by field: what `bless --from` adds
+  std::string commit;               // the harness's source commit (golden::rendererCommit)
+  std::string build;  // the executable, SPIR-V, CPU level and device asked for (build_identity.h)
   SuiteInfo suite;
   size_t notRun = 0;   // cases --fail-fast left out after the first failure
   std::vector<CaseResult> cases;

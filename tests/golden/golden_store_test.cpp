@@ -199,6 +199,32 @@ TEST(GoldenStore, RunsOfEqualFrameHashesAreStoredOnceAndExpandExactly) {
   EXPECT_EQ(back.signatures, m.signatures);
 }
 
+TEST(GoldenStore, AnotherEnvironmentsPositiveOfTheSameFramesIsStoredOnce) {
+  auto m = manifestFor("why", {7}, 0.25f);
+  m.signatures.assign(m.sequence.size(), "s");
+  Positive same{{"llvmpipe", "llvmpipe", "Mesa", "1.3", "override:avx2"}, {"2026-12-06", "abc", "v3 runner"},
+                m.sequence, m.signatures};
+  Positive own = same;
+  own.environment.cpuFeatures = "override:sse4.1";
+  own.sequence[3] = std::string(64, 'e');
+  m.others = {same, own};
+  const auto j = m.toJson();
+  ASSERT_EQ(j["other_environments"].size(), 2u);
+  EXPECT_TRUE(j["other_environments"][0]["same_frames_as_primary"].get<bool>());
+  EXPECT_FALSE(j["other_environments"][0].contains("frame_sha256"));  // no second list
+  EXPECT_TRUE(j["other_environments"][1].contains("frame_sha256"));
+  const auto back = Manifest::fromJson(j, "m.json");
+  EXPECT_EQ(back.toJson(), j);
+  ASSERT_TRUE(back.positiveFor(own.environment.fingerprint()));
+  EXPECT_EQ(back.positiveFor(own.environment.fingerprint())->sequence, own.sequence);
+  EXPECT_EQ(back.positiveFor(same.environment.fingerprint())->sequence, m.sequence);
+  EXPECT_FALSE(back.positiveFor("elsewhere"));
+  // Two positives for one environment cannot both be right.
+  auto twice = j;
+  twice["other_environments"][1]["environment"] = twice["other_environments"][0]["environment"];
+  EXPECT_THROW(Manifest::fromJson(twice, "m.json"), GoldenError);
+}
+
 TEST(GoldenStore, AHostileRepeatCountIsRefusedByName) {
   auto j = manifestFor("runs", {7}, 0.25f).toJson();
   for (const auto& frames : {nlohmann::json(0), nlohmann::json(uint64_t(1) << 40), nlohmann::json(-3)}) {

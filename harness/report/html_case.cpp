@@ -6,7 +6,6 @@
 #include "report/html_parts.h"
 #include "report/svg_plot.h"
 #include "report/text_util.h"
-#include "run/console.h"
 
 namespace taa::report::detail {
 
@@ -195,6 +194,21 @@ std::string timingsTable(const run::CaseResult& c) {
 
 }  // namespace
 
+std::string sequenceWorst(const run::CaseResult::SequenceCheck& q) {
+  if (q.mode != "signature") return "";
+  // A frame of -1 means nothing differed: "cell 0/255 at frame -1" would read like a finding.
+  if (q.worstCellFrame < 0 && q.worstMeanFrame < 0) return " (no difference)";
+  const std::string cell = q.worstCellFrame < 0
+                               ? "no cell differs"
+                               : "cell " + std::to_string(q.worstCell) + "/255 at frame " +
+                                     std::to_string(q.worstCellFrame);
+  const std::string mean = q.worstMeanFrame < 0
+                               ? "no channel mean differs"
+                               : "channel mean " + formatNumber(q.worstMean, 3) + " at frame " +
+                                     std::to_string(q.worstMeanFrame);
+  return " (worst: " + cell + ", " + mean + ")";
+}
+
 std::string renderCase(const run::CaseResult& c, size_t index, const std::string& runFingerprint,
                        const fs::path& dir) {
   const std::string id = "case-" + std::to_string(index);
@@ -228,7 +242,7 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
     s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
          (q.mode == "exact" ? "pixel hashes, bit-exact (golden's environment)"
                             : "quality signatures within tolerance (another environment)" +
-                                  escapeMarkup(run::sequenceWorst(q))) +
+                                  escapeMarkup(sequenceWorst(q))) +
          "</p>\n";
   s += firstDifference(c, id, dir);
   s += invariantsTable(c);

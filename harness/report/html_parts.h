@@ -25,6 +25,21 @@ std::string imageOrPlaceholder(const std::filesystem::path& outputDir, const std
 
 std::string renderCase(const run::CaseResult& c, size_t index, const std::string& runFingerprint,
                        const std::filesystem::path& outputDir);
+// " (worst: cell 2/255 at frame 7, channel mean 0.0004 at frame 3)" for a signature check,
+// " (no difference)" when no frame differed from its golden signature, else "".
+std::string sequenceWorst(const run::CaseResult::SequenceCheck& q);
+
+// Whether the summary offers the case for `bless --from`: failing or stale, with a case file.
+bool blessable(const run::CaseResult& c);
+// The summary row's golden, actual and diff thumbnails of the case's first differing frame,
+// linked to where the case shows it (`id`: the case section's id).
+std::string firstDifferenceThumbs(const run::CaseResult& c, const std::string& id,
+                                  const std::filesystem::path& outputDir);
+std::string blessCheckbox(const run::CaseResult& c);
+// The reason and folder fields and the command the page's script builds; `outputDir` is the
+// folder prefilled, the run's --out as given.
+std::string blessPanel(const std::filesystem::path& outputDir);
+
 std::string renderFrame(const run::FrameComparison& f, const std::string& id,
                         const std::filesystem::path& outputDir);
 

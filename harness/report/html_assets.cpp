@@ -99,9 +99,9 @@ nav.toc td a { font-family: var(--mono); }
 .thumbs { display: flex; gap: 4px; align-items: flex-end; text-decoration: none; color: inherit; }
 .thumbs figcaption { font-size: 10px; margin: 0; white-space: nowrap; }
 .thumbs-frame { font: 11px var(--mono); color: #555; align-self: center; white-space: nowrap; }
-img.thumb { height: 54px; width: auto; max-width: 128px; image-rendering: auto; }
-.thumb-none { display: flex; align-items: center; justify-content: center; height: 54px;
-  width: 54px; border: 1px dashed #aaa; color: #777; font: 11px var(--mono); }
+img.thumb { height: 64px; width: auto; max-width: 144px; image-rendering: auto; }
+.thumb-none { display: flex; align-items: center; justify-content: center; height: 64px;
+  width: 64px; border: 1px dashed #aaa; color: #777; font: 11px var(--mono); }
 .bless-from { margin-top: 8px; }
 .bless-fields { display: flex; gap: 6px 16px; flex-wrap: wrap; font: 12px var(--mono); }
 .bless-fields input { font: 12px var(--mono); padding: 2px 4px; }
@@ -267,7 +267,20 @@ const char* const kReportJs = R"JS(
     box.querySelector('code').textContent = words.join(' ');
     box.querySelector('button.copy').textContent = 'copy';
   }
+  // The folder this page was opened from: where the run wrote it, or where a CI artifact was
+  // unpacked. A page from a web server has none to offer; the field says what to type.
+  function pageFolder() {
+    if (location.protocol !== 'file:') return '';
+    try {
+      var p = decodeURIComponent(location.pathname);
+      return p.slice(0, p.lastIndexOf('/')) || '/';
+    } catch (ignored) {
+      return '';
+    }
+  }
   if (document.getElementById('bless-from')) {
+    var dirField = document.getElementById('bless-dir');
+    if (!dirField.value) dirField.value = pageFolder();
     blessPicks().forEach(function (p) { p.addEventListener('change', updateBless); });
     document.getElementById('bless-all').addEventListener('change', function (e) {
       blessPicks().forEach(function (p) { p.checked = e.target.checked; });
@@ -280,8 +293,9 @@ const char* const kReportJs = R"JS(
     // A reload may restore ticks and text after this script ran.
     window.addEventListener('pageshow', updateBless);
   }
-  // #bless-tick=CASE,CASE&bless-dir=D&bless-reason=R[&bless-all=1] ticks, types and clicks
-  // through the real controls and records on <body> what the page shows after each step.
+  // #bless-tick=CASE,CASE&bless-reason=R&bless-dir=D[&bless-all=1] ticks, types the reason,
+  // then the folder, and clicks select-all twice, through the real controls, recording on <body>
+  // what the page shows after each step.
   function runBlessHook(params) {
     if (!params.has('bless-tick') || !document.getElementById('bless-from')) return;
     function shown() {
@@ -293,12 +307,15 @@ const char* const kReportJs = R"JS(
       blessPicks().forEach(function (p) { if (p.getAttribute('data-case') === name) p.click(); });
     });
     body.setAttribute('data-bless-before-reason', shown());
-    ['bless-dir', 'bless-reason'].forEach(function (id) {
+    function type(id) {
       if (!params.has(id)) return;
       var el = document.getElementById(id);
       el.value = params.get(id);
       el.dispatchEvent(new Event('input', {bubbles: true}));
-    });
+    }
+    type('bless-reason');
+    body.setAttribute('data-bless-here', shown());
+    type('bless-dir');
     body.setAttribute('data-bless-command', shown());
     if (!params.has('bless-all')) return;
     var all = document.getElementById('bless-all');

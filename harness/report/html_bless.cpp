@@ -101,21 +101,20 @@ std::string blessCheckbox(const run::CaseResult& c) {
          escapeMarkup(c.name) + "\">";
 }
 
-std::string blessPanel(const fs::path& dir) {
-  return "<div class=\"bless-from\" id=\"bless-from\">\n<h3>Bless ticked cases from this run</h3>\n"
-         "<p class=\"muted\">When the new frames are right: tick the cases above, say why, and "
-         "run the command where the goldens live. It takes the frames and hashes this run wrote "
-         "into its folder, so it renders nothing and needs no Vulkan device. For a report "
-         "downloaded from CI, set the folder to where the artifact was unpacked.</p>\n"
-         "<div class=\"bless-fields\"><label>run folder <input type=\"text\" id=\"bless-dir\" "
-         "spellcheck=\"false\" value=\"" +
-         escapeMarkup(dir.string()) +
-         "\"></label><label>reason <input type=\"text\" id=\"bless-reason\" "
+std::string blessPanel() {
+  return "<div class=\"bless-from\" id=\"bless-from\">\n<h3>Bless ticked cases from this "
+         "run</h3>\n<p class=\"muted\">When the new frames are right: tick the cases above, say "
+         "why, and run the command where the goldens live. It takes the frames and hashes this "
+         "run wrote into its folder, so it renders nothing and needs no Vulkan device. The run "
+         "folder is the one this page was opened from; change it where the folder lies "
+         "elsewhere.</p>\n<div class=\"bless-fields\"><label>run folder <input type=\"text\" "
+         "id=\"bless-dir\" spellcheck=\"false\" placeholder=\"the folder of this report and "
+         "its results.json\"></label><label>reason <input type=\"text\" id=\"bless-reason\" "
          "placeholder=\"why the new frames are right\"></label></div>\n"
-         "<p class=\"bless-hint\" id=\"bless-hint\">The command shows once at least one case is "
-         "ticked and a reason is typed.</p>\n"
-         "<div class=\"bless\" id=\"bless-command\" hidden><code></code>"
-         "<button type=\"button\" class=\"copy\">copy</button></div>\n</div>\n";
+         "<p class=\"bless-hint\" id=\"bless-hint\">The command shows once at least one case "
+         "is ticked and a reason is typed.</p>\n<div class=\"bless\" id=\"bless-command\" "
+         "hidden><code></code><button type=\"button\" class=\"copy\">copy</button></div>\n"
+         "</div>\n";
 }
 
 }  // namespace taa::report::detail

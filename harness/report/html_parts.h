@@ -36,9 +36,11 @@ bool blessable(const run::CaseResult& c);
 std::string firstDifferenceThumbs(const run::CaseResult& c, const std::string& id,
                                   const std::filesystem::path& outputDir);
 std::string blessCheckbox(const run::CaseResult& c);
-// The reason and folder fields and the command the page's script builds; `outputDir` is the
-// folder prefilled, the run's --out as given.
-std::string blessPanel(const std::filesystem::path& outputDir);
+// The reason and folder fields and the command the page's script builds. The folder is not
+// written into the page: the script takes the one the page was opened from (file://), so the
+// report stays a function of the results, and a report unpacked from a CI artifact names the
+// folder it was unpacked to.
+std::string blessPanel();
 
 std::string renderFrame(const run::FrameComparison& f, const std::string& id,
                         const std::filesystem::path& outputDir);

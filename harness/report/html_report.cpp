@@ -140,7 +140,7 @@ std::string tableOfContents(const run::RunResults& r, const fs::path& dir) {
     s += "</tr>\n";
   }
   s += "</table>\n";
-  if (bless) s += detail::blessPanel(dir);
+  if (bless) s += detail::blessPanel();
   return s + "</nav>\n";
 }
 

@@ -157,6 +157,11 @@ TEST(ReportChromium, TickedCasesAndAReasonMakeOneBlessCommand) {
   EXPECT_EQ(body.count("data-js-error"), 0u) << body["data-js-error"];
   EXPECT_EQ(body["data-render-ok"], "1");
   EXPECT_EQ(body["data-bless-before-reason"], "hint: No command yet: type a reason.");
+  // Before the folder is edited: the one the page was opened from.
+  EXPECT_EQ(body["data-bless-here"],
+            "taa-harness bless --from " + dir.string() +
+                " cases/moving_fence.json 'cases/fence thin.json' --reason 'fence'\\''s new blend "
+                "weight (issue 47)'");
   const std::string command = body["data-bless-command"];
   EXPECT_EQ(command,
             "taa-harness bless --from 'ci artifact/taa-shard-1' cases/moving_fence.json "

@@ -1,7 +1,8 @@
 // Blessing from the report: the summary row of a failing or stale case shows its first differing
 // frame as thumbnails and a checkbox, and the panel under the summary turns the ticked cases and a
-// reason into one `taa-harness bless --from DIR CASE... --reason '...'` command (built by the
-// page's script, so it works from a report downloaded from CI, with the folder edited there).
+// reason into one `taa-harness bless --from DIR CASE... --reason '...'` command, built by the
+// page's script from the folder it was opened from, so it works as well from a report unpacked
+// from a CI artifact.
 #include <cstdlib>
 #include <string>
 

@@ -241,7 +241,8 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
   if (const auto& q = c.sequenceCheck; !q.mode.empty())
     s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
          (q.mode == "exact" ? "pixel hashes, bit-exact (golden's environment)"
-                            : "quality signatures within tolerance (another environment)" +
+                            // "within tolerance" would read as a verdict on a failing sequence
+                            : "quality signatures against tolerances (another environment)" +
                                   escapeMarkup(sequenceWorst(q))) +
          "</p>\n";
   s += firstDifference(c, id, dir);

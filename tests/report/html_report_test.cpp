@@ -303,7 +303,7 @@ TEST(ReportSequence, WorstLineSaysNoDifferenceInsteadOfFrameMinusOne) {
   q.mode = "signature";
   q.frames = 16;  // worst frames stay -1: nothing differed
   EXPECT_NE(renderHtmlReport(run, dir).find(
-                "quality signatures within tolerance (another environment) (no difference)"),
+                "quality signatures against tolerances (another environment) (no difference)"),
             std::string::npos);
   EXPECT_EQ(renderHtmlReport(run, dir).find("frame -1"), std::string::npos);
   using taa::report::detail::sequenceWorst;

@@ -92,13 +92,29 @@ pre.log { max-height: 320px; overflow: auto; background: #f7f7f5; border: 1px so
   padding: 6px; margin: 4px 0; }
 .muted { color: #777; }
 nav.toc td a { font-family: var(--mono); }
+[hidden] { display: none !important; }
+/* A long message (a stale case quotes its bless reason) stays a few lines; the case has it all. */
+.toc-msg { max-width: 46em; display: -webkit-box; -webkit-box-orient: vertical;
+  -webkit-line-clamp: 3; overflow: hidden; }
+.thumbs { display: flex; gap: 4px; align-items: flex-end; text-decoration: none; color: inherit; }
+.thumbs figcaption { font-size: 10px; margin: 0; white-space: nowrap; }
+.thumbs-frame { font: 11px var(--mono); color: #555; align-self: center; white-space: nowrap; }
+img.thumb { height: 64px; width: auto; max-width: 144px; image-rendering: auto; }
+.thumb-none { display: flex; align-items: center; justify-content: center; height: 64px;
+  width: 64px; border: 1px dashed #aaa; color: #777; font: 11px var(--mono); }
+.bless-from { margin-top: 8px; }
+.bless-fields { display: flex; gap: 6px 16px; flex-wrap: wrap; font: 12px var(--mono); }
+.bless-fields input { font: 12px var(--mono); padding: 2px 4px; }
+#bless-dir { width: 30em; } #bless-reason { width: 40em; }
+.bless-hint { color: #777; font: 12px var(--mono); }
 )CSS";
 
 // Plain ES2017, no modules: it must run from file:// in any recent browser. The load handler
 // records whether every image decoded (data-images-loaded="ok/total") and whether the page
 // rendered (data-render-ok) on <body>, which the headless-browser test reads back. A URL fragment
 // such as #zoom=2&split=0.25&keys=ArrowRight,ArrowRight drives the first A/B view through its real
-// zoom button, pointer and keyboard handlers so that test can check the divider moves.
+// zoom button, pointer and keyboard handlers so that test can check the divider moves; one such as
+// #bless-tick=a,b&bless-reason=why ticks cases and types a reason (runBlessHook).
 const char* const kReportJs = R"JS(
 (function () {
   'use strict';
@@ -218,8 +234,99 @@ const char* const kReportJs = R"JS(
       }
     });
   });
+  // `bless --from` for the ticked cases. Words a POSIX shell takes literally stay bare; others,
+  // and the reason always, go in single quotes, each ' written as '\''.
+  function shellQuote(s) { return "'" + s.replace(/'/g, "'\\''") + "'"; }
+  function shellWord(s) { return /^[A-Za-z0-9_\/.,:=+@%-]+$/.test(s) ? s : shellQuote(s); }
+  function blessPicks() {
+    return Array.prototype.slice.call(document.querySelectorAll('input.bless-pick'));
+  }
+  function updateBless() {
+    var picks = blessPicks();
+    var ticked = picks.filter(function (p) { return p.checked; });
+    var all = document.getElementById('bless-all');
+    all.checked = ticked.length === picks.length;
+    all.indeterminate = ticked.length > 0 && ticked.length < picks.length;
+    var dir = document.getElementById('bless-dir').value.trim();
+    var reason = document.getElementById('bless-reason').value.trim();
+    var missing = [];
+    if (!ticked.length) missing.push('tick at least one case');
+    if (!reason) missing.push('type a reason');
+    if (!dir) missing.push('give the run folder');
+    var box = document.getElementById('bless-command');
+    var hint = document.getElementById('bless-hint');
+    box.hidden = missing.length > 0;
+    hint.hidden = !box.hidden;
+    if (box.hidden) {
+      hint.textContent = 'No command yet: ' + missing.join(', ') + '.';
+      return;
+    }
+    var words = ['taa-harness', 'bless', '--from', shellWord(dir)];
+    ticked.forEach(function (p) { words.push(shellWord(p.getAttribute('data-file'))); });
+    words.push('--reason', shellQuote(reason));
+    box.querySelector('code').textContent = words.join(' ');
+    box.querySelector('button.copy').textContent = 'copy';
+  }
+  // The folder this page was opened from: where the run wrote it, or where a CI artifact was
+  // unpacked. A page from a web server has none to offer; the field says what to type.
+  function pageFolder() {
+    if (location.protocol !== 'file:') return '';
+    try {
+      var p = decodeURIComponent(location.pathname);
+      return p.slice(0, p.lastIndexOf('/')) || '/';
+    } catch (ignored) {
+      return '';
+    }
+  }
+  if (document.getElementById('bless-from')) {
+    var dirField = document.getElementById('bless-dir');
+    if (!dirField.value) dirField.value = pageFolder();
+    blessPicks().forEach(function (p) { p.addEventListener('change', updateBless); });
+    document.getElementById('bless-all').addEventListener('change', function (e) {
+      blessPicks().forEach(function (p) { p.checked = e.target.checked; });
+      updateBless();
+    });
+    ['bless-dir', 'bless-reason'].forEach(function (id) {
+      document.getElementById(id).addEventListener('input', updateBless);
+    });
+    updateBless();
+    // A reload may restore ticks and text after this script ran.
+    window.addEventListener('pageshow', updateBless);
+  }
+  // #bless-tick=CASE,CASE&bless-reason=R&bless-dir=D[&bless-all=1] ticks, types the reason,
+  // then the folder, and clicks select-all twice, through the real controls, recording on <body>
+  // what the page shows after each step.
+  function runBlessHook(params) {
+    if (!params.has('bless-tick') || !document.getElementById('bless-from')) return;
+    function shown() {
+      var box = document.getElementById('bless-command');
+      return box.hidden ? 'hint: ' + document.getElementById('bless-hint').textContent
+                        : box.querySelector('code').textContent;
+    }
+    params.get('bless-tick').split(',').filter(Boolean).forEach(function (name) {
+      blessPicks().forEach(function (p) { if (p.getAttribute('data-case') === name) p.click(); });
+    });
+    body.setAttribute('data-bless-before-reason', shown());
+    function type(id) {
+      if (!params.has(id)) return;
+      var el = document.getElementById(id);
+      el.value = params.get(id);
+      el.dispatchEvent(new Event('input', {bubbles: true}));
+    }
+    type('bless-reason');
+    body.setAttribute('data-bless-here', shown());
+    type('bless-dir');
+    body.setAttribute('data-bless-command', shown());
+    if (!params.has('bless-all')) return;
+    var all = document.getElementById('bless-all');
+    all.click();
+    body.setAttribute('data-bless-all', shown());
+    all.click();
+    body.setAttribute('data-bless-none', shown());
+  }
   function runFragmentHook() {
     var params = new URLSearchParams(location.hash.replace(/^#/, ''));
+    runBlessHook(params);
     var el = document.querySelector('.split');
     if (!params.has('split') || !el) return;
     var zoom = el.closest('.ab').querySelector(

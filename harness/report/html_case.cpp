@@ -231,10 +231,10 @@ std::string renderCase(const run::CaseResult& c, size_t index, const std::string
   s += "<h3>Frames compared with goldens</h3>\n" + metricsTable(c, id);
   if (const auto& q = c.sequenceCheck; !q.mode.empty())
     s += "<p class=\"muted sequence\">every frame compared (" + std::to_string(q.frames) + "): " +
-         (q.mode == "exact"
-              ? "pixel hashes, bit-exact (this environment's positive)"
-              : "quality signatures within tolerance (no positive for this environment)" +
-                    escapeMarkup(run::sequenceWorst(q))) +
+         (q.mode == "exact" ? "pixel hashes, bit-exact (this environment's positive)"
+                            // "within tolerance" would read as a verdict on a failing sequence
+                            : "quality signatures against tolerances (no positive for this environment)" +
+                                  escapeMarkup(run::sequenceWorst(q))) +
          "</p>\n";
   s += firstDifference(c, id, dir);
   s += invariantsTable(c);

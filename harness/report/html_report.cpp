@@ -107,13 +107,19 @@ std::string header(const run::RunResults& r, const ReportExtras& extras) {
   return s;
 }
 
-std::string tableOfContents(const run::RunResults& r) {
-  std::string s =
-      "<nav class=\"toc\"><table><tr><th>status</th><th>case</th>"
-      "<th class=\"num\">failed frames</th><th class=\"num\">failed invariants</th>"
-      "<th>message</th></tr>\n";
+std::string tableOfContents(const run::RunResults& r, const fs::path& dir) {
+  const bool bless = std::any_of(r.cases.begin(), r.cases.end(), detail::blessable);
+  std::string s = "<nav class=\"toc\"><table><tr>";
+  if (bless)
+    s += "<th><input type=\"checkbox\" id=\"bless-all\" aria-label=\"tick every failing or "
+         "stale case\" title=\"tick every failing or stale case\"></th>";
+  s += "<th>status</th><th>case</th><th class=\"num\">failed frames</th>"
+       "<th class=\"num\">failed invariants</th><th>message</th>";
+  if (bless) s += "<th>first differing frame</th>";
+  s += "</tr>\n";
   for (size_t i = 0; i < r.cases.size(); ++i) {
     const auto& c = r.cases[i];
+    const std::string id = "case-" + std::to_string(i);
     const auto badFrames = std::count_if(c.frames.begin(), c.frames.end(), [](const auto& f) {
       return f.status == run::FrameStatus::Failed;
     });
@@ -121,14 +127,21 @@ std::string tableOfContents(const run::RunResults& r) {
                                              [](const auto& inv) { return !inv.passed; });
     // The first line of the message is enough to see what happened; the case has the rest.
     const std::string firstLine = c.message.substr(0, c.message.find('\n'));
-    s += "<tr><td><span class=\"badge " + caseClass(c.status) + "\">" + caseLabel(c.status) +
-         "</span></td><td><a href=\"#case-" + std::to_string(i) + "\">" + escapeMarkup(c.name) +
+    const bool pick = detail::blessable(c);
+    s += "<tr>";
+    if (bless) s += "<td>" + (pick ? detail::blessCheckbox(c) : std::string()) + "</td>";
+    s += "<td><span class=\"badge " + caseClass(c.status) + "\">" + caseLabel(c.status) +
+         "</span></td><td><a href=\"#" + id + "\">" + escapeMarkup(c.name) +
          "</a></td><td class=\"num\">" + std::to_string(badFrames) + "/" +
          std::to_string(c.frames.size()) + "</td><td class=\"num\">" +
-         std::to_string(badInvariants) + "/" + std::to_string(c.invariants.size()) + "</td><td>" +
-         escapeMarkup(firstLine) + "</td></tr>\n";
+         std::to_string(badInvariants) + "/" + std::to_string(c.invariants.size()) +
+         "</td><td><div class=\"toc-msg\">" + escapeMarkup(firstLine) + "</div></td>";
+    if (bless) s += "<td>" + (pick ? detail::firstDifferenceThumbs(c, id, dir) : "") + "</td>";
+    s += "</tr>\n";
   }
-  return s + "</table></nav>\n";
+  s += "</table>\n";
+  if (bless) s += detail::blessPanel();
+  return s + "</nav>\n";
 }
 
 }  // namespace
@@ -165,7 +178,7 @@ std::string renderHtmlReport(const run::RunResults& r, const fs::path& outputDir
       escapeMarkup(extras.title) + "</title>\n<style>" + detail::kReportCss + "</style>\n</head>\n";
   s += "<body data-case-count=\"" + std::to_string(r.cases.size()) + "\">\n";
   s += header(r, extras);
-  if (!r.cases.empty()) s += tableOfContents(r);
+  if (!r.cases.empty()) s += tableOfContents(r, outputDir);
   for (size_t i = 0; i < r.cases.size(); ++i)
     s += detail::renderCase(r.cases[i], i, r.fingerprint, outputDir);
   for (const auto& extra : extras.sections) {

@@ -17,15 +17,15 @@ std::string fmt(const char* f, double v) {
 
 std::string sequenceWorst(const CaseResult::SequenceCheck& q) {
   if (q.mode != "signature") return "";
-  // A measure that never rose above zero has no frame: say so, not "at frame -1".
-  std::string worst;
-  if (q.worstCellFrame >= 0)
-    worst =
-        "cell " + std::to_string(q.worstCell) + "/255 at frame " + std::to_string(q.worstCellFrame);
-  if (q.worstMeanFrame >= 0)
-    worst += (worst.empty() ? "" : ", ") + std::string("channel mean ") + fmt("%.3g", q.worstMean) +
-             " at frame " + std::to_string(q.worstMeanFrame);
-  return " (worst: " + (worst.empty() ? std::string("no difference") : worst) + ")";
+  // A frame of -1 means nothing differed: "cell 0/255 at frame -1" would read like a finding.
+  if (q.worstCellFrame < 0 && q.worstMeanFrame < 0) return " (no difference)";
+  const std::string cell = q.worstCellFrame < 0 ? "no cell differs"
+                                                : "cell " + std::to_string(q.worstCell) + "/255 at frame " +
+                                                      std::to_string(q.worstCellFrame);
+  const std::string mean = q.worstMeanFrame < 0 ? "no channel mean differs"
+                                                : "channel mean " + fmt("%.3g", q.worstMean) + " at frame " +
+                                                      std::to_string(q.worstMeanFrame);
+  return " (worst: " + cell + ", " + mean + ")";
 }
 
 bool caseFailed(const CaseResult& c) {

@@ -15,7 +15,8 @@ void printSummary(std::ostream& out, const RunResults& r, double seconds);
 
 bool caseFailed(const CaseResult& c);
 
-// " (worst: cell 2/255 at frame 7, channel mean 0.0004 at frame 3)" for a signature check, else "".
+// " (worst: cell 2/255 at frame 7, channel mean 0.0004 at frame 3)" for a signature check (a
+// measure that never rose above zero: "no cell differs"; neither: " (no difference)"), else "".
 std::string sequenceWorst(const CaseResult::SequenceCheck& q);
 
 }  // namespace taa::run

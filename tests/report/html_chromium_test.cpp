@@ -1,11 +1,13 @@
 // Opens the report in headless Chromium (Debian's chromium package, installed by
 // ci/install-deps.sh) and reads back what the page's own script found: whether every image
 // decoded, whether the page rendered, and where the A/B divider went after a scripted zoom click,
-// pointer press and two arrow keys.
+// pointer press and two arrow keys; and the `bless --from` command the page builds for two ticked
+// cases and a reason, which a POSIX shell must read back word for word.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <regex>
 
@@ -122,6 +124,64 @@ TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {
   ASSERT_TRUE(std::regex_search(dom, divider, std::regex("class=\"divider\" style=\"([^\"]*)\"")));
   EXPECT_EQ(divider[1], "left: 29.17%;");
   EXPECT_LT(seconds, 60.0);
+}
+
+TEST(ReportChromium, TickedCasesAndAReasonMakeOneBlessCommand) {
+  const std::string chromium = findChromium();
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium not found (apt-get install chromium, or set TAA_CHROMIUM)";
+  const fs::path dir = fs::absolute(taa::test::freshDir("chromium_bless"));
+  auto results = taa::test::sampleRun(dir);
+  // Besides moving_fence (failing): a stale case whose file needs quoting, and a failing one.
+  auto stale = results.cases[1];
+  stale.name = "fence_thin";
+  stale.file = "cases/fence thin.json";
+  stale.status = taa::run::CaseStatus::Stale;
+  auto other = results.cases[1];
+  other.name = "tonemap";
+  other.file = "cases/tonemap.json";
+  results.cases.push_back(stale);
+  results.cases.push_back(other);
+  taa::report::writeHtmlReport(dir / "report.html", results);
+
+  // A report downloaded from CI: the folder is edited to where the artifact was unpacked.
+  const std::string reason = "fence's new blend weight (issue 47)";
+  const std::string url =
+      "file://" + taa::report::encodePath((dir / "report.html").string()) +
+      "#bless-tick=moving_fence,fence_thin&bless-dir=ci%20artifact/taa-shard-1"
+      "&bless-reason=fence%27s%20new%20blend%20weight%20(issue%2047)&bless-all=1";
+  const std::string dom = dumpDom(chromium, dir / "profile", url, dir / "chromium.log");
+  ASSERT_NE(dom.find("</html>"), std::string::npos)
+      << "no DOM from chromium; see " << (dir / "chromium.log");
+  auto body = bodyAttributes(dom);
+  EXPECT_EQ(body.count("data-js-error"), 0u) << body["data-js-error"];
+  EXPECT_EQ(body["data-render-ok"], "1");
+  EXPECT_EQ(body["data-bless-before-reason"], "hint: No command yet: type a reason.");
+  // Before the folder is edited: the one the page was opened from.
+  EXPECT_EQ(body["data-bless-here"],
+            "taa-harness bless --from " + dir.string() +
+                " cases/moving_fence.json 'cases/fence thin.json' --reason 'fence'\\''s new blend "
+                "weight (issue 47)'");
+  const std::string command = body["data-bless-command"];
+  EXPECT_EQ(command,
+            "taa-harness bless --from 'ci artifact/taa-shard-1' cases/moving_fence.json "
+            "'cases/fence thin.json' --reason 'fence'\\''s new blend weight (issue 47)'");
+  // What a shell makes of it: the same words, the reason intact.
+  const fs::path script = dir / "words.sh";
+  {
+    std::ofstream out(script);
+    out << "set -- " << command << "\nprintf '%s\\n' \"$@\"\n";
+  }
+  EXPECT_EQ(run("sh '" + script.string() + "'"),
+            "taa-harness\nbless\n--from\nci artifact/taa-shard-1\ncases/moving_fence.json\n"
+            "cases/fence thin.json\n--reason\n" +
+                reason + "\n");
+  // Select-all takes every failing or stale case in page order; clearing it hides the command.
+  EXPECT_EQ(body["data-bless-all"],
+            "taa-harness bless --from 'ci artifact/taa-shard-1' cases/moving_fence.json "
+            "'cases/fence thin.json' cases/tonemap.json --reason 'fence'\\''s new blend weight "
+            "(issue 47)'");
+  EXPECT_EQ(body["data-bless-none"], "hint: No command yet: tick at least one case.");
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "report/fixture.h"
+#include "report/html_parts.h"
 #include "report/svg_plot.h"
+#include "run/console.h"
 #include "support/text.h"
 
 namespace fs = std::filesystem;
@@ -57,9 +59,9 @@ class ReportHtml : public ::testing::Test {
 TEST_F(ReportHtml, EveryImageExistsBesideTheReport) {
   const auto srcs = attributeValues(html_, "src");
   EXPECT_EQ(srcs.size(), count(html_, "<img "));
-  // 2 checked frames with 6 images each plus the A/B pair, the golden-less actual, and one frame
-  // whose zoomed diff is missing.
-  EXPECT_EQ(srcs.size(), 8u + 8u + 7u + 1u);
+  // 2 checked frames with 6 images each plus the A/B pair, the golden-less actual, one frame
+  // whose zoomed diff is missing, and the failing case's three thumbnails in the summary.
+  EXPECT_EQ(srcs.size(), 8u + 8u + 7u + 1u + 3u);
   for (const auto& src : srcs) {
     EXPECT_FALSE(src.empty());
     EXPECT_NE(src[0], '/') << src;
@@ -143,7 +145,8 @@ TEST(ReportHtmlExtrasOnly, NoCaseSummaryOrContentsWithoutCases) {
   taa::run::RunResults none;
   none.device = "llvmpipe";
   taa::report::ReportExtras extras;
-  extras.sections.push_back({"Sweep", "note", "", taa::report::htmlTable({"preset"}, {{"default"}})});
+  extras.sections.push_back(
+      {"Sweep", "note", "", taa::report::htmlTable({"preset"}, {{"default"}})});
   const std::string html = renderHtmlReport(none, fs::temp_directory_path(), extras);
   EXPECT_EQ(html.find("0 cases"), std::string::npos);
   EXPECT_EQ(html.find("class=\"summary\""), std::string::npos);
@@ -171,8 +174,149 @@ TEST(ReportHtmlUserShader, CaseHeaderNamesTheShaderAndItsParameters) {
   const std::string html = renderHtmlReport(run, dir);
   const size_t header = html.find("data-case=\"" + run.cases[0].name + "\"");
   ASSERT_NE(header, std::string::npos);
-  const size_t shown = html.find("user shader mine.hlsl (hlsl, entry main), params: alpha=0.1 (float)");
+  const size_t shown =
+      html.find("user shader mine.hlsl (hlsl, entry main), params: alpha=0.1 (float)");
   ASSERT_NE(shown, std::string::npos);
   // In the case's own header, before its first frame.
   EXPECT_LT(shown - header, html.find("<img", header) - header);
+}
+
+namespace {
+
+// The summary row of case `name`: from its <tr> to the row's end.
+std::string summaryRow(const std::string& html, const std::string& name) {
+  const size_t link = html.find(">" + name + "</a></td>");
+  if (link == std::string::npos) return "";
+  const size_t start = html.rfind("<tr>", link);
+  return html.substr(start, html.find("</tr>", link) - start);
+}
+
+}  // namespace
+
+TEST(ReportBless, FailingRowShowsTheFirstFailedFramesThumbnailsAndACheckbox) {
+  const auto dir = taa::test::freshDir("bless_thumbs");
+  const auto run = taa::test::sampleRun(dir);
+  const std::string html = renderHtmlReport(run, dir);
+  const std::string fail = summaryRow(html, "moving_fence");
+  // Frame 4 is within tolerance; frame 8 is the first that failed: golden, actual and diff of it,
+  // linked to the frame in the case.
+  EXPECT_NE(fail.find("href=\"#case-1-f8\""), std::string::npos) << fail;
+  for (const char* img :
+       {"img/fence_8_golden.png", "img/fence_8_actual.png", "img/fence_8_diff.png"})
+    EXPECT_NE(fail.find("class=\"thumb\" src=\"" + std::string(img) + "\""), std::string::npos)
+        << img;
+  EXPECT_EQ(count(fail, "<img "), 3u);
+  EXPECT_NE(fail.find("data-file=\"cases/moving_fence.json\""), std::string::npos);
+  // Passing, golden-less and erroring cases offer nothing to bless.
+  for (const char* name : {"static_sponza", "new_case", "broken_gltf"}) {
+    const std::string row = summaryRow(html, name);
+    ASSERT_FALSE(row.empty()) << name;
+    EXPECT_EQ(row.find("bless-pick"), std::string::npos) << name;
+    EXPECT_EQ(row.find("<img"), std::string::npos) << name;
+  }
+  EXPECT_EQ(count(html, "class=\"bless-pick\""), 1u);
+  EXPECT_EQ(count(html, "id=\"bless-all\""), 1u);
+  // The folder is the page's own (its script reads it), so the page holds no path of this run
+  // and stays a function of the results; the command waits for ticks and a reason.
+  EXPECT_NE(html.find("id=\"bless-dir\" spellcheck=\"false\" placeholder="), std::string::npos);
+  EXPECT_EQ(html.find(dir.string()), std::string::npos);
+  EXPECT_NE(html.find("id=\"bless-command\" hidden"), std::string::npos);
+  EXPECT_NE(html.find("The command shows once at least one case is ticked and a reason is typed."),
+            std::string::npos);
+}
+
+TEST(ReportBless, SequenceDifferenceBeforeTheCheckedFramesShowsItsActualAndNearestGolden) {
+  const auto dir = taa::test::freshDir("bless_sequence");
+  auto run = taa::test::sampleRun(dir);
+  auto& c = run.cases[1];
+  c.status = taa::run::CaseStatus::Stale;
+  c.firstDifference.frame = 6;
+  c.firstDifference.actual = taa::test::writeFrameImages(dir, "seq_6", true).actual;
+  // Stored golden frames 4 and 9 around it: 4 is nearer.
+  c.firstDifference.goldenNeighbours = {{4, "img/fence_4_golden.png"},
+                                        {9, "img/static_15_golden.png"}};
+  std::string row = summaryRow(renderHtmlReport(run, dir), "moving_fence");
+  EXPECT_NE(row.find("href=\"#case-1-first\""), std::string::npos) << row;
+  EXPECT_NE(row.find("frame 6"), std::string::npos);
+  EXPECT_NE(row.find("<figcaption>golden 4</figcaption><img class=\"thumb\" "
+                     "src=\"img/fence_4_golden.png\""),
+            std::string::npos)
+      << row;
+  EXPECT_NE(row.find("<figcaption>actual 6</figcaption><img class=\"thumb\" "
+                     "src=\"img/seq_6_actual.png\""),
+            std::string::npos);
+  EXPECT_EQ(row.find("<figcaption>diff"), std::string::npos)
+      << "a sequence difference has no heatmap";
+  EXPECT_EQ(count(row, "<img "), 2u);
+
+  // Where the checked frame comes first, it wins: it has a diff of the same frame.
+  c.firstDifference.frame = 8;
+  row = summaryRow(renderHtmlReport(run, dir), "moving_fence");
+  EXPECT_NE(row.find("href=\"#case-1-f8\""), std::string::npos) << row;
+  EXPECT_EQ(count(row, "<img "), 3u);
+}
+
+TEST(ReportBless, RowsSayWhenTheRunWroteNoImagesOrNoFrameDiffered) {
+  const auto dir = taa::test::freshDir("bless_fallback");
+  auto run = taa::test::sampleRun(dir);
+  auto noImages = run.cases[1];
+  noImages.name = "no_images";
+  for (auto& f : noImages.frames) f.images = {};
+  auto invariantOnly = run.cases[1];
+  invariantOnly.name = "invariant_only";
+  invariantOnly.frames.pop_back();  // only the frame within tolerance is left
+  auto missingDiff = run.cases[1];
+  missingDiff.name = "missing_diff";
+  missingDiff.frames.back().images.diff = "img/never_written.png";
+  run.cases.push_back(noImages);
+  run.cases.push_back(invariantOnly);
+  run.cases.push_back(missingDiff);
+  const std::string html = renderHtmlReport(run, dir);
+  const std::string none = summaryRow(html, "no_images");
+  EXPECT_NE(none.find("frame 8</a> <span class=\"muted\">(no images in this run's folder)"),
+            std::string::npos)
+      << none;
+  EXPECT_EQ(none.find("<img"), std::string::npos);
+  EXPECT_NE(summaryRow(html, "invariant_only").find("no differing frame"), std::string::npos);
+  // One missing file leaves a placeholder in its place, not a broken image.
+  const std::string partial = summaryRow(html, "missing_diff");
+  EXPECT_EQ(count(partial, "<img "), 2u);
+  EXPECT_NE(partial.find("<figcaption>diff</figcaption><span class=\"thumb-none\">none</span>"),
+            std::string::npos)
+      << partial;
+  EXPECT_EQ(count(html, "class=\"bless-pick\""), 4u);
+}
+
+TEST(ReportBless, AllPassingRunHasNoBlessControls) {
+  const auto dir = taa::test::freshDir("bless_none");
+  auto run = taa::test::sampleRun(dir);
+  run.cases = {run.cases[0], run.cases[2]};
+  const std::string html = renderHtmlReport(run, dir);
+  for (const char* id : {"id=\"bless-all\"", "class=\"bless-pick\"", "id=\"bless-from\"",
+                         "<th>first differing frame</th>"})
+    EXPECT_EQ(html.find(id), std::string::npos) << id;
+}
+
+TEST(ReportSequence, WorstLineSaysNoDifferenceInsteadOfFrameMinusOne) {
+  const auto dir = taa::test::freshDir("sequence_worst");
+  auto run = taa::test::sampleRun(dir);
+  auto& q = run.cases[0].sequenceCheck;
+  q.mode = "signature";
+  q.frames = 16;  // worst frames stay -1: nothing differed
+  EXPECT_NE(renderHtmlReport(run, dir).find(
+                "quality signatures against tolerances (no positive for this environment) (no difference)"),
+            std::string::npos);
+  EXPECT_EQ(renderHtmlReport(run, dir).find("frame -1"), std::string::npos);
+  using taa::run::sequenceWorst;  // the console and the report say it alike
+  EXPECT_EQ(sequenceWorst(q), " (no difference)");
+  q.worstMean = 0.00001234;
+  q.worstMeanFrame = 3;
+  EXPECT_EQ(sequenceWorst(q), " (worst: no cell differs, channel mean 1.23e-05 at frame 3)");
+  q.worstCell = 2;
+  q.worstCellFrame = 7;
+  EXPECT_EQ(sequenceWorst(q), " (worst: cell 2/255 at frame 7, channel mean 1.23e-05 at frame 3)");
+  q.worstMeanFrame = -1;
+  EXPECT_EQ(sequenceWorst(q), " (worst: cell 2/255 at frame 7, no channel mean differs)");
+  q.mode = "exact";
+  EXPECT_EQ(sequenceWorst(q), "");
 }

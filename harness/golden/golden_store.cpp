@@ -85,6 +85,12 @@ pid_t stagingPid(const std::string& name) {
 
 }  // namespace
 
+void replaceManifest(const std::filesystem::path& root, const Manifest& manifest) {
+  const auto dir = root / manifest.caseName;
+  writeFileAtomically(dir / "manifest.json", manifest.toJson().dump(2) + "\n");
+  syncDirectory(dir);
+}
+
 std::vector<std::string> removeStaleStaging(const fs::path& root) {
   std::vector<std::string> notes;
   std::error_code ec;

@@ -50,6 +50,10 @@ class GoldensLock {
 void replaceGoldens(const std::filesystem::path& root, const Manifest& manifest,
                     const std::vector<std::pair<GoldenFrame, Image>>& frames);
 
+// Replaces goldens/NAME/manifest.json alone (atomically: a temporary file renamed over it), for a
+// change that keeps every image, such as another environment's positive. Hold a GoldensLock.
+void replaceManifest(const std::filesystem::path& root, const Manifest& manifest);
+
 // Removes the staging folders (.NAME.bless-PID) that blesses killed before their exchange
 // left in `root`, of processes that have ended; returns a line for each, to print. A live
 // process's folder is kept. Run at the start of every run and bless.

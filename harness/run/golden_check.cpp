@@ -269,13 +269,9 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
   result.goldenMode = ownPositive_ ? "exact" : "tolerance";
   bool anyFailed = false;
   std::vector<std::string> notes;
-  if (!ownPositive_) {
-    notes.push_back(toleranceNote());
-    if (options_.requireExact) {
-      notes.push_back(requireExactNote());
-      anyFailed = true;
-    }
-  }
+  const bool missingPositive = !ownPositive_ && options_.requireExact;
+  if (!ownPositive_) notes.push_back(toleranceNote());
+  if (missingPositive) notes.push_back(requireExactNote());
   for (const auto& [frame, image] : outputs) {
     result.frames.push_back(compareStoredFrame(frame, image));
     anyFailed |= result.frames.back().status == FrameStatus::Failed ||
@@ -311,8 +307,13 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
     anyFailed |= !asBlessed;
   }
   for (const auto& n : notes) result.message += (result.message.empty() ? "" : "; ") + n;
-  if (!anyFailed) return CaseStatus::Pass;
-  return stale ? CaseStatus::Stale : CaseStatus::Fail;
+  // Frames within tolerance on a machine without its positive: what is missing is the positive,
+  // not a new image, so the hint adds this environment rather than replacing the set.
+  if (missingPositive && !anyFailed)
+    result.blessCommand = "taa-harness bless --add-environment " + spec_.file.string() +
+                          " --reason \"<which machine this is>\"";
+  if (!anyFailed && !missingPositive) return CaseStatus::Pass;
+  return stale && anyFailed ? CaseStatus::Stale : CaseStatus::Fail;
 }
 
 std::string GoldenCheck::toleranceNote() const {

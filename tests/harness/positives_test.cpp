@@ -50,7 +50,7 @@ TEST_F(Positives, AnotherLevelGetsItsOwnPositiveFromItsRunFolderAndIsThenExact) 
   auto r = run("small", "--require-exact", kSse);
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("tolerance: no positive for"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("bless --add-environment"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("then taa-harness bless --add-environment"), std::string::npos) << r.output;
   EXPECT_EQ(results()["cases"][0]["golden_mode"], "tolerance");
   // TAA_REQUIRE_EXACT=1 is the same for CI.
   EXPECT_EQ(run("small", "", kSse + " TAA_REQUIRE_EXACT=1").exitCode, 1);

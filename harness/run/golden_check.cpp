@@ -270,8 +270,6 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
   bool anyFailed = false;
   std::vector<std::string> notes;
   const bool missingPositive = !ownPositive_ && options_.requireExact;
-  if (!ownPositive_) notes.push_back(toleranceNote());
-  if (missingPositive) notes.push_back(requireExactNote());
   for (const auto& [frame, image] : outputs) {
     result.frames.push_back(compareStoredFrame(frame, image));
     anyFailed |= result.frames.back().status == FrameStatus::Failed ||
@@ -306,6 +304,9 @@ CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::s
                    : "; its frames match no positive"));
     anyFailed |= !asBlessed;
   }
+  // Last: what failed or went stale reads first where a summary cuts the message short.
+  if (!ownPositive_) notes.push_back(toleranceNote());
+  if (missingPositive) notes.push_back(requireExactNote());
   for (const auto& n : notes) result.message += (result.message.empty() ? "" : "; ") + n;
   // Frames within tolerance on a machine without its positive: what is missing is the positive,
   // not a new image, so the hint adds this environment rather than replacing the set.

@@ -28,6 +28,11 @@ nlohmann::json readJson(const fs::path& p) {
   return nlohmann::json::parse(in);
 }
 
+std::string fileBytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
 size_t exrCount(const fs::path& dir) {
   size_t n = 0;
   for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".exr";
@@ -59,9 +64,11 @@ TEST_F(Positives, AnotherLevelGetsItsOwnPositiveFromItsRunFolderAndIsThenExact) 
   EXPECT_EQ(harness("run " + casePath("small") + " --out " + (root_ / "nodev").string(), kNoDevice)
                 .exitCode,
             3);
+  const std::string exrBefore = fileBytes(root_ / "goldens/small/frame_0005.exr");
   r = blessFrom("--add-environment");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("ADDED small environment"), std::string::npos) << r.output;
+  EXPECT_EQ(fileBytes(root_ / "goldens/small/frame_0005.exr"), exrBefore);  // only the manifest changes
   const auto m = readJson(root_ / "goldens/small/manifest.json");
   ASSERT_EQ(m["other_environments"].size(), 1u);
   EXPECT_EQ(m["other_environments"][0]["environment"]["cpu_features"], "override:sse4.1");

@@ -84,10 +84,11 @@ SkinWeightFixes normaliseSkinWeights(std::vector<float>& weights) {
       ++f.unweighted;
       continue;
     }
+    for (int k = 0; k < 4; ++k) w[k] /= sum;
+    if (std::fabs(sum - 1.0f) <= kSkinWeightNoteTolerance) continue;
     f.lowest = f.scaled > 0 ? std::min(f.lowest, sum) : sum;
     f.highest = f.scaled > 0 ? std::max(f.highest, sum) : sum;
     ++f.scaled;
-    for (int k = 0; k < 4; ++k) w[k] /= sum;
   }
   return f;
 }

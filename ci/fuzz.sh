@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the case reader, the track readers, the glTF loader and the PNG/OpenEXR readers
-# with libFuzzer under ASan
+# Fuzzes the case reader, the track readers, the glTF loader, the PNG/OpenEXR readers and a
+# user's HLSL resolve (compile, entry-point rules, spirv-val, interface check) with libFuzzer under ASan
 # and UBSan (ci/asan-build.sh), each for a bounded time: $TAA_FUZZ_SECONDS (default 60).
 # Seeds: the checked-in corpus tests/fuzz/corpus/TARGET (replayed first: each must pass),
 # cases/, the tracks and the glTF scenes. A crash, a sanitizer report, an input running
@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
 seconds=${TAA_FUZZ_SECONDS:-60}
 out=${TAA_FUZZ_OUT:-$build/fuzz}
-[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image
+[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image fuzz_shader
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Called where `set -e` does not reach (a lane's `||`): each step that can fail returns.
@@ -29,20 +29,25 @@ fuzz_one() {
     track) cp cases/tracks/*.json cases/tracks/*.csv "$work/corpus/" 2>/dev/null || true ;;
     gltf) cp cases/scenes/*.gltf cases/scenes/*.glb cases/scenes/refused/* "$work/corpus/" 2>/dev/null || true ;;
     image) find cases/scenes -name '*.png' -size -64k -exec cp {} "$work/corpus/" \; ;;
+    shader) find examples/user_taa -name '*.hlsl' -size -2k -exec cp {} "$work/corpus/" \; ;;
   esac
   limits="-rss_limit_mb=2048 -timeout=10"
   [ $target = image ] && limits="$limits -malloc_limit_mb=512"
+  # Each shader input is a glslang compile in a forked child (tens of ms): short inputs keep
+  # the runs many; a resolve's interesting parts (semantics, attributes) fit in 2 KiB.
+  local max_len=65536
+  [ $target = shader ] && max_len=2048
   echo "fuzz_$target: replaying tests/fuzz/corpus/$target"
   "$build/tests/fuzz/fuzz_$target" $limits tests/fuzz/corpus/$target/* || return 1
   echo "fuzz_$target: fuzzing for $seconds s"
   "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" $limits \
-    -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" || return 1
+    -max_len=$max_len -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" || return 1
 }
 # TAA_FUZZ_JOBS=2 fuzzes two targets at a time (each still for $seconds s; .ci/run does, so the
 # core the sanitized unit tests leave free is not idle); each target's output is printed whole,
 # in target order, once all have ended.
 jobs=${TAA_FUZZ_JOBS:-1}
-targets=(case track gltf image)
+targets=(case track gltf image shader)
 logs=$(mktemp -d)
 status=0
 for ((lane = 0; lane < jobs; lane++)); do

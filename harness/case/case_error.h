@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/closest_match.h"
 #include "core/errors.h"
 
 namespace taa::cases {
@@ -19,10 +20,8 @@ class CaseError : public InputError {
   std::vector<std::string> problems_;
 };
 
-// Levenshtein distance, for "did you mean" suggestions.
-int editDistance(const std::string& a, const std::string& b);
-
-// The candidate nearest to `key`, or "" when none is plausibly a typo of it.
-std::string closestMatch(const std::string& key, const std::vector<std::string>& candidates);
+// "Did you mean" suggestions (core/closest_match.h).
+using taa::closestMatch;
+using taa::editDistance;
 
 }  // namespace taa::cases

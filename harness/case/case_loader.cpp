@@ -99,12 +99,19 @@ nlohmann::json userShaderJson(const spec::CheckedCase& spec, const nlohmann::jso
   const LoadedUserShader shader(spec);
   if (shader.hlsl()) out["shader_entry"] = taa["shader_entry"];
   auto params = nlohmann::json::array();
-  for (const auto& v : shader.paramValues(spec.taa))
+  for (const auto& v : shader.paramValues(spec.taa)) {
     params.push_back({{"name", v.name},
                       {"value", toJson(v.value)},
                       {"type", user::paramTypeName(v.type)},
                       {"given", v.given}});
+    // Only a constant the compile removed says so: every other case prints as it did.
+    if (v.unread) params.back()["unread"] = "not read by the shader's code";
+  }
   out["shader_params"] = params;
+  // Only a shader with loose uniforms has the key: every other case prints as it did.
+  if (const std::string line = shader.uniformsLine(spec.taa); !line.empty())
+    out["shader_uniforms"] = line;
+  if (!spec.taa.shader_defines.empty()) out["shader_defines"] = taa["shader_defines"];
   return out;
 }
 

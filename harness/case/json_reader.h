@@ -144,11 +144,21 @@ class JsonReader {
   }
   bool read(const nlohmann::json& j, const std::string& path, spec::NumberOrBool& out) {
     if (j.is_boolean()) {
-      out = {j.get<bool>() ? 1.0 : 0.0, true};
+      out = {j.get<bool>() ? 1.0 : 0.0, true, {}};
+      return true;
+    }
+    if (j.is_array()) {  // a uniform's vector or matrix
+      const char* what = "a number, true or false, or a list of 1 to 16 finite numbers";
+      if (j.empty() || j.size() > spec::kMaxNumberList) return typeError(path, what);
+      out = {0.0, false, {}};
+      for (const auto& x : j) {
+        if (!x.is_number() || !std::isfinite(x.get<double>())) return typeError(path, what);
+        out.list.push_back(x.get<double>());
+      }
       return true;
     }
     if (!j.is_number()) return typeError(path, "a number, or true or false");
-    out = {j.get<double>(), false};
+    out = {j.get<double>(), false, {}};
     if (!std::isfinite(out.number)) return typeError(path, "a finite number");
     return true;
   }

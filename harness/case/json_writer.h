@@ -29,6 +29,7 @@ nlohmann::json toJson(const T& value) {
   } else if constexpr (std::is_enum_v<T>) {
     return spec::enumToString(value);
   } else if constexpr (std::is_same_v<T, spec::NumberOrBool>) {
+    if (!value.list.empty()) return nlohmann::json(value.list);
     return value.isBool ? nlohmann::json(value.number != 0.0) : nlohmann::json(value.number);
   } else if constexpr (std::is_same_v<T, glm::vec2>) {
     return nlohmann::json::array({shortest(value.x), shortest(value.y)});
@@ -78,7 +79,7 @@ template <class T> struct TypeName { static constexpr const char* value = "?"; }
 template <> struct TypeName<bool> { static constexpr const char* value = "bool"; };
 template <> struct TypeName<int> { static constexpr const char* value = "int"; };
 template <> struct TypeName<float> { static constexpr const char* value = "number"; };
-template <> struct TypeName<spec::NumberOrBool> { static constexpr const char* value = "number or bool"; };
+template <> struct TypeName<spec::NumberOrBool> { static constexpr const char* value = "number, bool or list of numbers"; };
 template <> struct TypeName<double> { static constexpr const char* value = "number"; };
 template <> struct TypeName<std::string> { static constexpr const char* value = "string"; };
 template <> struct TypeName<glm::vec2> { static constexpr const char* value = "vec2"; };

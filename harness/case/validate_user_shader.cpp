@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "api/shader_defines.h"
 #include "api/user_shader.h"
 #include "case/case_validate.h"
 #include "spec/taa_modes.h"
@@ -13,8 +14,8 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   std::vector<std::pair<std::string, std::string>> out;
   const auto& t = spec.taa;
   if (t.shader.empty()) {
-    for (const char* k : {"taa.shader_params", "taa.shader_clamps", "taa.shader_language",
-                          "taa.shader_entry"})
+    for (const char* k : {"taa.shader_params", "taa.shader_defines", "taa.shader_clamps",
+                          "taa.shader_language", "taa.shader_entry"})
       if (present.count(k))
         out.emplace_back(k, "applies only to a user's resolve; set taa.shader or remove it");
     return out;
@@ -53,6 +54,10 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
     for (const char* k : {".name", ".value"})
       if (!present.count(key + k))
         out.emplace_back(key + k, std::string("is missing; give the constant's ") + (k + 1));
+  }
+  for (const auto& p : user::shaderDefineProblems(t.shader_defines)) {
+    const auto colon = p.find(": ");
+    out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
   }
   if (!out.empty()) return out;
   try {

@@ -62,16 +62,20 @@ Convergence convergence(const std::vector<double>& e) {
   return c;
 }
 
-// "clip.hlsl alpha=0.2 clip=true": a lane's taa section for the legend, by name and typed value
-// whether it came from --params or a lanes file (its other keys follow as key=value).
+// "clip.hlsl alpha=0.2 clip=true -DUSE_YCOCG": a lane's taa section for the legend, by name and
+// typed value whether it came from --params or a lanes file (its other keys follow as key=value).
 std::string describeLane(const nlohmann::json& taa) {
   std::string out = taa.value("shader", std::string());
   const auto add = [&](const std::string& item) { out += (out.empty() ? "" : " ") + item; };
   if (const auto it = taa.find("shader_params"); it != taa.end() && it->is_array())
     for (const auto& p : *it)
       if (p.is_object()) add(p.value("name", std::string("?")) + "=" + p.value("value", nlohmann::json()).dump());
+  // Keywords as a compiler's command line writes them: two variants of one shader differ here.
+  if (const auto it = taa.find("shader_defines"); it != taa.end() && it->is_array())
+    for (const auto& d : *it) add("-D" + (d.is_string() ? d.get<std::string>() : d.dump()));
   for (const auto& [key, value] : taa.items())
-    if (key != "shader" && key != "shader_params") add(key + "=" + value.dump());
+    if (key != "shader" && key != "shader_params" && key != "shader_defines")
+      add(key + "=" + value.dump());
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include "user/shader_bounds.h"
 #include "user/user_capabilities.h"
 #include "user/user_resolve.h"
+#include "user/user_uniforms.h"
 
 namespace taa {
 
@@ -31,6 +32,10 @@ std::vector<std::string> LoadedUserShader::paramProblems(const spec::TaaSpec& ta
 
 std::vector<UserParamValue> LoadedUserShader::paramValues(const spec::TaaSpec& taa) const {
   return userParamValues(taa, shader_->interface);
+}
+
+std::string LoadedUserShader::uniformsLine(const spec::TaaSpec& taa) const {
+  return user::describeUserUniforms(taa, shader_->interface);
 }
 
 std::string LoadedUserShader::memoryProblem(const spec::TaaSpec& taa) const {

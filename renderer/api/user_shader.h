@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace taa {
 namespace user {
 enum class ParamType { Bool, Int, Uint, Float };
 const char* paramTypeName(ParamType t);  // "bool", "int", "uint", "float"
+std::optional<ParamType> paramTypeNamed(const std::string& name);  // paramTypeName's inverse
 }  // namespace user
 
 struct UserShader;
@@ -29,6 +31,9 @@ struct UserParamValue {
   uint32_t bits;             // as the specialization constant takes it
   bool given;                // by taa.shader_params, else the shader's default
   spec::NumberOrBool value;  // as JSON writes it: a bool as true/false
+  // Declared by the source but removed by the compile (its code never reads it): the value
+  // the case gives has no effect. Listed only when the case gives one.
+  bool unread = false;
 };
 
 class LoadedUserShader {
@@ -52,6 +57,9 @@ class LoadedUserShader {
   // taa.shader_params checked against its constants: one "KEY: problem" each (userParamProblems).
   std::vector<std::string> paramProblems(const spec::TaaSpec& taa) const;
   std::vector<UserParamValue> paramValues(const spec::TaaSpec& taa) const;
+  // Its loose uniforms with the values taa.shader_params gives, and those left zero
+  // (user::describeUserUniforms); "" when it has none.
+  std::string uniformsLine(const spec::TaaSpec& taa) const;
   // Empty, or which memory bound its variables exceed with the constants taa.shader_params
   // gives (user::spirvMemoryProblem).
   std::string memoryProblem(const spec::TaaSpec& taa) const;

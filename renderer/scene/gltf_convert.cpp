@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -130,6 +131,25 @@ std::vector<uint32_t> triangleList(int mode, std::vector<uint32_t> idx) {
   return out;
 }
 
+// The run log's word on what normaliseSkinWeights did to one mesh, or "" if nothing.
+std::string skinWeightNote(const SkinWeightFixes& f, const std::string& name, int index) {
+  if (f.scaled == 0 && f.unweighted == 0) return "";
+  auto sum = [](float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.3g", double(v));
+    return std::string(buf);
+  };
+  std::string out = "mesh '" + name + "' (meshes[" + std::to_string(index) + "]): ";
+  if (f.scaled > 0)
+    out += std::to_string(f.scaled) + " vertices have skin weights summing to " +
+           (f.lowest == f.highest ? sum(f.lowest) : sum(f.lowest) + " to " + sum(f.highest)) +
+           ", not one: normalised, as engines do";
+  if (f.unweighted > 0)
+    out += std::string(f.scaled > 0 ? "; " : "") + std::to_string(f.unweighted) +
+           " vertices have no skin weight and keep their bind pose";
+  return out;
+}
+
 }  // namespace
 
 int Converter::mesh(int index) {
@@ -140,6 +160,7 @@ int Converter::mesh(int index) {
   out.firstVertex = uint32_t(s_.vertices.size());
   for (double w : gm.weights) out.weights.push_back(float(w));
   bool any = false;
+  SkinWeightFixes weightFixes;
   for (size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
     const std::string what =
@@ -191,6 +212,7 @@ int Converter::mesh(int index) {
         (!colors.empty() && colors.size() != count * size_t(colorComps)))
       fail(what + " has attributes of different lengths; re-export it");
     const GltfDeform deform = readGltfDeform(file_, g_, prim, what, count);
+    weightFixes.add(deform.weightFixes);
     std::vector<uint32_t> idx;
     if (prim.indices >= 0) {
       idx = readIndices(prim.indices, what);
@@ -252,6 +274,8 @@ int Converter::mesh(int index) {
     out.primitives.push_back(out_prim);
   }
   out.vertexCount = uint32_t(s_.vertices.size()) - out.firstVertex;
+  if (const std::string note = skinWeightNote(weightFixes, out.name, index); !note.empty())
+    s_.notes.push_back(file_.filename().string() + ": " + note);
   if (!out.targets.empty()) out.weights.resize(out.targets.size(), 0.0f);
   if (std::all_of(out.skin.begin(), out.skin.end(),
                   [](const SkinWeights& w) { return w.weights == glm::vec4(0.0f); }))

@@ -39,10 +39,31 @@ std::vector<GltfNode> takeGltfNodes(nlohmann::json& doc);
 Model convertGltf(const std::filesystem::path& file, const tinygltf::Model& gltf,
                   const std::vector<GltfNode>& nodes, const std::string& warnings, Scene& scene);
 
+// What normaliseSkinWeights changed: vertices whose weights summed to other than one by more
+// than kSkinWeightNoteTolerance (scaled to one, the sums' range kept for the note) and those
+// with no weight at all.
+struct SkinWeightFixes {
+  size_t scaled = 0, unweighted = 0;
+  float lowest = 1.0f, highest = 1.0f;  // of the scaled vertices' sums
+  void add(const SkinWeightFixes& o);
+};
+
+// Scales each vertex's four weights (4 per vertex) to sum to one, as engines and viewers do:
+// a file whose weights sum to less (CesiumMan's 0.18 to 0.999) would otherwise pull those
+// vertices towards the origin. A vertex whose weights sum to zero or less keeps its bind pose
+// (its weights become zero). Sums within kSkinWeightTolerance of one are left as they are, so
+// a well-formed file's weights keep their every bit; those within kSkinWeightNoteTolerance
+// are scaled without a note (a quantised file's rounding: Draco's, 16-bit weights'), so the
+// note counts only vertices whose weights were wrong.
+inline constexpr float kSkinWeightTolerance = 1e-5f;
+inline constexpr float kSkinWeightNoteTolerance = 1e-3f;
+SkinWeightFixes normaliseSkinWeights(std::vector<float>& weights);
+
 // A primitive's morph targets and skin attributes, per vertex of the primitive.
 struct GltfDeform {
   std::vector<std::vector<float>> positions, normals;  // per target: xyz per vertex (may be empty)
   std::vector<float> joints, weights;                  // 4 per vertex; empty: not skinned
+  SkinWeightFixes weightFixes;                         // what reading the weights normalised
 };
 GltfDeform readGltfDeform(const std::filesystem::path& file, const tinygltf::Model& gltf,
                           const tinygltf::Primitive& prim, const std::string& what, size_t count);

@@ -1,4 +1,6 @@
 // Internal to the glTF loader: morph targets, joints and weights of primitives, and skins.
+#include <algorithm>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/gltf_accessors.h"
@@ -56,8 +58,39 @@ GltfDeform readGltfDeform(const fs::path& file, const tinygltf::Model& g,
                                  "; joint indices are unsigned bytes (5121) or unsigned shorts "
                                  "(5123), not normalized: re-export it");
     d.weights = read(w->second, "WEIGHTS_0", 4);
+    d.weightFixes = normaliseSkinWeights(d.weights);
   }
   return d;
+}
+
+void SkinWeightFixes::add(const SkinWeightFixes& o) {
+  if (o.scaled > 0) {
+    lowest = scaled > 0 ? std::min(lowest, o.lowest) : o.lowest;
+    highest = scaled > 0 ? std::max(highest, o.highest) : o.highest;
+  }
+  scaled += o.scaled;
+  unweighted += o.unweighted;
+}
+
+SkinWeightFixes normaliseSkinWeights(std::vector<float>& weights) {
+  SkinWeightFixes f;
+  for (size_t i = 0; i + 3 < weights.size(); i += 4) {
+    float* w = &weights[i];
+    const float sum = w[0] + w[1] + w[2] + w[3];
+    if (std::fabs(sum - 1.0f) <= kSkinWeightTolerance) continue;
+    if (!(sum > 0.0f)) {  // none (or a sum no scale can mend): the bind pose, as engines keep it
+      if (w[0] != 0.0f || w[1] != 0.0f || w[2] != 0.0f || w[3] != 0.0f || sum != 0.0f)
+        std::fill(w, w + 4, 0.0f);
+      ++f.unweighted;
+      continue;
+    }
+    for (int k = 0; k < 4; ++k) w[k] /= sum;
+    if (std::fabs(sum - 1.0f) <= kSkinWeightNoteTolerance) continue;
+    f.lowest = f.scaled > 0 ? std::min(f.lowest, sum) : sum;
+    f.highest = f.scaled > 0 ? std::max(f.highest, sum) : sum;
+    ++f.scaled;
+  }
+  return f;
 }
 
 void appendGltfDeform(const GltfDeform& d, const std::vector<uint32_t>& source, size_t before,

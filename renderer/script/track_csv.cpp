@@ -73,7 +73,9 @@ class CsvReader {
 };
 
 RawTrack CsvReader::run(const std::string& text) {
-  size_t start = 0;
+  // A spreadsheet's "CSV UTF-8" starts with a byte-order mark, which would join the first
+  // column's name; it holds no line, so dropping it keeps every line number.
+  size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
   for (int line = 1; start <= text.size(); ++line) {
     const size_t end = std::min(text.find('\n', start), text.size());
     const std::string content = trim(text.substr(start, end - start));

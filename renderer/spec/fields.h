@@ -7,6 +7,7 @@
 #include <array>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace taa::spec {
 
@@ -19,11 +20,14 @@ struct Meta {
 };
 
 // A value that is a number, or JSON true/false (a user shader's bool constant); `number`
-// holds 1 or 0 for a bool, so a check of its type needs no second field.
+// holds 1 or 0 for a bool, so a check of its type needs no second field. A list of numbers
+// (`list`, at most kMaxNumberList) sets a user shader's vector or matrix uniform.
 struct NumberOrBool {
   double number = 0.0;
-  bool isBool = false;  // given as true or false
+  bool isBool = false;       // given as true or false
+  std::vector<double> list;  // given as [numbers]: `number` is then unused
 };
+inline constexpr size_t kMaxNumberList = 16;  // a float4x4
 
 template <class T>
 struct Range {

@@ -68,11 +68,13 @@ struct ShaderParam {
 template <class V>
 void fields(V& v, ShaderParam& p) {
   v.field("name", p.name,
-          Meta{"the constant's name in the shader (layout(constant_id = N) const T name)",
+          Meta{"the constant's name in the shader (layout(constant_id = N) const T name), or a "
+               "loose uniform's",
                "renderer/user/user_interface.cpp"});
   v.field("value", p.value,
           Meta{"its value (required): true or false (or 1 or 0) for a bool, a whole number for an "
-               "int (-2147483648 to 2147483647) or a uint (0 to 4294967295), a number for a float",
+               "int (-2147483648 to 2147483647) or a uint (0 to 4294967295), a number for a "
+               "float; a loose uniform's vector or matrix takes a list of its numbers",
                "renderer/user/user_resolve.cpp"});
 }
 
@@ -124,6 +126,9 @@ struct TaaSpec {
   ShaderLanguage shader_language = ShaderLanguage::Auto;
   std::string shader_entry = "main";
   std::vector<ShaderParam> shader_params;
+  // Preprocessor defines, "NAME" or "NAME=VALUE": an engine's keywords (Unity's multi_compile,
+  // Godot's version defines) chosen per variant without a wrapper file per variant.
+  std::vector<std::string> shader_defines;
   bool shader_clamps = false;
   // Not keys: set for the lanes the harness builds (score, sweep), never by a case file.
   // The folder taa.shader is relative to and its includes must stay inside, when it is not
@@ -170,11 +175,16 @@ void fields(V& v, TaaSpec& s) {
   v.field("shader_entry", s.shader_entry,
           Meta{"an HLSL shader's entry point (GLSL's is always main)",
                "renderer/user/glsl_compiler.cpp", "", "taa.shader is an HLSL shader"});
-  v.list(
-      "shader_params", s.shader_params,
-      Meta{"values for the shader's specialization constants, [{\"name\": ..., \"value\": ...}]; "
-           "checked against what the shader declares",
-           "renderer/user/user_interface.cpp", "", "taa.shader is set"});
+  v.list("shader_params", s.shader_params,
+         Meta{"values for the shader's specialization constants and loose uniforms (HLSL's "
+              "$Global), [{\"name\": ..., \"value\": ...}]; checked against what the shader "
+              "declares",
+              "renderer/user/user_interface.cpp", "", "taa.shader is set"});
+  v.field("shader_defines", s.shader_defines,
+          Meta{"preprocessor defines for the shader, each \"NAME\" (defined as 1) or "
+               "\"NAME=VALUE\", as a compiler's -D: an engine's keywords chosen per case, lane "
+               "or preset",
+               "renderer/api/shader_defines.cpp", "", "taa.shader is set"});
   v.field(
       "shader_clamps", s.shader_clamps,
       Meta{"the shader promises its output stays inside the current frame's 3x3 RGB min/max box, "

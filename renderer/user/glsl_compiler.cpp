@@ -1,7 +1,7 @@
 #include "user/glsl_compiler.h"
 
-#include <glslang/Public/ResourceLimits.h>
 #include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
@@ -13,12 +13,16 @@
 #include <mutex>
 #include <sstream>
 
+#include "api/shader_defines.h"
 #include "core/input_file.h"
 #include "core/sha256.h"
 #include "user/compile_sandbox.h"
+#include "user/entry_checks.h"
 #include "user/shader_bounds.h"
 #include "user/spirv_cache.h"
+#include "user/spirv_check.h"
 #include "user/user_capabilities.h"
+#include "user/user_interface.h"
 #include "vk/pipeline.h"
 
 namespace taa::user {
@@ -28,7 +32,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped when what this file passes to glslang changes, so older cache entries are ignored.
-constexpr const char* kCompilerTag = "taa-user 2 glslang 12 vulkan1.2 spv1.5";
+constexpr const char* kCompilerTag = "taa-user 3 glslang 12 vulkan1.2 spv1.5 params19";
 
 fs::path absoluteNormal(const fs::path& p) {
   std::error_code ec;
@@ -153,8 +157,11 @@ void initGlslangOnce() {
 }
 
 // What every compile of a language tells glslang besides its text, the one warm-up included.
-void configureShader(glslang::TShader& shader, const CompileOptions& o) {
+// `preamble` must outlive the shader's parse: glslang keeps the pointer.
+void configureShader(glslang::TShader& shader, const CompileOptions& o, std::string& preamble) {
+  preamble = shaderDefinePreamble(o.defines);
   if (o.language == ShaderLanguage::Hlsl) {
+    if (!preamble.empty()) shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangCompute, glslang::EShClientVulkan, 100);
     // The SPIR-V keeps the name: glslang given only a source entry point falls back on a
     // function called main, or renames the entry onto one, without a word.
@@ -162,11 +169,47 @@ void configureShader(glslang::TShader& shader, const CompileOptions& o) {
     shader.setSourceEntryPoint(o.entry.c_str());
   } else {
     // The include extension is on for every user shader, as it is for the built-in ones.
-    shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
+    preamble = "#extension GL_GOOGLE_include_directive : require\n" + preamble;
+    shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
   }
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+}
+
+// HLSL's non-static globals ($Global) moved to the loose uniforms' binding from glslang's
+// binding 0 (taa_frame's), so an engine's shader runs with its material properties as they
+// are. (glslang's setGlobalUniformBinding reaches only GLSL's relaxed globals, not HLSL's.)
+void bindGlobalUniforms(std::vector<unsigned int>& w) {
+  constexpr uint32_t kOpName = 5, kOpTypePointer = 32, kOpVariable = 59, kOpDecorate = 71,
+                     kDecoBinding = 33;
+  auto each = [&](auto&& f) {
+    for (size_t i = 5; i < w.size() && (w[i] >> 16) != 0 && i + (w[i] >> 16) <= w.size();
+         i += w[i] >> 16)
+      f(w[i] & 0xffffu, i);
+  };
+  uint32_t block = 0;
+  each([&](uint32_t op, size_t i) {
+    if (op == kOpName && (w[i] >> 16) >= 4 && std::memcmp(&w[i + 2], "$Glo", 4) == 0 &&
+        std::memcmp(&w[i + 3], "bal", 4) == 0)
+      block = w[i + 1];
+  });
+  if (block == 0) return;
+  std::vector<uint32_t> pointers, variables;
+  each([&](uint32_t op, size_t i) {
+    if (op == kOpTypePointer && (w[i] >> 16) >= 4 && w[i + 3] == block)
+      pointers.push_back(w[i + 1]);
+  });
+  each([&](uint32_t op, size_t i) {
+    if (op == kOpVariable && (w[i] >> 16) >= 4 &&
+        std::find(pointers.begin(), pointers.end(), w[i + 1]) != pointers.end())
+      variables.push_back(w[i + 2]);
+  });
+  each([&](uint32_t op, size_t i) {
+    if (op == kOpDecorate && (w[i] >> 16) >= 4 && w[i + 2] == kDecoBinding &&
+        std::find(variables.begin(), variables.end(), w[i + 1]) != variables.end())
+      w[i + 3] = kUserParams;
+  });
 }
 
 EShMessages messagesFor(ShaderLanguage l) {
@@ -197,7 +240,8 @@ void warmBuiltinsOnce(ShaderLanguage language) {
                               : "#version 450\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
     glslang::TShader shader(EShLangCompute);
     shader.setStrings(&text, 1);
-    configureShader(shader, o);
+    std::string preamble;
+    configureShader(shader, o, preamble);
     shader.parse(GetDefaultResources(), versionFor(language), false, messagesFor(language));
   });
 }
@@ -260,9 +304,10 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
   const char* strings[] = {text.c_str()};
   const int lengths[] = {int(text.size())};
   const char* names[] = {name.c_str()};
+  std::string preamble;
   auto configure = [&](glslang::TShader& shader) {
     shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-    configureShader(shader, o);
+    configureShader(shader, o, preamble);
   };
   const auto messages = messagesFor(o.language);
   const int version = versionFor(o.language);
@@ -308,11 +353,16 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) return fail(includer, program.getInfoLog());
+  if (const std::string why = entryPointProblem(*program.getIntermediate(EShLangCompute), name,
+                                                hlsl ? o.entry : "main");
+      !why.empty())
+    return "E" + why;
   std::vector<unsigned int> words;
   glslang::SpvOptions options;
   options.generateDebugInfo = false;
   options.disableOptimizer = !hlsl;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), words, &options);
+  bindGlobalUniforms(words);
   std::string out = "S";
   appendU32(out, uint32_t(includer.files().size()));
   for (const auto& f : includer.files()) appendString(out, f.string());
@@ -384,10 +434,13 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
     throw ShaderCompileError(e.what());
   }
   const std::string text = readShaderText(real, source.string());
+  if (const auto problems = shaderDefineProblems(o.defines); !problems.empty())
+    throw ShaderCompileError(source.string() + ": " + problems.front());
   Sha256 h;
   for (const std::string& part :
        {std::string(kCompilerTag), std::string(languageName(o.language)), o.entry, real.string(),
-        fs::weakly_canonical(headerDir).string(), fs::weakly_canonical(o.root).string(), text}) {
+        fs::weakly_canonical(headerDir).string(), fs::weakly_canonical(o.root).string(),
+        shaderDefinePreamble(o.defines), text}) {
     h.update(part.data(), part.size());
     h.update("\0", 1);
   }
@@ -396,15 +449,29 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
 
   CompiledShader out;
   std::string miss;
+  // Cached or fresh, no driver sees SPIR-V the validator has not passed.
+  auto checked = [&](CompiledShader& c) -> CompiledShader& {
+    if (const std::string why = userSpirvProblem(c.spirv, source.string()); !why.empty())
+      throw ShaderCompileError(why);
+    return c;
+  };
   if (readSpirvCache(cacheDir, key, out, miss)) {
     out.provenance = provenanceOf(key, "from the cache", false);
-    return out;
+    return checked(out);
   }
   out = CompiledShader{};
   GlslangOutput g = runGlslang(source, text, o.root, headerDir, o);
   out.spirv = std::move(g.spirv);
   out.includes = std::move(g.includes);
   out.capabilities = declaredCapabilities(g.preprocessed, source.string());
+  out.constants = declaredConstants(g.preprocessed);
+  // Checked on the source too: HLSL's compile removes a constant it never reads, id and all.
+  for (const auto& c : out.constants)
+    if (c.id > int64_t(kMaxUserConstantId))
+      throw ShaderCompileError(source.string() + ": specialization constant " + c.name +
+                               " has constant_id " + std::to_string(c.id) +
+                               "; taa_user.h allows 0 to " + std::to_string(kMaxUserConstantId));
+  checked(out);
   writeSpirvCache(cacheDir, key, out);
   out.provenance = provenanceOf(
       key, miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss,

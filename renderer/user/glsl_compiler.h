@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "api/loader_errors.h"  // ShaderCompileError
+#include "user/declared_constants.h"
 
 namespace taa::user {
 
@@ -27,6 +28,9 @@ struct CompileOptions {
   std::filesystem::path cacheDir;   // empty: userShaderCacheDir() (spirv_cache.h)
   ShaderLanguage language = ShaderLanguage::Glsl;
   std::string entry = "main";  // HLSL's entry point, kept as the SPIR-V's (GLSL's is main)
+  // taa.shader_defines, valid (api/shader_defines.h): #define lines before the source, part of the
+  // cache key.
+  std::vector<std::string> defines;
 };
 
 struct CompiledShader {
@@ -41,6 +45,8 @@ struct CompiledShader {
   // The capabilities its preprocessed text declares (#pragma taa_supports(NAME), which the
   // headers' TAA_SUPPORTS_* macros write), sorted.
   std::vector<std::string> capabilities;
+  // The specialization constants its source declares, read or not (declared_constants.h).
+  std::vector<DeclaredConstant> constants;
 };
 
 // Throws ShaderCompileError (bad shader or path) or OutputError (the cache cannot be written).

@@ -11,11 +11,17 @@
 namespace taa::user {
 
 std::string readShaderText(const std::filesystem::path& file, const std::string& what) {
+  std::string text;
   try {
-    return readInputFile(file, kMaxShaderFileBytes);
+    text = readInputFile(file, kMaxShaderFileBytes);
   } catch (const InputFileError& e) {
     throw ShaderCompileError(what + ": " + e.what());
   }
+  // Editors on Windows (and Unity's own files) start UTF-8 text with a byte-order mark, which
+  // glslang's preprocessor takes for a token before the first `#`. It carries no line, so
+  // dropping it keeps every line number the user sees.
+  if (text.rfind(kUtf8ByteOrderMark, 0) == 0) text.erase(0, kUtf8ByteOrderMark.size());
+  return text;
 }
 
 namespace {

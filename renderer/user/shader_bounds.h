@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "user/compile_sandbox.h"
@@ -36,8 +37,11 @@ inline constexpr uint64_t kMaxConstantArrayNumbers = 1024;
 // shader that loads runs on every device.
 inline constexpr uint64_t kMaxSharedBytes = uint64_t(16) << 10;
 
-// A user's shader or header, read whole within kMaxShaderFileBytes; a file missing, unreadable,
-// or over the bound is a ShaderCompileError starting with `what`.
+inline constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+
+// A user's shader or header, read whole within kMaxShaderFileBytes, less a leading UTF-8
+// byte-order mark; a file missing, unreadable, or over the bound is a ShaderCompileError
+// starting with `what`.
 std::string readShaderText(const std::filesystem::path& file, const std::string& what);
 
 // The child process glslang runs in: CPU, memory, wall time and its thread's stack.

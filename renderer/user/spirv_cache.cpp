@@ -31,6 +31,7 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
   std::string kind, sha, spvSha;
   std::vector<fs::path> includes;
   std::vector<std::string> capabilities;
+  std::vector<DeclaredConstant> constants;
   std::string line;
   while (std::getline(deps, line)) {
     std::istringstream l(line);
@@ -41,6 +42,10 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
       spvSha = sha;
     } else if (kind == "cap") {
       capabilities.push_back(sha);
+    } else if (kind == "con") {  // "con TYPE NAME"
+      const auto type = paramTypeNamed(sha);
+      if (!type || path.empty()) return false;
+      constants.push_back({path, *type});
     } else if (kind == "inc") {
       std::error_code ec;
       if (!fs::is_regular_file(path, ec)) {
@@ -73,6 +78,7 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
   std::memcpy(out.spirv.data(), bytes.data(), bytes.size());
   out.includes = std::move(includes);
   out.capabilities = std::move(capabilities);
+  out.constants = std::move(constants);
   out.fromCache = true;
   return true;
 }
@@ -85,6 +91,8 @@ void writeSpirvCache(const fs::path& dir, const std::string& key, const Compiled
   std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
   for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
   for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
+  for (const auto& con : c.constants)
+    deps += std::string("con ") + paramTypeName(con.type) + " " + con.name + "\n";
   writeFileAtomically(dir / (key + ".deps"), deps);
 }
 

@@ -22,14 +22,15 @@ static_assert(resolveInputBindingsValid({}, {kUserFrame, kUserOutput, kUserHisto
               "takes a binding of its own targets");
 
 // The SPIR-V opcodes and decorations read here (SPIR-V specification, section 3).
-constexpr uint32_t kUserOpName = 5, kUserOpTypeBool = 20, kUserOpTypeInt = 21,
-                   kUserOpTypeFloat = 22, kUserOpTypeImage = 25, kUserOpTypeSampledImage = 27,
-                   kUserOpTypePointer = 32, kUserOpSpecTrue = 48, kUserOpSpecFalse = 49,
-                   kUserOpSpec = 50, kUserOpVariable = 59, kUserOpDecorate = 71;
-constexpr uint32_t kUserDecoSpecId = 1, kUserDecoBinding = 33;
+constexpr uint32_t kUserOpName = 5, kUserOpMemberName = 6, kUserOpTypeBool = 20,
+                   kUserOpTypeInt = 21, kUserOpTypeFloat = 22, kUserOpTypeVector = 23,
+                   kUserOpTypeMatrix = 24, kUserOpTypeImage = 25, kUserOpTypeSampledImage = 27,
+                   kUserOpTypeStruct = 30, kUserOpTypePointer = 32, kUserOpSpecTrue = 48,
+                   kUserOpSpecFalse = 49, kUserOpSpec = 50, kUserOpVariable = 59,
+                   kUserOpDecorate = 71, kUserOpMemberDecorate = 72;
+constexpr uint32_t kUserDecoSpecId = 1, kUserDecoRowMajor = 4, kUserDecoMatrixStride = 7,
+                   kUserDecoBinding = 33, kUserDecoOffset = 35;
 constexpr uint32_t kUserDim2D = 1, kUserFormatRgba16f = 2;
-// taa_user.h: "N from 0 to 99".
-constexpr uint32_t kUserMaxConstantId = 99;
 
 // What taa_user.h declares at a binding of set 0, and so what the harness binds there: the
 // inputs' rows of resolve_inputs.h, then its own frame constants, output, histories and the
@@ -65,6 +66,9 @@ std::optional<UserSlot> userSlot(uint32_t binding) {
       return UserSlot{"taa_point_clamp", false, sampler, false};
     case kUserLinearSampler:
       return UserSlot{"taa_linear_clamp", false, sampler, false};
+    case kUserParams:
+      return UserSlot{"the loose uniforms ($Global)", false, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                      false};
     default:
       return std::nullopt;
   }
@@ -122,10 +126,41 @@ const char* paramTypeName(ParamType t) {
   return "?";
 }
 
+std::optional<ParamType> paramTypeNamed(const std::string& name) {
+  for (const ParamType t : {ParamType::Bool, ParamType::Int, ParamType::Uint, ParamType::Float})
+    if (name == paramTypeName(t)) return t;
+  return std::nullopt;
+}
+
 const UserParam* UserInterface::param(const std::string& name) const {
   for (const auto& p : params)
     if (p.name == name) return &p;
   return nullptr;
+}
+
+const DeclaredConstant* UserInterface::unreadParam(const std::string& name) const {
+  for (const auto& c : unread)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+const UserUniform* UserInterface::uniform(const std::string& name) const {
+  for (const auto& m : uniforms)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+std::string UserUniform::typeName() const {
+  if (!supported) return "array or struct";
+  std::string t = paramTypeName(type);
+  if (columns > 1) return t + std::to_string(columns) + "x" + std::to_string(rows);
+  return rows > 1 ? t + std::to_string(rows) : t;
+}
+
+void noteUnreadConstants(UserInterface& u, const std::vector<DeclaredConstant>& declared) {
+  u.unread.clear();
+  for (const auto& c : declared)
+    if (!u.param(c.name) && !u.unreadParam(c.name)) u.unread.push_back(c);
 }
 
 namespace {
@@ -158,6 +193,10 @@ void checkUserBindings(const vk::ShaderInterface& si, const std::string& name) {
     if (b.count != 1)
       refuse("declares an array of " + std::to_string(b.count) + " at " + at + ", where taa_user.h declares one " +
              slot->name);
+    if (b.binding == kUserParams && b.bytes > kMaxUserUniformBytes)
+      refuse("declares " + std::to_string(b.bytes) + " bytes of loose uniforms ($Global) at " + at +
+             ", over the bound of " + std::to_string(kMaxUserUniformBytes) +
+             " bytes; move tables into a texture or make them static");
     if (b.binding == kUserFrame && b.bytes > kUserFrameBytes)
       refuse("declares a " + std::to_string(b.bytes) + "-byte uniform block at " + at +
              ", larger than taa_user.h's TaaUserFrame (" + std::to_string(kUserFrameBytes) +
@@ -247,6 +286,8 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
   std::map<uint32_t, std::vector<uint32_t>> defs;         // type / constant id -> operands
   std::vector<std::pair<uint32_t, uint32_t>> variables;   // pointer type, id
   std::vector<uint32_t> specConstants;
+  std::map<std::pair<uint32_t, uint32_t>, std::string> memberNames;  // (struct, member)
+  std::map<std::pair<uint32_t, uint32_t>, std::map<uint32_t, uint32_t>> memberDecorations;
   for (size_t i = 5; i < w.size();) {
     const uint32_t count = w[i] >> 16, opcode = w[i] & 0xffffu;
     if (count == 0 || i + count > w.size())
@@ -258,9 +299,14 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
       specIds[ops[0]] = ops[2];
     if (opcode == kUserOpDecorate && ops.size() >= 3 && ops[1] == kUserDecoBinding)
       bindings[ops[0]] = ops[2];
+    if (opcode == kUserOpMemberName && ops.size() >= 3)
+      memberNames[{ops[0], ops[1]}] = userOperandString(w, i + 3, i + count);
+    if (opcode == kUserOpMemberDecorate && ops.size() >= 3)
+      memberDecorations[{ops[0], ops[1]}][ops[2]] = ops.size() >= 4 ? ops[3] : 1u;
     if (opcode == kUserOpTypeBool || opcode == kUserOpTypeInt || opcode == kUserOpTypeFloat ||
         opcode == kUserOpTypeImage || opcode == kUserOpTypeSampledImage ||
-        opcode == kUserOpTypePointer) {
+        opcode == kUserOpTypePointer || opcode == kUserOpTypeVector ||
+        opcode == kUserOpTypeMatrix || opcode == kUserOpTypeStruct) {
       types[ops[0]] = opcode;
       defs[ops[0]] = ops;
     }
@@ -274,6 +320,51 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
   }
 
   checkUserImages(defs, types, variables, bindings, name);
+  if (const vk::ReflectedBinding* b = si.find(0, kUserParams)) {
+    u.uniformBytes = b->bytes;
+    for (const auto& [pointer, id] : variables) {
+      const auto bound = bindings.find(id);
+      if (bound == bindings.end() || bound->second != kUserParams) continue;
+      const auto& ptr = defs[pointer];
+      if (ptr.size() < 3 || types[ptr[2]] != kUserOpTypeStruct) continue;
+      const uint32_t block = ptr[2];
+      u.uniformBlock = names.count(block) ? names[block] : "";
+      const auto& members = defs[block];
+      for (uint32_t m = 0; m + 1 < members.size(); ++m) {
+        UserUniform uu;
+        const auto key = std::make_pair(block, m);
+        uu.name = memberNames.count(key) ? memberNames[key] : "";
+        auto& deco = memberDecorations[key];
+        uu.offset = deco.count(kUserDecoOffset) ? deco[kUserDecoOffset] : 0u;
+        uu.matrixStride = deco.count(kUserDecoMatrixStride) ? deco[kUserDecoMatrixStride] : 0u;
+        uu.rowMajor = deco.count(kUserDecoRowMajor) > 0;
+        uint32_t t = members[m + 1];
+        if (types[t] == kUserOpTypeMatrix && defs[t].size() >= 3) {
+          uu.columns = defs[t][2];
+          t = defs[t][1];
+        }
+        if (types[t] == kUserOpTypeVector && defs[t].size() >= 3) {
+          uu.rows = defs[t][2];
+          t = defs[t][1];
+        }
+        const uint32_t scalar = types[t];
+        uu.supported = scalar == kUserOpTypeFloat || scalar == kUserOpTypeInt;
+        uu.type = scalar == kUserOpTypeFloat                ? ParamType::Float
+                  : defs[t].size() >= 3 && defs[t][2] != 0u ? ParamType::Int
+                                                            : ParamType::Uint;
+        // Only 32-bit components: the values are written as 4-byte words.
+        if (uu.supported && (defs[t].size() < 2 || defs[t][1] != 32u)) uu.supported = false;
+        if (uu.columns > 1 && uu.matrixStride == 0) uu.supported = false;
+        // Its last byte: a matrix's last column (or row, if row-major) starts a stride before.
+        const uint64_t lines = uu.rowMajor ? uu.rows : uu.columns,
+                       width = uu.columns > 1 ? (uu.rowMajor ? uu.columns : uu.rows) : uu.rows;
+        const uint64_t end =
+            uint64_t(uu.offset) + uint64_t(uu.matrixStride) * (lines - 1) + width * 4u;
+        if (end > u.uniformBytes) uu.supported = false;
+        if (!uu.name.empty()) u.uniforms.push_back(uu);
+      }
+    }
+  }
 
   for (const uint32_t id : specConstants) {
     const auto sid = specIds.find(id);
@@ -283,10 +374,10 @@ UserInterface reflectUserInterface(const std::vector<uint32_t>& w, const std::st
       throw ShaderCompileError(
           name + ": specialization constant " + std::to_string(sid->second) +
           " has no name; declare it as `layout(constant_id = N) const T name = ...;`");
-    if (sid->second > kUserMaxConstantId)
-      throw ShaderCompileError(name + ": specialization constant " + n->second + " has constant_id " +
-                               std::to_string(sid->second) + "; taa_user.h allows 0 to " +
-                               std::to_string(kUserMaxConstantId));
+    if (sid->second > kMaxUserConstantId)
+      throw ShaderCompileError(name + ": specialization constant " + n->second +
+                               " has constant_id " + std::to_string(sid->second) +
+                               "; taa_user.h allows 0 to " + std::to_string(kMaxUserConstantId));
     const auto& ops = defs[id];
     UserParam p;
     p.name = n->second;

@@ -8,11 +8,14 @@
 #include <cstring>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
+#include <set>
 #include <stdexcept>
 
+#include "core/closest_match.h"
 #include "passes/storage_image.h"
 #include "script/timing.h"
 #include "user/glsl_compiler.h"
+#include "user/user_uniforms.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
 
@@ -62,53 +65,29 @@ const char* userFormatName(VkFormat f) {
 }
 
 // The 32 bits a specialization constant of type `t` takes for `v`, or an error message.
-std::string userParamBits(user::ParamType t, spec::NumberOrBool v, uint32_t& bits) {
-  using user::ParamType;
-  const double n = v.number;
-  const bool whole = std::floor(n) == n;
-  if (v.isBool && t != ParamType::Bool)
-    return std::string("give a number, not true or false, for a ") + user::paramTypeName(t);
-  switch (t) {
-    case ParamType::Bool:
-      if (n != 0.0 && n != 1.0) return "a bool takes true or false (or 1 or 0)";
-      bits = n != 0.0;
-      return {};
-    case ParamType::Int:
-      if (!whole || n < -2147483648.0 || n > 2147483647.0)
-        return "an int takes a whole number from -2147483648 to 2147483647";
-      bits = uint32_t(int32_t(int64_t(n)));
-      return {};
-    case ParamType::Uint:
-      if (!whole || n < 0.0 || n > 4294967295.0)
-        return "a uint takes a whole number from 0 to 4294967295";
-      bits = uint32_t(int64_t(n));
-      return {};
-    case ParamType::Float: {
-      if (std::fabs(n) > 3.4028234663852886e38) return "a float takes a number within float range";
-      const float f = float(n);
-      std::memcpy(&bits, &f, 4);
-      return {};
-    }
-  }
-  return "unknown type";
+std::string userParamBits(user::ParamType t, const spec::NumberOrBool& v, uint32_t& bits) {
+  if (!v.list.empty())
+    return std::string("a specialization constant takes one value, not a list; give a ") +
+           user::paramTypeName(t);
+  return user::scalarBits(t, v, bits);
 }
 
 // The value a constant's 32 bits stand for, as a case would write it.
 spec::NumberOrBool userParamValue(user::ParamType t, uint32_t bits) {
   switch (t) {
     case user::ParamType::Bool:
-      return {bits ? 1.0 : 0.0, true};
+      return {bits ? 1.0 : 0.0, true, {}};
     case user::ParamType::Int:
-      return {double(int32_t(bits)), false};
+      return {double(int32_t(bits)), false, {}};
     case user::ParamType::Uint:
-      return {double(bits), false};
+      return {double(bits), false, {}};
     case user::ParamType::Float: {
       float f = 0.0f;
       std::memcpy(&f, &bits, 4);
       // The shortest decimal that reads back as the same float (0.1, not 0.100000001).
       char buf[32];
       const auto r = std::to_chars(buf, buf + sizeof(buf), f);
-      return {std::strtod(std::string(buf, r.ptr).c_str(), nullptr), false};
+      return {std::strtod(std::string(buf, r.ptr).c_str(), nullptr), false, {}};
     }
   }
   return {};
@@ -143,9 +122,11 @@ UserShader loadUserShader(const spec::CaseSpec& spec) {
   o.root = out.root;
   o.language = out.language;
   o.entry = spec.taa.shader_entry;
+  o.defines = spec.taa.shader_defines;
   user::CompiledShader c = user::compileComputeShader(out.file, o);
   try {
     out.interface = user::reflectUserInterface(c.spirv, out.file.string());
+    user::noteUnreadConstants(out.interface, c.constants);
   } catch (const InputError& e) {  // the shader breaks taa_user.h's contract
     throw user::ShaderCompileError(std::string(e.what()) + " (see docs/user-taa.md)");
   }
@@ -159,24 +140,47 @@ UserShader loadUserShader(const spec::CaseSpec& spec) {
 std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user::UserInterface& u) {
   std::vector<std::string> out;
   std::string declared;
-  for (const auto& p : u.params)
+  std::vector<std::string> names;
+  for (const auto& p : u.params) {
     declared += (declared.empty() ? "" : ", ") + p.name + " (" + user::paramTypeName(p.type) + ")";
+    names.push_back(p.name);
+  }
+  for (const auto& c : u.unread) {
+    declared += (declared.empty() ? "" : ", ") + c.name + " (" + user::paramTypeName(c.type) +
+                ", not read by its code)";
+    names.push_back(c.name);
+  }
+  for (const auto& m : u.uniforms) {
+    declared += (declared.empty() ? "" : ", ") + m.name + " (" + m.typeName() + " uniform)";
+    names.push_back(m.name);
+  }
   if (declared.empty()) declared = "none";
+  // Each repeat is named once, not once per earlier copy: a list of thousands stays linear.
+  std::set<std::string> seen;
   for (size_t i = 0; i < taa.shader_params.size(); ++i) {
     const auto& sp = taa.shader_params[i];
     const std::string key = "taa.shader_params[" + std::to_string(i) + "]";
     const user::UserParam* p = u.param(sp.name);
-    if (!p) {
+    const user::UserUniform* uniform = p ? nullptr : u.uniform(sp.name);
+    const user::DeclaredConstant* unread = p || uniform ? nullptr : u.unreadParam(sp.name);
+    if (!p && !unread && !uniform) {
+      const std::string guess = closestMatch(sp.name, names);
       out.push_back(key + ".name: '" + sp.name + "' is not a specialization constant of " +
-                    taa.shader + "; it declares: " + declared);
+                    taa.shader + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+                    "; it declares: " + declared);
       continue;
     }
-    for (size_t j = 0; j < i; ++j)
-      if (taa.shader_params[j].name == sp.name)
-        out.push_back(key + ".name: '" + sp.name + "' is set twice; remove one");
+    if (!seen.insert(sp.name).second)
+      out.push_back(key + ".name: '" + sp.name + "' is set twice; remove one");
+    if (uniform) {
+      if (const std::string why = user::uniformValueProblem(*uniform, sp.value); !why.empty())
+        out.push_back(key + ".value: " + why);
+      continue;
+    }
+    const user::ParamType type = p ? p->type : unread->type;
     uint32_t bits = 0;
-    if (const std::string why = userParamBits(p->type, sp.value, bits); !why.empty())
-      out.push_back(key + ".value: " + sp.name + " is declared " + user::paramTypeName(p->type) +
+    if (const std::string why = userParamBits(type, sp.value, bits); !why.empty())
+      out.push_back(key + ".value: " + sp.name + " is declared " + user::paramTypeName(type) +
                     "; " + why);
   }
   return out;
@@ -207,6 +211,23 @@ std::vector<UserParamValue> userParamValues(const spec::TaaSpec& taa, const user
     v.value = userParamValue(p.type, v.bits);
     out.push_back(v);
   }
+  for (const user::DeclaredConstant& c : u.unread)
+    for (const auto& sp : taa.shader_params) {
+      UserParamValue v{c.name, c.type, 0, true, {}, true};
+      if (sp.name != c.name || !userParamBits(c.type, sp.value, v.bits).empty()) continue;
+      v.value = userParamValue(c.type, v.bits);
+      out.push_back(v);
+      break;
+    }
+  return out;
+}
+
+std::vector<std::string> userParamNotes(const std::vector<UserParamValue>& values) {
+  std::vector<std::string> out;
+  for (const auto& v : values)
+    if (v.unread)
+      out.push_back("`" + v.name + "` is not read by the shader's code (its compile removed the " +
+                    "constant), so taa.shader_params' value for it has no effect");
   return out;
 }
 
@@ -222,9 +243,18 @@ std::string describeUserParams(const std::vector<UserParamValue>& values) {
       text.assign(buf, r.ptr);
     }
     out += (out.empty() ? "" : ", ") + v.name + "=" + text + " (" + user::paramTypeName(v.type) +
-           (v.given ? "" : ", default") + ")";
+           (v.unread  ? ", not read"
+            : v.given ? ""
+                      : ", default") +
+           ")";
   }
   return out.empty() ? "none" : out;
+}
+
+std::string describeUserDefines(const spec::TaaSpec& taa) {
+  std::string out;
+  for (const auto& d : taa.shader_defines) out += " -D" + d;
+  return out.empty() ? "" : ", defines" + out;
 }
 
 std::string describeUserShader(const spec::CaseSpec& spec) {
@@ -232,7 +262,7 @@ std::string describeUserShader(const spec::CaseSpec& spec) {
   const UserShader shader = loadUserShader(spec);
   const bool hlsl = shader.language == user::ShaderLanguage::Hlsl;
   return "user shader " + spec.taa.shader + " (" + user::languageName(shader.language) +
-         (hlsl ? ", entry " + spec.taa.shader_entry : "") +
+         (hlsl ? ", entry " + spec.taa.shader_entry : "") + describeUserDefines(spec.taa) +
          "), params: " + describeUserParams(userParamValues(spec.taa, shader.interface));
 }
 
@@ -248,6 +278,7 @@ struct UserResolvePass::Impl {
   vk::Image output[2];
   vk::Image history[2][2];  // [target][ping-pong]
   vk::Buffer uniforms;
+  vk::Buffer params;  // the loose uniforms, when the shader has any
   vk::Sampler linear, point;
   int current = 0;
   glm::vec2 prevJitter{0.0f};
@@ -262,6 +293,12 @@ struct UserResolvePass::Impl {
         point(c, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
     pipeline = vk::createComputePipelineFromSpirv(c, shader.file.filename().string(), shader.spirv,
                                                   userSpecConstants(s.taa, shader.interface));
+    if (shader.interface.uniformBytes > 0) {
+      // Set once: a case's values hold for the whole run.
+      const std::vector<uint8_t> bytes = user::userUniformBytes(s.taa, shader.interface);
+      params = vk::Buffer(c, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+      std::memcpy(params.mapped(), bytes.data(), bytes.size());
+    }
     const glm::ivec2 size = userOutputSize(s);
     output[0] = userTarget(c, "user_output_a", size, VK_FORMAT_R16G16B16A16_SFLOAT);
     output[1] = userTarget(c, "user_output_b", size, VK_FORMAT_R16G16B16A16_SFLOAT);
@@ -297,10 +334,14 @@ std::vector<std::string> UserResolvePass::describe() const {
   std::vector<std::string> out;
   const auto& ui = s.shader.interface;
   out.push_back("pass user_resolve " + s.shader.file.string() + " (" +
-                user::languageName(s.shader.language) + ", SPIR-V " + s.shader.provenance +
-                ") workgroup " + std::to_string(ui.workgroup[0]) + "x" +
-                std::to_string(ui.workgroup[1]) +
+                user::languageName(s.shader.language) + describeUserDefines(s.spec.taa) +
+                ", SPIR-V " + s.shader.provenance + ") workgroup " +
+                std::to_string(ui.workgroup[0]) + "x" + std::to_string(ui.workgroup[1]) +
                 " params: " + describeUserParams(userParamValues(s.spec.taa, ui)));
+  for (const auto& note : userParamNotes(userParamValues(s.spec.taa, ui)))
+    out.push_back("user shader note: " + note);
+  if (const std::string line = user::describeUserUniforms(s.spec.taa, ui); !line.empty())
+    out.push_back("user shader " + line);
   out.push_back("buffer user output 2x " + dims + " rgba16f");
   for (int k = 0; k < 2; ++k)
     if (const auto f = s.shader.interface.history[k])
@@ -351,6 +392,7 @@ void UserResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
       d.sample(binding, image, filter == VK_FILTER_LINEAR ? s.linear.handle() : s.point.handle());
   };
   d.uniform(user::kUserFrame, s.uniforms.handle(), 0, sizeof(UserFrameUniforms));
+  if (s.params) d.uniform(user::kUserParams, s.params.handle(), 0, ui.uniformBytes);
   for (const ResolveInputInfo& i : kResolveInputs) {
     if (!ui.reads.has(i.input)) continue;
     vk::Image* image = i.source == InputSource::Own ? &s.output[previous] : in[i.input];

@@ -50,6 +50,10 @@ vk::SpecConstants userSpecConstants(const spec::TaaSpec& taa, const user::UserIn
 // Every constant the shader declares with the value it runs with (api/user_shader.h).
 std::vector<UserParamValue> userParamValues(const spec::TaaSpec& taa, const user::UserInterface& u);
 std::string describeUserParams(const std::vector<UserParamValue>& values);  // "none" if empty
+// ", defines -DA -DB=2" for taa.shader_defines, "" when there are none.
+std::string describeUserDefines(const spec::TaaSpec& taa);
+// One sentence per value the shader's code does not read (UserParamValue::unread).
+std::vector<std::string> userParamNotes(const std::vector<UserParamValue>& values);
 
 // The G-buffer inputs the shader declares: the plan allocates exactly these.
 GBufferNeeds userNeeds(const user::UserInterface& u);

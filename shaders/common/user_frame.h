@@ -11,6 +11,10 @@
 // each input with the filter of its row in resolve_inputs.h).
 #define TAA_USER_BINDING_POINT_SAMPLER 17
 #define TAA_USER_BINDING_LINEAR_SAMPLER 18
+// A resolve's loose uniforms: HLSL's $Global (its non-static globals, as an engine's shader
+// declares material properties), or a GLSL uniform block declared at this binding. The harness
+// fills it by member name from taa.shader_params.
+#define TAA_USER_BINDING_PARAMS 19
 
 // X(GLSL type, name, doc): the TaaUserFrame uniform block (std140; a cbuffer in HLSL, same
 // layout), in member order. Only mat4, vec4 and uvec4, so no member is padded and the C++

@@ -180,6 +180,7 @@ int main(int argc, char** argv) {
       {"TAA_USER_BINDING_HISTORY1", TAA_USER_BINDING_HISTORY1},
       {"TAA_USER_BINDING_POINT_SAMPLER", TAA_USER_BINDING_POINT_SAMPLER},
       {"TAA_USER_BINDING_LINEAR_SAMPLER", TAA_USER_BINDING_LINEAR_SAMPLER},
+      {"TAA_USER_BINDING_PARAMS", TAA_USER_BINDING_PARAMS},
   };
   for (const auto& [marker, value] : bindings) text = substitute(text, marker, std::to_string(value));
   if (text.find('@') != std::string::npos) {

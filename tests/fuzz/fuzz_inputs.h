@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -21,6 +22,9 @@
 #include "script/track.h"
 #include "script/track_csv.h"
 #include "script/track_json.h"
+#include "user/glsl_compiler.h"
+#include "user/spirv_check.h"
+#include "user/user_interface.h"
 
 namespace taa::fuzz {
 
@@ -78,6 +82,33 @@ inline void readImageBytes(const std::string& bytes) {
     }
   } catch (const exr::ExrError&) {
   } catch (const png::PngError&) {
+  }
+}
+
+// A user's HLSL resolve through the compile (glslang in its sandboxed child, the entry point's
+// rules, spirv-val and the interface check) and the reflection, as `validate` runs them; the
+// bytes themselves also go to the SPIR-V check as words. Each file of the input's folder is
+// its own, and the SPIR-V cache is private to the process.
+inline void compileHlsl(const std::string& text) {
+  static const std::filesystem::path dir = [] {
+    const auto d =
+        std::filesystem::temp_directory_path() / ("taa-fuzz-shader-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d / "src");
+    return d;
+  }();
+  std::vector<uint32_t> words(text.size() / 4);
+  std::memcpy(words.data(), text.data(), words.size() * 4);
+  (void)user::userSpirvProblem(words, "fuzz.spv");
+  const std::filesystem::path file = dir / "src" / "in.hlsl";
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+  user::CompileOptions o;
+  o.root = dir / "src";
+  o.cacheDir = dir / "cache";
+  o.language = user::ShaderLanguage::Hlsl;
+  try {
+    const user::CompiledShader c = user::compileComputeShader(file, o);
+    (void)user::reflectUserInterface(c.spirv, file.string());
+  } catch (const user::ShaderCompileError&) {
   }
 }
 

@@ -36,6 +36,9 @@ void replay(const std::string& target, void (*read)(const std::string&)) {
 TEST(FuzzRegressions, CaseCorpus) {
   replay("case", &readCase);
 }
+TEST(FuzzRegressions, ShaderCorpus) {
+  replay("shader", &compileHlsl);
+}
 TEST(FuzzRegressions, TrackCorpus) {
   replay("track", &readTrack);
 }

@@ -99,5 +99,21 @@ TEST(ScoreLanes, ALanesFileShowsParamsByNameAndTypedValue) {
   EXPECT_EQ(lanes[0].describe, "g.comp depth_fix=true gain=0.5 shader_clamps=true");
 }
 
+// Two keyword variants of one shader are two lanes whose legends tell them apart; a lanes file
+// may start with a byte-order mark, as a file saved on Windows does.
+TEST(ScoreLanes, KeywordVariantsAreLanesWithTheirDefinesInTheLegend) {
+  const fs::path file = fs::path(TAA_TEST_OUT) / "score_lanes" / "variants.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file)
+      << "\xEF\xBB\xBF"
+      << R"({"ycocg": {"shader": "t.hlsl", "shader_defines": ["USE_YCOCG", "TAPS=9"]},
+    "rgb": {"shader": "t.hlsl"}})";
+  const auto lanes = loadLanes(file);
+  ASSERT_EQ(lanes.size(), 2u);
+  EXPECT_EQ(lanes[0].name, "rgb");
+  EXPECT_EQ(lanes[0].describe, "t.hlsl");
+  EXPECT_EQ(lanes[1].describe, "t.hlsl -DUSE_YCOCG -DTAPS=9");
+}
+
 }  // namespace
 }  // namespace taa::score

@@ -12,6 +12,7 @@
 #include "invariants/invariant_support.h"
 #include "passes/adaptive/trace_geometry.h"
 #include "scene/build_scene.h"
+#include "scene/gltf_convert.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_error.h"
 #include "scene_test_util.h"
@@ -102,6 +103,68 @@ TEST(GltfDeform, JointIndicesOfAnotherTypeAreRefusedByName) {
       EXPECT_EQ(msg.find("normalized;") != std::string::npos, normalized) << msg;
     }
   }
+}
+
+// CesiumMan's 210 vertices with weights summing to 0.18-0.999 collapsed towards the origin:
+// weights are normalised as engines do, a vertex without any keeps its bind pose, and the
+// run log says which mesh and how many.
+TEST(GltfDeform, SkinWeightsNotSummingToOneAreNormalisedAndNoted) {
+  const Scene twin = loadGltfDeform("skinned_quad.gltf");
+  const Mesh& twinMesh = twin.meshes[0];
+  std::ifstream in(assetPath("skinned_quad.gltf"));
+  nlohmann::json g = nlohmann::json::parse(in);
+  // The weights scaled by 0.18 to 0.99 (in a buffer of their own), one vertex's zeroed.
+  const size_t n = twinMesh.skin.size(), zeroed = n / 2;
+  ASSERT_GT(n, 2u);
+  std::vector<float> scaled;
+  for (size_t i = 0; i < n; ++i) {
+    const float k = i == zeroed ? 0.0f : 0.18f + 0.81f * float(i) / float(n - 1);
+    for (int c = 0; c < 4; ++c) scaled.push_back(twinMesh.skin[i].weights[c] * k);
+  }
+  const auto dir = std::filesystem::path(TAA_TEST_OUT) / "gltf-weights";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "weights.bin", std::ios::binary)
+      .write(reinterpret_cast<const char*>(scaled.data()), std::streamsize(scaled.size() * 4));
+  g["buffers"].push_back({{"uri", "weights.bin"}, {"byteLength", scaled.size() * 4}});
+  g["bufferViews"].push_back(
+      {{"buffer", g["buffers"].size() - 1}, {"byteLength", scaled.size() * 4}});
+  const int weights = g["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_0"];
+  g["accessors"][size_t(weights)]["bufferView"] = g["bufferViews"].size() - 1;
+  g["accessors"][size_t(weights)].erase("byteOffset");
+  std::ofstream(dir / "scaled.gltf") << g.dump();
+  Scene s;
+  s.models.push_back(loadGltf(dir / "scaled.gltf", s));
+
+  ASSERT_EQ(s.notes.size(), 1u);
+  EXPECT_EQ(s.notes[0], "scaled.gltf: mesh 'skinned_quad' (meshes[0]): " + std::to_string(n - 1) +
+                            " vertices have skin weights summing to 0.18 to 0.99, not one: "
+                            "normalised, as engines do; 1 vertices have no skin weight and keep "
+                            "their bind pose");
+  EXPECT_TRUE(twin.notes.empty());  // a well-formed file's weights are left alone
+  const double t = 1.5;
+  const auto draws = poseModel(s, 0, t), twinDraws = poseModel(twin, 0, t);
+  ASSERT_EQ(draws.size(), 1u);
+  const std::vector<Vertex> v = deformVertices(s, draws[0]), w = deformVertices(twin, twinDraws[0]);
+  ASSERT_EQ(v.size(), w.size());
+  for (size_t i = 0; i < v.size(); ++i) {
+    SCOPED_TRACE(i);
+    if (i == zeroed)
+      expectNearGltfDeform(v[i].position, s.vertices[s.meshes[0].firstVertex + i].position);
+    else
+      expectNearGltfDeform(v[i].position, w[i].position);
+  }
+  // The pure function: within the tolerance untouched to the bit, a negative sum unweighted.
+  // A quantised file's rounding is scaled without a note.
+  std::vector<float> bits = {0.25f, 0.25f, 0.25f, 0.2500001f, 0.5f, -0.75f,
+                             0.0f,  0.0f,  0.5f,  0.4996f,    0.0f, 0.0f};
+  const std::vector<float> before = bits;
+  const SkinWeightFixes f = normaliseSkinWeights(bits);
+  EXPECT_EQ(f.scaled, 0u);
+  EXPECT_EQ(f.unweighted, 1u);
+  EXPECT_EQ(std::vector<float>(bits.begin(), bits.begin() + 4),
+            std::vector<float>(before.begin(), before.begin() + 4));
+  EXPECT_EQ(std::vector<float>(bits.begin() + 4, bits.begin() + 8), std::vector<float>(4, 0.0f));
+  EXPECT_NEAR(bits[8] + bits[9], 1.0f, 1e-6f);
 }
 
 TEST(GltfDeform, NodeWeightsOverrideTheMeshDefault) {

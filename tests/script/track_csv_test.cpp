@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "script/track_json.h"
+#include "support/text.h"
 #include "track_test_util.h"
 
 namespace taa::script {
@@ -52,6 +56,17 @@ TEST(TrackCsv, MoverScaleColumns) {
   const RawTrack t = parseCsvTrack("time,px,py,pz,qx,qy,qz,qw,sx,sy,sz\n0,1,2,3,0,0,0,1,2,3,4\n",
                                    "m.csv", TrackSubject::Mover);
   EXPECT_EQ(t.samples[0].scale, glm::dvec3(2, 3, 4));
+}
+
+// Excel's "CSV UTF-8" starts with a byte-order mark; JSON tracks take one through nlohmann.
+TEST(TrackCsv, AByteOrderMarkBeforeTheHeaderIsAccepted) {
+  const RawTrack t = camera("\xEF\xBB\xBFtime,px,py,pz,qx,qy,qz,qw\n0,1,2,3,0,0,0,1\n");
+  ASSERT_EQ(t.samples.size(), 1u);
+  EXPECT_EQ(t.samples[0].position, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(t.samples[0].where, "cap.csv:2");
+  const std::string json = taa::test::readFile(std::filesystem::path(TAA_SOURCE_DIR) /
+                                               "cases/tracks/flythrough.track.json");
+  EXPECT_NO_THROW(parseJsonTrack("\xEF\xBB\xBF" + json, "flythrough.track.json"));
 }
 
 TEST(TrackCsv, HeaderProblemsNameTheLineAndTheFix) {

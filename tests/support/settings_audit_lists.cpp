@@ -44,6 +44,9 @@ const std::vector<Exclusion>& exclusions() {
        "(GlslCompilerTest.HlslEntryPointParametersHistoriesAndErrors)"},
       {"taa.shader_params*",
        "constants of a user's shader (UserCaseTest.ValidShaderAndParamsLoad, example.user_taa.*)"},
+      {"taa.shader_defines",
+       "keywords of a user's shader, names inside its file "
+       "(UserCaseTest.ShaderDefinesPickTheVariantAndBadNamesAreRefused)"},
       {"render.scale_schedule*",
        "a list of keyframes "
        "(EffectDynamicResolution.PanningErrorStaysCloseToTheFixedResolutionRun)"},

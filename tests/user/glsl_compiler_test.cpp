@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "support/shader_folder.h"
+#include "user/spirv_check.h"
 #include "user/user_interface.h"
 #include "user/user_resolve.h"
 #include "vk/spirv_reflect.h"
@@ -324,6 +325,110 @@ void resolve(uint3 id : SV_DispatchThreadID) {
   options_.entry = "nowhere";
   const std::string none = compileError(write("noentry.hlsl", kHlslPassThrough));
   EXPECT_NE(none.find("has no function nowhere to run"), std::string::npos) << none;
+}
+
+TEST_F(GlslCompilerTest, ByteOrderMarkAtTheStartOfAShaderOrIncludeIsAccepted) {
+  // Unity's files start with one; glslang alone takes it for a token before the first `#`.
+  const std::string bom = "\xEF\xBB\xBF";
+  write("lib/k.glsl", bom + "#define K 0.5\n");
+  const auto file = write("bom.comp", bom + R"(#version 450
+#include "taa_user.h"
+#include "lib/k.glsl"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * K, 1.0));
+}
+)");
+  const auto c = compileComputeShader(file, options_);
+  EXPECT_EQ(c.includes.size(), 2u);
+  // The mark holds no line: an error after it keeps its line number.
+  const auto broken = write("bom_broken.comp", bom + "#version 450\nvoid main() {\n  x = 1;\n}\n");
+  const std::string msg = compileError(broken);
+  EXPECT_NE(msg.find(broken.string() + ":3:"), std::string::npos) << msg;
+  options_.language = ShaderLanguage::Hlsl;
+  compileComputeShader(write("bom.hlsl", bom + kHlslPassThrough), options_);
+  // Only at the start: a mark inside the text is still the user's error.
+  const std::string inner = compileError(write("mid.hlsl", std::string(kHlslPassThrough) + bom));
+  EXPECT_FALSE(inner.empty());
+}
+
+// Issue 43: each of these compiled, passed `validate`, and crashed the render (SIGFPE in the
+// dispatch's size, SIGSEGV in lavapipe); each is refused with the file and line.
+TEST_F(GlslCompilerTest, HlslEntryPointsACorruptDriverWouldRunAreRefusedByRule) {
+  options_.language = ShaderLanguage::Hlsl;
+  const std::string head = "#include \"taa_user.hlsli\"\n";
+  const std::string body =
+      "  int2 p;\n  if (!taa_pixel(id, p)) return;\n"
+      "  taa_output[p] = float4(taa_color_at(p), 1.0);\n";
+  struct Bad {
+    const char* file;
+    std::string text, says;
+  };
+  const Bad bad[] = {
+      {"zero.hlsl",
+       head + "[numthreads(0, 8, 1)]\nvoid main(uint3 id : SV_DispatchThreadID) {\n" + body + "}\n",
+       ":3: the entry point main declares a workgroup of (0, 8, 1), with a zero"},
+      {"pos.hlsl",
+       head +
+           "TAA_NUMTHREADS\nvoid main(uint3 id : SV_DispatchThreadID,\n"
+           "          float4 pos : SV_Position) {\n" +
+           body + "}\n",
+       ":4: the entry point main's parameter 'pos' has no compute semantic"},
+      {"target.hlsl",
+       head + "TAA_NUMTHREADS\nfloat4 main(uint3 id : SV_DispatchThreadID) : SV_Target {\n" + body +
+           "  return 1;\n}\n",
+       ":3: the entry point main returns a value"},
+      {"bogus.hlsl",
+       head + "TAA_NUMTHREADS\nvoid main(uint3 id : SV_DispatchThreadID, float4 q : SV_Bogus) {\n" +
+           body + "}\n",
+       ":3: the entry point main's parameter 'q' has no compute semantic"},
+      {"plain.hlsl",
+       head + "TAA_NUMTHREADS\nvoid main(uint3 id : SV_DispatchThreadID, uint n) {\n" + body +
+           "}\n",
+       ":3: the entry point main's parameter 'n' has no compute semantic"},
+      {"discard.hlsl",
+       head +
+           "TAA_NUMTHREADS\nvoid main(uint3 id : SV_DispatchThreadID) {\n  if (id.x == 3) "
+           "discard;\n" +
+           body + "}\n",
+       "discard.hlsl: its SPIR-V is not valid for Vulkan 1.2 (spirv-val: "},
+      {"id100.hlsl",
+       head +
+           "[[vk::constant_id(100)]] const float k = 1.0;\nTAA_NUMTHREADS\n"
+           "void main(uint3 id : SV_DispatchThreadID) {\n" +
+           body + "}\n",
+       "id100.hlsl: specialization constant k has constant_id 100; taa_user.h allows 0 to 99"},
+  };
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.file);
+    const auto file = write(b.file, b.text);
+    const std::string msg = compileError(file);
+    EXPECT_NE(msg.find(b.says), std::string::npos) << msg;
+    EXPECT_NE(msg.find(b.file), std::string::npos) << msg;
+  }
+}
+
+// The interface check behind the validator: an input that is no thread id (here the id's
+// BuiltIn decoration turned into a Location, which spirv-val accepts) is refused.
+TEST_F(GlslCompilerTest, SpirvWhoseInputIsNoThreadIdIsRefused) {
+  options_.language = ShaderLanguage::Hlsl;
+  auto words = compileComputeShader(write("ok.hlsl", kHlslPassThrough), options_).spirv;
+  EXPECT_EQ(userSpirvProblem(words, "ok.hlsl"), "");
+  bool changed = false;
+  for (size_t i = 5; i + 3 < words.size(); i += words[i] >> 16)
+    if (words[i] == ((4u << 16) | 71u) && words[i + 2] == 11u && words[i + 3] == 28u) {
+      words[i + 2] = 30u;  // Location
+      words[i + 3] = 0u;
+      changed = true;
+    }
+  ASSERT_TRUE(changed);
+  const std::string why = userSpirvProblem(words, "ok.hlsl");
+  EXPECT_NE(why.find("ok.hlsl: its entry point takes an input that is not a compute thread id"),
+            std::string::npos)
+      << why;
+  words.resize(3);
+  EXPECT_NE(userSpirvProblem(words, "short").find("short: "), std::string::npos);
 }
 
 // kPassThrough with `lines` between its #version and its #include.

@@ -152,6 +152,113 @@ void main() {
             (nlohmann::json{{"name", "gain"}, {"value", 1.0}, {"type", "float"}, {"given", false}}));
 }
 
+// HLSL's compile removes a constant its code never reads (Playdead's motion_scale with motion
+// blur compiled out): setting it is a note, not a refusal; a name never declared still is.
+TEST_F(UserCaseTest, AConstantTheCompileDroppedIsANoteAndATypoStillRefused) {
+  std::ofstream(dir_ / "drop.hlsl") << R"(#include "taa_user.hlsli"
+[[vk::constant_id(0)]] const float feedback = 0.9;
+[[vk::constant_id(1)]] const float motion_scale = 1.0;  // read only by a compiled-out branch
+[[vk::constant_id(2)]] const bool motion_blur = false;
+TAA_NUMTHREADS
+void main(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+#ifdef USE_MOTION_BLUR
+  taa_output[p] = float4(taa_color_at(p) * motion_scale, 1.0);
+#else
+  taa_output[p] = float4(taa_color_at(p) * feedback, 1.0);
+#endif
+}
+)";
+  const std::string setting =
+      R"({"taa": {"shader": "drop.hlsl", "shader_params": [{"name": "motion_scale", "value": 0.5}]}})";
+  const auto loaded = taa::cases::parseCase(setting, dir_ / "c.json");
+  const auto printed = taa::cases::resolvedJson(loaded.spec)["taa"]["shader_params"];
+  ASSERT_EQ(printed.size(), 2u) << printed.dump();  // feedback and the note; motion_blur unset
+  EXPECT_EQ(printed[1]["name"], "motion_scale") << printed.dump();
+  EXPECT_EQ(printed[1]["value"], 0.5) << printed.dump();
+  EXPECT_EQ(printed[1]["unread"], "not read by the shader's code") << printed.dump();
+  EXPECT_FALSE(printed[0].contains("unread")) << printed.dump();
+  // Still typed by its declaration.
+  auto p = problems(
+      R"({"shader": "drop.hlsl", "shader_params": [{"name": "motion_scale", "value": true}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("motion_scale is declared float"), std::string::npos) << p[0];
+  p = problems(
+      R"({"shader": "drop.hlsl", "shader_params": [{"name": "motion_scal", "value": 1}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("'motion_scal' is not a specialization constant of drop.hlsl; did you mean "
+                      "'motion_scale'?"),
+            std::string::npos)
+      << p[0];
+  // Each repeat once, however many copies came before it.
+  p = problems(R"({"shader": "drop.hlsl", "shader_params": [{"name": "feedback", "value": 1},
+      {"name": "feedback", "value": 1}, {"name": "feedback", "value": 1}]})");
+  EXPECT_EQ(p.size(), 2u) << joined(p);
+}
+
+// Keywords from the case: each variant compiles its own SPIR-V (the defines are part of the
+// cache key), and a name no define can have is refused by key.
+TEST_F(UserCaseTest, ShaderDefinesPickTheVariantAndBadNamesAreRefused) {
+  std::ofstream(dir_ / "kw.hlsl") << "\xEF\xBB\xBF"
+                                  << R"(#include "taa_user.hlsli"
+#ifdef USE_GAIN
+[[vk::constant_id(0)]] const float gain = 0.5;
+#endif
+TAA_NUMTHREADS
+void main(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+#ifdef USE_GAIN
+  taa_output[p] = float4(taa_color_at(p) * gain * TAPS, 1.0);
+#else
+  taa_output[p] = float4(taa_color_at(p), 1.0);
+#endif
+}
+)";
+  // gain exists only in the USE_GAIN variant; TAPS only there too.
+  EXPECT_TRUE(problems(R"({"shader": "kw.hlsl", "shader_defines": ["USE_GAIN", "TAPS=3"],
+                           "shader_params": [{"name": "gain", "value": 0.25}]})")
+                  .empty());
+  auto p = problems(R"({"shader": "kw.hlsl", "shader_params": [{"name": "gain", "value": 0.25}]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("'gain' is not a specialization constant"), std::string::npos) << p[0];
+  p = problems(R"({"shader": "kw.hlsl", "shader_defines": ["USE_GAIN"]})");  // TAPS undefined
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("TAPS"), std::string::npos) << p[0];
+  for (const char* bad : {"2FAST", "USE-GAIN", "GL_OES_x", "__FILE", "", "=1"}) {
+    SCOPED_TRACE(bad);
+    p = problems(std::string(R"({"shader": "kw.hlsl", "shader_defines": [")") + bad + "\"]}");
+    ASSERT_EQ(p.size(), 1u) << joined(p);
+    EXPECT_NE(p[0].find("c.json: taa.shader_defines[0]: '"), std::string::npos) << p[0];
+    EXPECT_NE(p[0].find("is not a name a define can have"), std::string::npos) << p[0];
+  }
+  p = problems(R"({"shader": "kw.hlsl", "shader_defines": ["A=1\nB"]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_defines[0]: A's value holds a line break"), std::string::npos)
+      << p[0];
+  p = problems(R"({"shader": "kw.hlsl", "shader_defines": ["A", "A=2"]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_defines[1]: A is defined twice"), std::string::npos) << p[0];
+  p = problems(R"({"shader_defines": ["A"]})");
+  ASSERT_EQ(p.size(), 1u) << joined(p);
+  EXPECT_NE(p[0].find("taa.shader_defines: applies only to a user's resolve"), std::string::npos)
+      << p[0];
+  // validate --print and the goldens' input hash: the defines are keys of the case.
+  const auto one = taa::cases::parseCase(
+      R"({"taa": {"shader": "kw.hlsl", "shader_defines": ["USE_GAIN", "TAPS=3"]}})",
+      dir_ / "c.json");
+  const auto two = taa::cases::parseCase(
+      R"({"taa": {"shader": "kw.hlsl", "shader_defines": ["USE_GAIN", "TAPS=4"]}})",
+      dir_ / "c.json");
+  EXPECT_EQ(taa::cases::resolvedJson(one.spec)["taa"]["shader_defines"],
+            (nlohmann::json{"USE_GAIN", "TAPS=3"}));
+  EXPECT_NE(one.sha256, two.sha256);
+  // A case saved with a byte-order mark reads as the same case.
+  EXPECT_NO_THROW(taa::cases::parseCase(
+      "\xEF\xBB\xBF" + std::string(R"({"taa": {"shader": "kw.hlsl"}})"), dir_ / "c.json"));
+}
+
 TEST_F(UserCaseTest, ACaseNeedingACapabilityTheShaderLacksIsRefused) {
   const auto load = [&](const std::string& shader, const std::string& render) {
     return joined(taa::test::caseRefusal([&] {

@@ -172,8 +172,11 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
       continue;
     }
     for (size_t j = 0; j < i; ++j)
-      if (taa.shader_params[j].name == sp.name)
+      if (taa.shader_params[j].name == sp.name) {
+        // Once per entry, not per pair: n entries of one name are n - 1 lines, not n^2 / 2.
         out.push_back(key + ".name: '" + sp.name + "' is set twice; remove one");
+        break;
+      }
     uint32_t bits = 0;
     if (const std::string why = userParamBits(p->type, sp.value, bits); !why.empty())
       out.push_back(key + ".value: " + sp.name + " is declared " + user::paramTypeName(p->type) +

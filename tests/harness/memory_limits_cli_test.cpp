@@ -40,17 +40,21 @@ std::string bigEndian32(uint32_t v) {
   return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
 }
 
-// A PNG whose header says width x height (colour type 0 grey or 6 RGBA, 8 bits) and whose
-// data is one empty zlib stream: the file is a few dozen bytes, its pixels would be gigabytes.
+// A PNG whose header says width x height (colour type 0 grey or 6 RGBA, 8 bits) with just
+// enough image data to inflate that far (1032:1, the structure check's bound): the grey one is
+// the 260 KB file of 16384x16384 pixels. The data is no zlib stream, so a reader that
+// inflated it would fail, never succeed; the limit must come first.
 void writeHugePngHeader(const fs::path& file, uint32_t width, uint32_t height, char colourType) {
   auto chunk = [](const std::string& kind, const std::string& data) {
     return bigEndian32(uint32_t(data.size())) + kind + data + bigEndian32(pngCrc32(kind + data));
   };
   const std::string ihdr =
       bigEndian32(width) + bigEndian32(height) + std::string{8, colourType, 0, 0, 0};
+  const uint64_t raw = (uint64_t(width) * (colourType == 6 ? 4 : 1) + 1) * height;
+  const size_t idat = size_t(raw / 1032 + 1024);
   std::ofstream(file, std::ios::binary)
       << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IHDR", ihdr)
-      << chunk("IDAT", std::string("\x78\x9c\x03\x00\x00\x00\x00\x01", 8)) << chunk("IEND", "");
+      << chunk("IDAT", std::string(idat, '\0')) << chunk("IEND", "");
 }
 
 TEST_F(MemoryLimits, TenThousandShaderParamsAreOneRefusal) {

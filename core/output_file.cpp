@@ -67,8 +67,10 @@ void syncDirectory(const fs::path& dir) {
 }
 
 void writeFileAtomically(const fs::path& file, std::string_view content) {
-  // Before anything is created beside it (as root, /dev/full's folder is writable).
-  if (const std::string kind = notRegular(file); !kind.empty()) refuseType(file, kind, "");
+  // Before anything is created beside it (as root, /dev/full's folder is writable). A folder
+  // squatting on the name is left to the rename, whose failure is the environment's (exit 3).
+  if (const std::string kind = notRegular(file); !kind.empty() && kind != "a directory")
+    refuseType(file, kind, "");
   static std::atomic<unsigned> counter{0};
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   const fs::path tmp = dir / ("." + file.filename().string() + ".tmp-" +

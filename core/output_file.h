@@ -44,8 +44,9 @@ void syncDirectory(const std::filesystem::path& dir);
 
 // Writes `content` to a hidden temporary file in the same folder, checks every write,
 // flushes it to disk and renames it over `file`. Throws OutputError; `file` is then as it was.
-// Throws OutputPathError (checkOutputPath's type rule) when `file` exists and is not a
-// regular file: a rename would replace a device node, FIFO or link with a regular file.
+// Throws OutputPathError (checkOutputPath's type rule) when `file` exists and is a device node,
+// FIFO, socket or link, which a rename would replace with a regular file (a directory there
+// makes the rename fail: OutputError).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
 
 // Creates `dir` and its parents; throws OutputError naming it.

@@ -233,17 +233,17 @@ Image readImage(const fs::path& path) {
                      "convert it to one of them");
 }
 
-ReadImage readImageByName(const fs::path& path, const std::string& layer) {
+ReadImage readImageByName(const fs::path& path, const std::string& layer, uint64_t maxSamples) {
   const std::string bytes = readImageFile(path);
   ReadImage out;
   try {
     if (exr::hasExrMagic(bytes)) {
-      out.image = exr::decode(bytes, kMaxImageSamples, &layer);
+      out.image = exr::decode(bytes, maxSamples, &layer);
       out.linear = true;
       return out;
     }
     if (png::hasPngSignature(bytes)) {
-      out.image = png::decode(bytes, kMaxImageSamples);
+      out.image = png::decode(bytes, maxSamples);
       return out;
     }
   } catch (const std::runtime_error& e) {

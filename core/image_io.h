@@ -77,7 +77,9 @@ struct ReadImage {
 // G, B, A for an empty `layer`), those present in that order, R required; a file without them
 // is refused naming its channels (a layered, B,G,R-ordered or X,Y,Z file is never read as RGB
 // by position).
-ReadImage readImageByName(const std::filesystem::path& path, const std::string& layer);
+// `maxSamples` bounds the decoded image below kMaxImageSamples where a reader needs it (compare).
+ReadImage readImageByName(const std::filesystem::path& path, const std::string& layer,
+                          uint64_t maxSamples = kMaxImageSamples);
 
 // Writes a linear HDR image for viewing as 8-bit sRGB PNG, alpha dropped; see toDisplaySrgb for
 // the exact mapping. Atomic like writeExr.

@@ -38,13 +38,16 @@ struct Fd {
 };
 
 template <class Container>
-void readInto(const fs::path& file, uint64_t maxBytes, Container& out) {
+void readInto(const fs::path& file, uint64_t maxBytes, Container& out, LastLink last) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
-  const Fd f{::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
+  const Fd f{::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY |
+                                      (last == LastLink::Refuse ? O_NOFOLLOW : 0))};
   if (f.fd < 0) {
     const int err = errno;
     if (err == ENOENT)
       refuse(file, "does not exist; check the path (relative paths start at the case's folder)");
+    if (err == ELOOP && last == LastLink::Refuse)
+      refuse(file, "is a symbolic link; give the file itself");
     if (err == ELOOP) refuse(file, "is a symbolic-link loop; point the link at a file");
     refuse(file,
            "cannot be opened (" + std::string(std::strerror(err)) + "); check its permissions");
@@ -100,8 +103,9 @@ fs::path containedRealPath(const fs::path& root, const fs::path& file, const std
   // whether a file outside the folder exists, nor where a link points.
   const fs::path led = followLinks(fs::absolute(file, ec));
   if (led.empty())
-    refuse(file, what + " is a symbolic-link loop (or a link chain over 40 long); point the "
-                        "link at a file");
+    refuse(file, what +
+                     " is a symbolic-link loop (or a link chain over 40 long); point the "
+                     "link at a file");
   if (!isInsideFolder(realRoot, led))
     refuse(file, what + " leads outside '" + realRoot.string() +
                      "' (through '..' or a symbolic link); copy the file itself into that folder");
@@ -139,15 +143,15 @@ std::vector<fs::path> inputFilesIn(const fs::path& dir, const std::string& exten
   return files;
 }
 
-std::string readInputFile(const fs::path& file, uint64_t maxBytes) {
+std::string readInputFile(const fs::path& file, uint64_t maxBytes, LastLink last) {
   std::string out;
-  readInto(file, maxBytes, out);
+  readInto(file, maxBytes, out, last);
   return out;
 }
 
 std::vector<uint8_t> readInputBytes(const fs::path& file, uint64_t maxBytes) {
   std::vector<uint8_t> out;
-  readInto(file, maxBytes, out);
+  readInto(file, maxBytes, out, LastLink::Follow);
   return out;
 }
 

@@ -49,9 +49,14 @@ std::vector<std::filesystem::path> inputFilesIn(const std::filesystem::path& dir
                                                 const std::string& extension,
                                                 std::vector<std::string>& problems);
 
+// Whether a symbolic link as the last part of a path is followed when the file is opened, or
+// refused (a path already resolved, which a link put in its place since must not redirect).
+enum class LastLink { Follow, Refuse };
+
 // The whole content of `file`, which must be a regular file of at most `maxBytes` bytes.
 // Throws InputFileError otherwise (missing, unreadable, FIFO, device, directory, too big).
-std::string readInputFile(const std::filesystem::path& file, uint64_t maxBytes);
+std::string readInputFile(const std::filesystem::path& file, uint64_t maxBytes,
+                          LastLink last = LastLink::Follow);
 std::vector<uint8_t> readInputBytes(const std::filesystem::path& file, uint64_t maxBytes);
 
 }  // namespace taa

@@ -24,13 +24,53 @@ void syncPath(const fs::path& path, int flags) {
     throw OutputError(path, std::string("flushing to disk failed: ") + std::strerror(err));
 }
 
+// What an existing non-regular path is, for messages; "" for a regular file or no file.
+std::string notRegular(const fs::path& file) {
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) != 0) return "";  // a new path
+  if (S_ISREG(st.st_mode)) return "";
+  if (S_ISLNK(st.st_mode)) return "a symbolic link";
+  if (S_ISDIR(st.st_mode)) return "a directory";
+  if (S_ISFIFO(st.st_mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "a device";
+  return "not a regular file";
+}
+
+[[noreturn]] void refuseType(const fs::path& file, const std::string& kind,
+                             const std::string& what) {
+  throw OutputPathError((what.empty() ? "" : what + " ") + file.string() + ": is " + kind +
+                        "; outputs are written only to a new path or over a regular file, so "
+                        "give another path");
+}
+
 }  // namespace
+
+void checkOutputPath(const fs::path& file, const std::vector<fs::path>& inputs,
+                     const std::string& what) {
+  if (const std::string kind = notRegular(file); !kind.empty()) refuseType(file, kind, what);
+  std::error_code ec;
+  for (const auto& input : inputs) {
+    if (input.empty()) continue;
+    const bool same =
+        fs::equivalent(file, input, ec) || fs::weakly_canonical(fs::absolute(file), ec) ==
+                                               fs::weakly_canonical(fs::absolute(input), ec);
+    if (same)
+      throw OutputPathError(what + " " + file.string() + ": is the command's own input " +
+                            input.string() +
+                            "; writing it would replace what was read, so give "
+                            "another path");
+  }
+}
 
 void syncDirectory(const fs::path& dir) {
   syncPath(dir.empty() ? fs::path(".") : dir, O_RDONLY | O_DIRECTORY);
 }
 
 void writeFileAtomically(const fs::path& file, std::string_view content) {
+  // Before anything is created beside it (as root, /dev/full's folder is writable). A folder
+  // squatting on the name is left to the rename, whose failure is the environment's (exit 3).
+  if (const std::string kind = notRegular(file); !kind.empty() && kind != "a directory")
+    refuseType(file, kind, "");
   static std::atomic<unsigned> counter{0};
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   const fs::path tmp = dir / ("." + file.filename().string() + ".tmp-" +
@@ -62,6 +102,7 @@ void writeFileAtomically(const fs::path& file, std::string_view content) {
   struct stat st {};
   if (::stat(tmp.c_str(), &st) != 0 || uint64_t(st.st_size) != content.size())
     fail("the written file does not have the " + std::to_string(content.size()) + " bytes written");
+
   std::error_code ec;
   fs::rename(tmp, file, ec);
   if (ec) fail("cannot move the written file into place: " + ec.message());
@@ -69,6 +110,10 @@ void writeFileAtomically(const fs::path& file, std::string_view content) {
 
 void createOutputDirectory(const fs::path& dir) {
   std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw OutputPathError(dir.string() + ": is not a folder (" +
+                          (notRegular(dir).empty() ? "a file" : notRegular(dir)) +
+                          "); give the path of a folder, or a new one, to write outputs into");
   fs::create_directories(dir, ec);
   if (ec) throw OutputError(dir, "cannot create the folder: " + ec.message());
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "api/scene_loading.h"
 #include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_validate.h"
@@ -50,30 +51,42 @@ std::vector<std::pair<std::string, std::string>> shaderInputs(const spec::CaseSp
   return out;
 }
 
-// The case file's bytes, then each file it references (scene, mover models, tracks, a user's
-// shader and its includes) by its relative path and bytes: editing any of them makes blessed
-// goldens stale. Each is read as an input file: inside its folder after resolving links,
-// regular, bounded.
+// The case file's bytes, then each file it references (scene, mover models and the buffers
+// and images each glTF names, tracks, a user's shader and its includes, the still image) by
+// its relative path and bytes: editing any of them makes blessed goldens stale and an earlier
+// run's verdict (run --verdict-from) another case's. Each is read as an input file: inside its
+// folder after resolving links, regular, bounded.
 std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
   const fs::path dir = spec.file.parent_path();
-  std::vector<std::tuple<std::string, std::string, fs::path>> refs;  // (key, path, its folder)
-  if (!spec.scene.gltf.empty()) refs.emplace_back("scene.gltf", spec.scene.gltf, dir);
-  if (!spec.camera.track.empty()) refs.emplace_back("camera.track", spec.camera.track, dir);
+  struct Ref {
+    std::string key, path;
+    fs::path folder;
+  };
+  std::vector<Ref> refs;
+  if (!spec.scene.gltf.empty()) refs.push_back({"scene.gltf", spec.scene.gltf, dir});
+  if (!spec.camera.track.empty()) refs.push_back({"camera.track", spec.camera.track, dir});
+  if (!spec.debug.image.empty()) refs.push_back({"debug.image", spec.debug.image, dir});
   if (!spec.taa.shader.empty()) {
     const fs::path root = spec.taa.shader_root.empty() ? dir : fs::path(spec.taa.shader_root);
     try {
-      for (const auto& [key, ref] : shaderInputs(spec)) refs.emplace_back(key, ref, root);
+      for (const auto& [key, ref] : shaderInputs(spec)) refs.push_back({key, ref, root});
     } catch (const user::ShaderCompileError& e) {
       throw CaseError({spec.file.string() + ": taa.shader: does not compile:\n" + e.what()});
     }
   }
   for (size_t i = 0; i < spec.movers.size(); ++i) {
     const std::string at = "movers[" + std::to_string(i) + "].";
-    if (!spec.movers[i].gltf.empty()) refs.emplace_back(at + "gltf", spec.movers[i].gltf, dir);
-    if (!spec.movers[i].track.empty()) refs.emplace_back(at + "track", spec.movers[i].track, dir);
+    if (!spec.movers[i].gltf.empty()) refs.push_back({at + "gltf", spec.movers[i].gltf, dir});
+    if (!spec.movers[i].track.empty()) refs.push_back({at + "track", spec.movers[i].track, dir});
   }
   Sha256 h;
   h.update(text.data(), text.size());
+  auto add = [&h](const std::string& ref, const std::string& bytes) {
+    h.update("\0", 1);
+    h.update(ref.data(), ref.size());
+    h.update("\0", 1);
+    h.update(bytes.data(), bytes.size());
+  };
   for (const auto& [key, ref, folder] : refs) {
     std::string b;
     try {
@@ -82,10 +95,24 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
     } catch (const InputFileError& e) {
       throw CaseError({spec.file.string() + ": " + key + ": " + e.what()});
     }
-    h.update("\0", 1);
-    h.update(ref.data(), ref.size());
-    h.update("\0", 1);
-    h.update(b.data(), b.size());
+    add(ref, b);
+    if (key != "scene.gltf" && !key.ends_with("].gltf")) continue;
+    // A glTF's buffers and images, read from its own folder as loading reads them. One that
+    // cannot be read is hashed as such (loading then refuses the scene, naming it); none of
+    // them is refused here, so `validate` and a render report it as before.
+    const fs::path gltfDir = (folder / ref).parent_path();
+    for (const auto& uri : gltfReferencedFiles(folder / ref, b)) {
+      const std::string name = (fs::path(ref).parent_path() / uri).generic_string();
+      std::string bytes;
+      try {
+        containedRealPath(gltfDir, gltfDir / uri, key + " (" + uri + ")");
+        bytes = readInputFile(gltfDir / uri, kMaxSceneFileBytes);
+      } catch (const InputFileError&) {
+        add(name, std::string("\0unreadable", 11));
+        continue;
+      }
+      add(name, bytes);
+    }
   }
   const auto digest = h.finish();
   return toHex(digest.data(), digest.size());

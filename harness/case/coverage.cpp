@@ -1,9 +1,13 @@
 #include "case/coverage.h"
 
+#include <algorithm>
+#include <charconv>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
-#include "spec/taa_spec.h"
 #include "spec/taa_modes.h"
+#include "spec/taa_spec.h"
 
 namespace taa::cases {
 
@@ -140,10 +144,43 @@ std::map<int, int> tracedConstants(const std::vector<std::string>& log) {
     while (words >> word) {
       const auto eq = word.find('=');
       if (eq == std::string::npos) continue;
-      out[std::stoi(word.substr(0, eq))] = std::stoi(word.substr(eq + 1));
+      // Whole numbers in int's range, or the log is not one `run` wrote.
+      int id = 0, value = 0;
+      const char* end = word.data() + word.size();
+      const auto a = std::from_chars(word.data(), word.data() + eq, id);
+      const auto b = std::from_chars(word.data() + eq + 1, end, value);
+      if (a.ec != std::errc() || a.ptr != word.data() + eq || b.ec != std::errc() || b.ptr != end)
+        throw std::invalid_argument("the line '" + kPrefix + " ...' holds '" + word.substr(0, 40) +
+                                    "', not ID=VALUE with whole numbers of at most 10 digits");
+      out[id] = value;
     }
   }
   return out;
+}
+
+std::map<std::string, std::vector<std::string>> runLogsFromResults(const nlohmann::json& j) {
+  std::map<std::string, std::vector<std::string>> logs;
+  if (!j.is_object() || !j.contains("cases") || !j["cases"].is_array())
+    throw std::invalid_argument("no \"cases\" list");
+  for (size_t i = 0; i < j["cases"].size(); ++i) {
+    const auto& c = j["cases"][i];
+    const std::string at = "cases[" + std::to_string(i) + "].";
+    if (!c.is_object() || !c.contains("log")) continue;
+    if (!c.contains("name") || !c["name"].is_string())
+      throw std::invalid_argument(at + "name: not a string");
+    const auto& log = c["log"];
+    if (!log.is_array() ||
+        !std::all_of(log.begin(), log.end(), [](const auto& l) { return l.is_string(); }))
+      throw std::invalid_argument(at + "log: not a list of strings");
+    auto lines = log.get<std::vector<std::string>>();
+    try {
+      tracedConstants(lines);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(at + "log: " + e.what());
+    }
+    logs[c["name"].get<std::string>()] = std::move(lines);
+  }
+  return logs;
 }
 
 std::vector<CoverageRow> resolveBranchCoverage(

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,14 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
 // pipeline; the no-history one (frame 0, cuts, resets) differs from it in kHasHistory only,
 // so every traced case reaches kHasHistory 0 too.
 // The specialization constants a run log traces ("taa_resolve spec constants: 0=2 1=1 ..."),
-// id -> value; empty when no built-in resolve ran.
+// id -> value; empty when no built-in resolve ran. Throws std::invalid_argument, naming the
+// word, when the line holds something other than ID=VALUE whole numbers in int's range.
 std::map<int, int> tracedConstants(const std::vector<std::string>& log);
+
+// Each case's log of a results.json as `coverage --results` reads it: name -> lines, every
+// traced constant checked (tracedConstants). Throws std::invalid_argument naming the key
+// ("cases[3].log: ...") when the document is not a run's results.
+std::map<std::string, std::vector<std::string>> runLogsFromResults(const nlohmann::json& j);
 
 std::vector<CoverageRow> resolveBranchCoverage(
     const std::map<std::string, std::vector<std::string>>& logs);

@@ -48,6 +48,15 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
                          "to hlsl if the file is HLSL");
   if (t.shader_entry.empty())
     out.emplace_back("taa.shader_entry", "is empty; name the HLSL function to run, or remove it");
+  // Bounded before anything looks at them in pairs (10,000 entries once took 4.6 GB of
+  // messages): no shader declares more specialization constants than this.
+  if (t.shader_params.size() > kMaxShaderParams) {
+    out.emplace_back("taa.shader_params",
+                     std::to_string(t.shader_params.size()) + " entries, over the limit of " +
+                         std::to_string(kMaxShaderParams) +
+                         "; give one entry per specialization constant of the shader");
+    return out;
+  }
   // A missing value would silently be 0.
   for (size_t i = 0; i < t.shader_params.size(); ++i) {
     const std::string key = "taa.shader_params[" + std::to_string(i) + "]";

@@ -13,6 +13,9 @@
 
 namespace taa::cases {
 
+// Entries of taa.shader_params a case may give (docs/trust.md): more than any shader declares.
+inline constexpr size_t kMaxShaderParams = 256;
+
 // (key, message) pairs; empty when the case has no user shader or it is valid.
 std::vector<std::pair<std::string, std::string>> userShaderProblems(
     const spec::CheckedCase& spec, const std::set<std::string>& present);

@@ -6,7 +6,7 @@
 #include "cli/run_cases.h"
 #include "core/exr_codec.h"
 #include "core/image_io.h"
-#include "core/input_file.h"
+#include "core/contained_file.h"
 #include "golden/signature.h"
 #include "run/build_identity.h"
 #include "run/golden_check.h"
@@ -38,9 +38,7 @@ RunFolderSource::RunFolderSource(fs::path folder) : folder_(std::move(folder)) {
     throw UsageError(
         "--from " + folder_.string() +
         ": not a folder; pass the --out folder of a run (holding results.json and its frames)");
-  const fs::path file =
-      containedRealPath(folder_, folder_ / "results.json", "the run's results.json");
-  results_ = readResultsFile(file, "pass the --out folder of a `taa-harness run`");
+  results_ = readResultsFile(folder_ / "results.json", "pass the --out folder of a `taa-harness run`");
   if (results_.environment.device.empty() ||
       results_.environment.fingerprint() != results_.fingerprint)
     throw UsageError(
@@ -92,11 +90,11 @@ BlessSource RunFolderSource::source(const cases::LoadedCase& loaded) const {
       throw UsageError(where + " rendered " + std::to_string(sha.size()) +
                        " frames, not checked frame " + std::to_string(f));
     const fs::path rel = fs::path(name) / (golden::frameBase(f) + ".exr");
-    const fs::path file =
-        containedRealPath(folder_, folder_ / rel, "frame " + std::to_string(f) + " of " + name);
     Image image;
     try {
-      image = exr::decode(readInputFile(file, kMaxSceneFileBytes), kMaxImageSamples);
+      image = exr::decode(
+          readContainedFile(folder_, rel, kMaxRunImageBytes, "frame " + std::to_string(f) + " of " + name),
+          kMaxImageSamples);
     } catch (const InputError& e) {
       throw UsageError((folder_ / rel).string() + ": " + e.what() +
                        "; the run's frames are needed as it wrote them");

@@ -14,6 +14,7 @@
 #include "compare/compare_files.h"
 #include "compare/heatmap.h"
 #include "core/image_io.h"
+#include "core/output_file.h"
 
 namespace taa::cli {
 
@@ -79,7 +80,8 @@ std::vector<std::string> splitList(const std::string& text) {
 void parseBounds(const std::string& option, const std::string& text, bool isMax,
                  std::vector<compare::Bound>& out) {
   const auto items = splitList(text);
-  if (!text.empty() && items.empty()) throw UsageError(option + ": no METRIC=VALUE in '" + text + "'");
+  if (!text.empty() && items.empty())
+    throw UsageError(option + ": no METRIC=VALUE in '" + text + "'");
   for (const std::string& item : items) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) {
@@ -132,12 +134,16 @@ int cmdCompare(const Args& args) {
   // grows without telling anything a viewer could see.
   if (a.values.count("--flip-ppd"))
     req.flip.pixelsPerDegree = numberOption(a, "--flip-ppd", 0.01, kMaxFlipPixelsPerDegree);
-  if (a.values.count("--threads")) req.flip.threads = int(numberOption(a, "--threads", 1, 1024, true));
+  if (a.values.count("--threads"))
+    req.flip.threads = int(numberOption(a, "--threads", 1, 1024, true));
   if (a.values.count("--pixel-threshold"))
     req.pixelThreshold = numberOption(a, "--pixel-threshold", 0.0, 1e30);
   req.hdr = a.has("--hdr");
   req.layer = a.value("--layer");
   req.wantHeatmap = a.values.count("--heatmap") > 0;
+  // Before the images are read and compared: never a device, FIFO, link or either input.
+  if (req.wantHeatmap)
+    checkOutputPath(a.value("--heatmap"), {req.referencePath, req.testPath}, "compare --heatmap");
   parseBounds("--max", a.value("--max"), true, req.bounds);
   parseBounds("--min", a.value("--min"), false, req.bounds);
 

@@ -1,4 +1,4 @@
-#include <fstream>
+#include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -8,6 +8,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "core/json_guard.h"
 
 namespace taa::cli {
 
@@ -23,22 +24,27 @@ const char* kCoverageUsage =
     "  listed last as holes.\n"
     "  --fail-on-holes: exit 1 when there is one.";
 
+// Each case's log from a results.json, read as a file of another run's folder (inside it after
+// resolving links, regular: a FIFO is refused, never waited on; bounded). A key of the wrong
+// type or a traced constant that is no number is bad input naming the file and the key.
 std::map<std::string, std::vector<std::string>> runLogs(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw UsageError("--results " + file + ": cannot be read; run `taa-harness run CASES --out DIR` and pass DIR/results.json");
+  const std::string fix = "run `taa-harness run CASES --out DIR` and pass DIR/results.json";
+  const std::string text = readResultsText(file, fix);
+  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
+    throw UsageError("--results " + file + ": " + problem);
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw UsageError("--results " + file + ": not valid JSON (" + e.what() + ")");
+    throw UsageError("--results " + file + ": not valid JSON (" +
+                     jsonErrorWithoutContent(e.what()) + "); " + fix);
   }
-  std::map<std::string, std::vector<std::string>> logs;
-  if (!j.contains("cases") || !j["cases"].is_array())
-    throw UsageError("--results " + file + ": no \"cases\" list; pass the results.json that `run` writes");
-  for (const auto& c : j["cases"])
-    if (c.contains("name") && c.contains("log") && c["log"].is_array())
-      logs[c["name"].get<std::string>()] = c["log"].get<std::vector<std::string>>();
-  return logs;
+  try {
+    return cases::runLogsFromResults(j);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--results " + file + ": " + e.what() +
+                     "; pass the results.json that `run` writes");
+  }
 }
 
 size_t printSection(const std::string& title, const std::vector<cases::CoverageRow>& rows) {
@@ -90,12 +96,14 @@ std::vector<Unreached> unreachedRanges(const std::vector<cases::SourceLine>& lin
 }
 
 std::string rangeName(const Unreached& r) {
-  return r.file + ":" + std::to_string(r.first) + (r.last != r.first ? "-" + std::to_string(r.last) : "");
+  return r.file + ":" + std::to_string(r.first) +
+         (r.last != r.first ? "-" + std::to_string(r.last) : "");
 }
 
 nlohmann::json rowsJson(const std::vector<cases::CoverageRow>& rows) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& r : rows) out.push_back({{"key", r.key}, {"value", r.value}, {"cases", r.cases}});
+  for (const auto& r : rows)
+    out.push_back({{"key", r.key}, {"value", r.value}, {"cases", r.cases}});
   return out;
 }
 
@@ -103,7 +111,8 @@ nlohmann::json rowsJson(const std::vector<cases::CoverageRow>& rows) {
 
 int cmdCoverage(const Args& args) {
   const auto a = parseArgs(args, {"--json", "--fail-on-holes"}, {"--results"}, kCoverageUsage);
-  if (a.positional.empty()) throw UsageError(std::string("no case given\nusage: ") + kCoverageUsage);
+  if (a.positional.empty())
+    throw UsageError(std::string("no case given\nusage: ") + kCoverageUsage);
   const CaseBatch batch = loadBatch(a.positional, "");
   std::vector<spec::CheckedCase> specs;
   for (const auto& c : batch.cases) specs.push_back(c.spec);
@@ -117,7 +126,8 @@ int cmdCoverage(const Args& args) {
       if (logs.count(s.name)) ours[s.name] = std::move(logs[s.name]);
     std::map<std::string, std::map<int, int>> constants;
     for (const auto& [name, log] : ours)
-      if (auto traced = cases::tracedConstants(log); !traced.empty()) constants[name] = std::move(traced);
+      if (auto traced = cases::tracedConstants(log); !traced.empty())
+        constants[name] = std::move(traced);
     branches = cases::resolveBranchCoverage(ours);
     lines = cases::resolveLineCoverage(cases::loadResolveWithLines(), constants);
   }
@@ -131,17 +141,22 @@ int cmdCoverage(const Args& args) {
   for (const auto& l : lines)
     if (l.partly) holes.push_back(shaderPath(l.file) + ":" + std::to_string(l.line) + " (in part)");
   if (a.has("--json")) {
-    nlohmann::json j = {{"cases", specs.size()}, {"settings", rowsJson(settings)}, {"holes", holes}};
+    nlohmann::json j = {
+        {"cases", specs.size()}, {"settings", rowsJson(settings)}, {"holes", holes}};
     if (a.values.count("--results")) {
       j["resolve_constants"] = rowsJson(branches);
       nlohmann::json jl = nlohmann::json::array();
       for (const auto& l : lines)
-        jl.push_back({{"file", shaderPath(l.file)}, {"line", l.line}, {"cases", l.cases}, {"in_part", l.partly}});
+        jl.push_back({{"file", shaderPath(l.file)},
+                      {"line", l.line},
+                      {"cases", l.cases},
+                      {"in_part", l.partly}});
       j["resolve_lines"] = jl;
     }
     std::cout << j.dump(1) << "\n";
   } else {
-    printSection("taa.* setting values in force (" + std::to_string(specs.size()) + " cases):", settings);
+    printSection("taa.* setting values in force (" + std::to_string(specs.size()) + " cases):",
+                 settings);
     if (a.values.count("--results"))
       printSection("taa_resolve.comp specialization constants in force (traced in " +
                        a.value("--results") + "):",
@@ -152,15 +167,19 @@ int cmdCoverage(const Args& args) {
         reached += !l.cases.empty();
         partly += l.partly;
       }
-      std::cout << "taa_resolve.comp source lines with code: " << lines.size() << ", run by some case: "
-                << reached << " (" << partly << " of them in part), by none: " << lines.size() - reached << "\n";
+      std::cout << "taa_resolve.comp source lines with code: " << lines.size()
+                << ", run by some case: " << reached << " (" << partly
+                << " of them in part), by none: " << lines.size() - reached << "\n";
       for (const auto& r : unreached)
-        std::cout << "  " << rangeName(r) << " (" << r.lines << " line" << (r.lines > 1 ? "s" : "") << " with code)\n";
+        std::cout << "  " << rangeName(r) << " (" << r.lines << " line" << (r.lines > 1 ? "s" : "")
+                  << " with code)\n";
       for (const auto& l : lines)
         if (l.partly)
-          std::cout << "  " << shaderPath(l.file) << ":" << l.line << " in part: its condition runs, what it guards in no case\n";
+          std::cout << "  " << shaderPath(l.file) << ":" << l.line
+                    << " in part: its condition runs, what it guards in no case\n";
     } else
-      std::cout << "(shader branches: pass --results DIR/results.json of a `taa-harness run` over these cases)\n";
+      std::cout << "(shader branches: pass --results DIR/results.json of a `taa-harness run` over "
+                   "these cases)\n";
     std::cout << "holes: " << holes.size() << (holes.empty() ? "" : ":");
     for (const auto& h : holes) std::cout << " " << h;
     std::cout << "\n";

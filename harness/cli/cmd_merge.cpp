@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -6,11 +7,13 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/run_cases.h"
+#include "core/contained_file.h"
 #include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/junit.h"
 #include "run/console.h"
 #include "run/merge.h"
+#include "run/results_seal.h"
 
 namespace taa::cli {
 
@@ -22,28 +25,95 @@ const char* kMergeUsage =
     "  joins the outputs of `run --shard I/N` (each shard's --out folder) into DIR: one\n"
     "  results.json, junit.xml and report.html with every case in case order, as one unsharded\n"
     "  run writes them, and the cases' images. Refuses (exit 2) shards of different commits,\n"
-    "  drivers or case sets, a shard given twice or stopped by --fail-fast, and names a missing one.\n"
+    "  builds, devices, drivers or case sets, a shard given twice or stopped by --fail-fast, and "
+    "names a missing one.\n"
     "exit: 0 every case passed, 1 a case failed or erred, 2 the shards do not merge";
 
-bool sameFolder(const fs::path& a, const fs::path& b) {
+// Where `p` leads, links resolved as far as it exists.
+fs::path resolved(const fs::path& p) {
   std::error_code ec;
-  return fs::equivalent(a, b, ec);
+  fs::path r = fs::weakly_canonical(fs::absolute(p), ec);
+  return ec ? fs::absolute(p).lexically_normal() : r;
+}
+
+// --out must be a folder of its own: the shard itself or a folder inside one would have the
+// shard's files overwritten while they are copied (and a later merge read the merged files).
+void refuseOutInShard(const fs::path& out, const fs::path& shard) {
+  const fs::path o = resolved(out), s = resolved(shard);
+  if (o == s || isInsideFolder(s, o))
+    throw UsageError("--out " + out.string() + " is inside the shard output " + shard.string() +
+                     ": merge into a folder of its own, e.g. --out out/merged");
+}
+
+// Copies the case folder `rel` of a shard into OUT: only regular files and folders, each inside
+// the shard's folder after resolving links (readContainedFile); a link, FIFO or device there is
+// no output of `run`, so the shard is refused (exit 2) rather than read through.
+void copyCaseFolder(const fs::path& shard, const fs::path& rel, const fs::path& out) {
+  std::error_code ec;
+  const auto st = fs::symlink_status(shard / rel, ec);
+  if (fs::is_symlink(st))
+    throw UsageError((shard / rel).string() +
+                     " is a symbolic link; a shard's case folders are "
+                     "folders `run` wrote: rerun that shard");
+  if (!fs::is_directory(st)) return;
+  createOutputDirectory(out / rel);
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(shard / rel)) entries.push_back(e.path().filename());
+  std::sort(entries.begin(), entries.end());
+  for (const auto& name : entries) {
+    const fs::path child = rel / name;
+    if (fs::is_directory(fs::symlink_status(shard / child, ec))) {
+      copyCaseFolder(shard, child, out);
+      continue;
+    }
+    try {
+      writeFileAtomically(out / child, readContainedFile(shard, child, kMaxRunImageBytes,
+                                                         "a file of the shard's case folder"));
+    } catch (const InputFileError& e) {
+      throw UsageError(std::string(e.what()) + "; rerun that shard");
+    }
+  }
+}
+
+// Every image the shard's results name lies in the shard's folder, as a regular file: a forged
+// path ("../../etc/passwd") would otherwise go into the merged report as a link.
+void checkImagePaths(const run::ShardOutput& s) {
+  for (const auto& c : s.results.cases)
+    for (const auto& image : run::imagePathsOf(c)) {
+      const fs::path p(image);
+      if (p.is_absolute() || std::find(p.begin(), p.end(), "..") != p.end() ||
+          p.begin() == p.end() || *p.begin() != c.name)
+        throw UsageError((s.dir / "results.json").string() + ": case " + c.name + ": image path '" +
+                         image.substr(0, 200) + "' is not inside the case's folder " + c.name +
+                         "/: the file was edited, or not written by `run`; rerun that shard");
+      try {
+        checkContainedFile(s.dir, p, kMaxRunImageBytes, "case " + c.name + "'s image");
+      } catch (const InputFileError& e) {
+        throw UsageError(std::string(e.what()) + "; rerun that shard");
+      }
+    }
 }
 }  // namespace
 
 int cmdMerge(const Args& args) {
   const auto a = parseArgs(args, {}, {"--out"}, kMergeUsage);
-  if (a.positional.empty()) throw UsageError(std::string("no shard output given\nusage: ") + kMergeUsage);
+  if (a.positional.empty())
+    throw UsageError(std::string("no shard output given\nusage: ") + kMergeUsage);
   if (!a.values.count("--out"))
     throw UsageError(std::string("--out DIR is required\nusage: ") + kMergeUsage);
   const fs::path out = a.value("--out");
   std::vector<run::ShardOutput> shards;
+  std::string unsealed;  // why the merged results cannot be sealed, "" when they can
+  for (const auto& dir : a.positional) refuseOutInShard(out, dir);
   for (const auto& dir : a.positional) {
-    if (sameFolder(dir, out))
-      throw UsageError("--out " + out.string() + " is the shard output " + dir +
-                       ": merge into a new folder, e.g. --out out/merged");
-    shards.push_back({dir, readResultsFile(fs::path(dir) / "results.json",
-                                           "pass the --out folder of a `taa-harness run --shard`")});
+    const fs::path results = fs::path(dir) / "results.json";
+    const std::string fix = "pass the --out folder of a `taa-harness run --shard`";
+    const std::string text = readResultsText(results, fix);
+    // The merged file is sealed only when every shard's is: merging must not launder an
+    // edited shard into a file a later --verdict-from trusts.
+    if (const std::string why = run::sealProblem(results, text); !why.empty() && unsealed.empty())
+      unsealed = why;
+    shards.push_back({dir, parseResultsText(text, results, fix)});
   }
   run::RunResults merged;
   try {
@@ -51,15 +121,19 @@ int cmdMerge(const Args& args) {
   } catch (const run::MergeError& e) {
     throw UsageError(e.what());
   }
+  for (const auto& s : shards) checkImagePaths(s);
   createOutputDirectory(out);
   // Each case's images, at the paths its results give relative to the output folder.
   for (const auto& s : shards)
-    for (const auto& c : s.results.cases) {
-      const fs::path from = fs::path(s.dir) / c.name;
-      if (fs::is_directory(from))
-        fs::copy(from, out / c.name, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-    }
-  writeFileAtomically(out / "results.json", run::toJson(merged).dump(1) + "\n");
+    for (const auto& c : s.results.cases) copyCaseFolder(s.dir, c.name, out);
+  const std::string text = run::toJson(merged).dump(1) + "\n";
+  if (unsealed.empty())
+    unsealed = run::writeSealedResults(out / "results.json", text);
+  else
+    run::writeUnsealedResults(out / "results.json", text);
+  if (!unsealed.empty())
+    std::cerr << "note: " << (out / "results.json").string() << " is not sealed (" << unsealed
+              << "); a later run --verdict-from renders its cases instead of reusing them\n";
   report::writeJUnit(out / "junit.xml", merged);
   report::writeHtmlReport(out / "report.html", merged);
   bool failed = false;

@@ -41,8 +41,15 @@ int cmdNewCase(const Args& args) {
     throw UsageError(std::string("usage: ") + kNewCaseUsage);
   const fs::path scenePath = a.value("--scene");
   const std::string name = a.value("--name");
-  if (name.empty() || name.find_first_of("/\\. ") != std::string::npos)
-    throw UsageError("--name '" + name + "': use letters, digits, '-' and '_' (it becomes NAME.json and goldens/NAME)");
+  // Letters, digits, '-' and '_' only: no separator, dot, space or control character reaches a
+  // file name, and the name is short enough for every file system's name limit.
+  constexpr size_t kMaxName = 100;
+  if (name.empty() || name.size() > kMaxName ||
+      name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_") !=
+          std::string::npos)
+    throw UsageError("--name (" + std::to_string(name.size()) + " bytes): use 1 to " +
+                     std::to_string(kMaxName) +
+                     " letters, digits, '-' and '_' (it becomes NAME.json and goldens/NAME)");
   fs::path casesDir = a.value("--cases");
   if (casesDir.empty()) {
     // Default: the nearest ancestor folder named "cases".

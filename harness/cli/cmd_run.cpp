@@ -1,9 +1,9 @@
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "case/case_loader.h"
@@ -15,11 +15,13 @@
 #include "compare/tolerance.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
+#include "golden/environment.h"
 #include "report/html_report.h"
 #include "report/junit.h"
 #include "run/build_identity.h"
 #include "run/case_runner.h"
 #include "run/console.h"
+#include "run/results_seal.h"
 
 namespace taa::cli {
 
@@ -77,24 +79,49 @@ int metricVerdict(const run::RunResults& results, const std::string& metric, dou
     }
   return bad ? kRegression : kPass;
 }
+// results.json, sealed for a later --verdict-from; a note when it cannot be.
+void writeResults(const fs::path& file, const std::string& text) {
+  if (const std::string why = run::writeSealedResults(file, text); !why.empty())
+    std::cerr << "note: " << file.string() << " is not sealed (" << why
+              << "); a later run --verdict-from renders its cases instead of reusing them\n";
+}
+
 // --verdict-from RESULTS: when RESULTS (ctest's shard of this session, or the main job of this
-// build) holds every case of the batch, rendered by the same build (run::buildIdentity) from
-// the same inputs (case, scene and track bytes) against the same goldens,
+// build) carries this user's seal (run/results_seal.h: no byte edited since a run wrote it)
+// and holds every case of the batch, rendered by the same build (run::buildIdentity) in the
+// same environment (driver, device, CPU level: golden::Environment's fingerprint) from the same
+// inputs (LoadedCase::sha256: every file a case reads) against the same goldens,
 // their lines and verdict come from it instead of a render, and OUT/results.json holds them
 // (so a case test can take its verdict from a shard that took its own from the main job).
-// Empty when it does not: then the cases run.
+// Empty when it does not: then the cases render (with a note when the seal is why).
 std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, const fs::path& out,
-                                  const std::string& build, const fs::path& goldensRoot) {
+                                  const std::string& build, const std::string& device,
+                                  const fs::path& goldensRoot) {
   std::error_code ec;
-  if (!fs::is_regular_file(from, ec)) return std::nullopt;
-  run::RunResults earlier = readResultsFile(from, "pass the results.json of an earlier run");
+  if (!fs::exists(fs::symlink_status(from, ec))) return std::nullopt;
+  const std::string fix = "pass the results.json of an earlier run";
+  const std::string text = readResultsText(from, fix);
+  // A file that is no results at all is bad input (exit 2), sealed or not.
+  run::RunResults earlier = parseResultsText(text, from, fix);
+  if (const std::string why = run::sealProblem(from, text); !why.empty()) {
+    std::cerr << "note: --verdict-from " << from.string() << ": not reused (" << why
+              << "); the cases render\n";
+    return std::nullopt;
+  }
   if (earlier.build != build || earlier.commit != golden::rendererCommit()) return std::nullopt;
+  // The same build on another driver or Mesa version renders other bytes.
+  DeviceOptions probe;
+  probe.device = device;
+  const std::string fingerprint =
+      golden::currentEnvironment(Device(probe).identity()).fingerprint();
+  if (earlier.fingerprint != fingerprint) return std::nullopt;
   std::vector<run::CaseResult> found;
   for (const auto& c : batch.cases) {
     const auto it = std::find_if(earlier.cases.begin(), earlier.cases.end(), [&](const auto& r) {
       // Not the path: `run cases` and ctest name one file differently, and its bytes (and
       // those of every file it references) are in caseSha256.
       return r.name == c.spec.name && r.caseSha256 == c.sha256 &&
+             (r.fingerprint.empty() || r.fingerprint == fingerprint) &&
              r.goldensSha256 == run::goldensDigest(c.spec, goldensRoot);
     });
     if (it == earlier.cases.end()) return std::nullopt;
@@ -109,7 +136,7 @@ std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, 
     earlier.cases = std::move(found);
     earlier.suite = batch.suite;
     earlier.notRun = 0;
-    writeFileAtomically(out / "results.json", run::toJson(earlier).dump(1) + "\n");
+    writeResults(out / "results.json", run::toJson(earlier).dump(1) + "\n");
   }
   // A shard that took its own verdicts from the main job has no report; the main job's is it.
   const fs::path report = from.parent_path() / "report.html";
@@ -148,7 +175,7 @@ int cmdRun(const Args& args) {
     if (const auto verdict =
             earlierVerdict(batch, a.value("--verdict-from"), out,
                            run::buildIdentity(a.value("--device"), runningInCi(), requireExact),
-                           a.value("--goldens")))
+                           a.value("--device"), a.value("--goldens")))
       return *verdict;
   const auto start = std::chrono::steady_clock::now();
   const CpuTimes cpuBefore = cpuTimes();
@@ -164,7 +191,7 @@ int cmdRun(const Args& args) {
   options.run.requireExact = requireExact;
   const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
 
-  writeFileAtomically(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");
+  writeResults(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");
   report::writeJUnit(out / "junit.xml", outcome.results);
   report::writeHtmlReport(out / "report.html", outcome.results);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

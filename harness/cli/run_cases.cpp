@@ -1,6 +1,5 @@
 #include "cli/run_cases.h"
 
-#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -13,12 +12,14 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "api/device.h"
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "core/contained_file.h"
 #include "core/cpu_cores.h"
 #include "core/errors.h"
 #include "core/input_file.h"
@@ -266,13 +267,18 @@ CaseBatch loadBatch(const std::vector<std::string>& paths, const std::string& sh
   return batch;
 }
 
-run::RunResults readResultsFile(const fs::path& results, const std::string& fix) {
-  std::string text;
+std::string readResultsText(const fs::path& results, const std::string& fix) {
   try {
-    text = readInputFile(results, kMaxTrackFileBytes);
+    // Another run's folder: its results.json inside it after resolving links, regular, bounded.
+    return readContainedFile(results.parent_path(), results.filename(), kMaxResultsFileBytes,
+                             "the results file");
   } catch (const InputFileError& e) {
     throw UsageError(std::string(e.what()) + "; " + fix);
   }
+}
+
+run::RunResults parseResultsText(const std::string& text, const fs::path& results,
+                                 const std::string& fix) {
   if (const std::string problem = jsonStructureProblem(text); !problem.empty())
     throw UsageError(results.string() + ": " + problem);
   try {
@@ -283,6 +289,10 @@ run::RunResults readResultsFile(const fs::path& results, const std::string& fix)
   } catch (const std::runtime_error& e) {
     throw UsageError(results.string() + ": " + e.what() + "; " + fix);
   }
+}
+
+run::RunResults readResultsFile(const fs::path& results, const std::string& fix) {
+  return parseResultsText(readResultsText(results, fix), results, fix);
 }
 
 size_t parseJobs(const std::string& value) {

@@ -66,6 +66,12 @@ struct BatchOutcome {
 // A results.json `run` wrote, read as an input (bounded, checked); UsageError (exit 2) naming
 // the file, with `fix` appended, when it cannot be read or is not results JSON.
 run::RunResults readResultsFile(const std::filesystem::path& results, const std::string& fix);
+// The same in two steps, for a reader that checks the bytes before it parses them (the seal,
+// run/results_seal.h): the file's text (readContainedFile: inside its folder after resolving
+// links, regular, at most kMaxResultsFileBytes), then its parse.
+std::string readResultsText(const std::filesystem::path& results, const std::string& fix);
+run::RunResults parseResultsText(const std::string& text, const std::filesystem::path& results,
+                                 const std::string& fix);
 
 // --jobs N (also -j N): at least 1; absent: 0, one worker per core.
 size_t parseJobs(const std::string& value);

@@ -14,11 +14,21 @@ namespace taa::compare {
 namespace {
 
 ReadImage readOrExplain(const std::string& path, const std::string& layer, const char* role) {
+  ReadImage read;
   try {
-    return readImageByName(path, layer);
+    read = readImageByName(path, layer, kMaxCompareSamples);
   } catch (const ImageIoError& e) {
-    throw CompareInputError(std::string(role) + " " + e.what());
+    throw CompareInputError(std::string(role) + " " + e.what() +
+                            " (compare's limit; docs/trust.md)");
   }
+  // FLIP works on three channels whatever the file holds, so pixels bound the memory too.
+  if (read.image.pixelCount() > kMaxComparePixels)
+    throw CompareInputError(std::string(role) + " " + path + ": " +
+                            std::to_string(read.image.width) + "x" +
+                            std::to_string(read.image.height) + " is over compare's limit of " +
+                            std::to_string(kMaxComparePixels) +
+                            " pixels (8K UHD fits); compare crops of it (docs/trust.md)");
+  return read;
 }
 
 std::string shape(const Image& img) {

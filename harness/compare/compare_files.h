@@ -2,6 +2,7 @@
 // they violate out. Kept apart from the CLI so it is one function to test.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,6 +13,12 @@
 #include "core/image.h"
 
 namespace taa::compare {
+
+// What `compare` reads (docs/trust.md): at most 2^25 pixels (8K UHD, 7680x4320, fits) and
+// 2^27 samples an image, so the two images, FLIP's three-channel copies and its maps stay
+// within the peak docs/trust.md gives.
+inline constexpr uint64_t kMaxComparePixels = uint64_t(1) << 25;
+inline constexpr uint64_t kMaxCompareSamples = uint64_t(1) << 27;
 
 // A file that cannot be read or a pair that cannot be compared; what() names the file and the fix.
 class CompareInputError : public InputError {

@@ -28,11 +28,27 @@ std::string someNames(const std::vector<std::string>& names) {
 
 }  // namespace
 
+std::vector<std::string> imagePathsOf(const CaseResult& c) {
+  std::vector<std::string> out;
+  auto add = [&out](const std::string& p) {
+    if (!p.empty()) out.push_back(p);
+  };
+  for (const auto& f : c.frames)
+    for (const std::string* p :
+         {&f.images.golden, &f.images.actual, &f.images.diff, &f.images.zoomGolden,
+          &f.images.zoomActual, &f.images.zoomDiff, &f.images.ab, &f.images.zoomAb})
+      add(*p);
+  add(c.firstDifference.actual);
+  for (const auto& n : c.firstDifference.goldenNeighbours) add(n.image);
+  return out;
+}
+
 RunResults mergeShards(const std::vector<ShardOutput>& shards) {
   if (shards.empty()) throw MergeError("no shard output given");
   for (const auto& s : shards)
     if (s.results.suite.cases.empty() || s.results.suite.sha256.empty())
-      throw MergeError(s.dir.string() + "/results.json records no suite (written by a taa-harness "
+      throw MergeError(s.dir.string() +
+                       "/results.json records no suite (written by a taa-harness "
                        "older than `merge`, or not by `run`): rerun that shard");
   const ShardOutput& first = shards.front();
   const SuiteInfo& suite = first.results.suite;
@@ -49,6 +65,14 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
                        first.results.fingerprint +
                        "': goldens compare exactly in one environment only, so merge shards of "
                        "one driver and CPU level");
+    // One build on one device: a shard of another executable, SPIR-V, CPU level or device
+    // (a device asked for, or the one found) is another run, whatever its commit.
+    if (r.build != first.results.build || r.build.empty())
+      throw MergeError(where + " was made by the build '" + r.build + "', " + firstWhere + " by '" +
+                       first.results.build + "': merge shards of one build");
+    if (r.device != first.results.device)
+      throw MergeError(where + " ran on device '" + r.device + "', " + firstWhere + " on '" +
+                       first.results.device + "': merge shards of one device");
     if (r.suite.sha256 != suite.sha256 || r.suite.cases != suite.cases)
       throw MergeError(where + " ran another case set (" + std::to_string(r.suite.cases.size()) +
                        " cases) than " + firstWhere + " (" + std::to_string(suite.cases.size()) +
@@ -62,8 +86,9 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
       throw MergeError(where + " and " + it->second->dir.string() + " are both shard " +
                        shardName(r.suite) + ": pass each shard's output once");
     if (r.notRun > 0)
-      throw MergeError(where + " stopped at its first failure (--fail-fast): " +
-                       std::to_string(r.notRun) + " of its cases were not run; rerun it without "
+      throw MergeError(where +
+                       " stopped at its first failure (--fail-fast): " + std::to_string(r.notRun) +
+                       " of its cases were not run; rerun it without "
                        "--fail-fast");
     std::vector<std::string> names;
     for (const auto& c : r.cases) names.push_back(c.name);
@@ -73,9 +98,10 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
   }
   for (int i = 1; i <= suite.shardCount; ++i)
     if (!byIndex.count(i))
-      throw MergeError("shard " + std::to_string(i) + "/" + std::to_string(suite.shardCount) +
-                       " is missing (its cases: " + someNames(casesOfShard(suite, i, suite.shardCount)) +
-                       "): pass its output folder too");
+      throw MergeError(
+          "shard " + std::to_string(i) + "/" + std::to_string(suite.shardCount) +
+          " is missing (its cases: " + someNames(casesOfShard(suite, i, suite.shardCount)) +
+          "): pass its output folder too");
 
   RunResults out;
   out.device = first.results.device;
@@ -86,11 +112,7 @@ RunResults mergeShards(const std::vector<ShardOutput>& shards) {
   for (const auto& s : shards)
     if (s.results.environment.fingerprint() != out.environment.fingerprint()) out.environment = {};
   out.commit = first.results.commit;
-  // Shards of a CI matrix are built on machines of their own, so their builds may differ; the
-  // merged results name one only where they agree (no later run takes verdicts from it else).
   out.build = first.results.build;
-  for (const auto& s : shards)
-    if (s.results.build != out.build) out.build.clear();
   out.suite = suite;
   out.suite.shardIndex = out.suite.shardCount = 1;
   // Case k of the suite is case k / N of shard k % N + 1.

@@ -22,9 +22,13 @@ struct ShardOutput {
   RunResults results;         // its results.json
 };
 
+// Every image path a case's results give (relative to the run's output folder), empty ones
+// left out: what the merged report links to, so each must be a file of the shard's own folder.
+std::vector<std::string> imagePathsOf(const CaseResult& c);
+
 // The shards' cases in case order, with the suite's record of an unsharded run (shard 1/1).
-// Throws MergeError when the shards differ in commit, environment or case set, when a shard
-// is given twice, stopped early (--fail-fast) or missing.
+// Throws MergeError when the shards differ in commit, build, device, environment or case set,
+// when a shard is given twice, stopped early (--fail-fast) or missing.
 RunResults mergeShards(const std::vector<ShardOutput>& shards);
 
 }  // namespace taa::run

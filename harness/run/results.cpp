@@ -174,11 +174,18 @@ RunResults runResultsFromJson(const nlohmann::json& j) {
     const auto& js = j["suite"];
     r.suite.cases = js.value("cases", std::vector<std::string>{});
     r.suite.sha256 = js.value("sha256", "");
-    const auto shard = js.value("shard", std::vector<int>{1, 1});
-    if (shard.size() == 2) {
-      r.suite.shardIndex = shard[0];
-      r.suite.shardCount = shard[1];
-    }
+    // Whole numbers as `run --shard I/N` takes them: 4294967298 must not wrap to 2, nor 2.5
+    // truncate to 2 (nlohmann converts either silently).
+    const auto shard = js.value("shard", nlohmann::json::array({1, 1}));
+    auto whole = [](const nlohmann::json& v) {
+      return v.is_number_unsigned() && v.get<uint64_t>() >= 1 && v.get<uint64_t>() <= 999999;
+    };
+    if (!shard.is_array() || shard.size() != 2 || !whole(shard[0]) || !whole(shard[1]) ||
+        shard[0].get<uint64_t>() > shard[1].get<uint64_t>())
+      throw std::runtime_error(
+          "suite.shard is not [I, N] with whole numbers 1 <= I <= N <= 999999");
+    r.suite.shardIndex = shard[0].get<int>();
+    r.suite.shardCount = shard[1].get<int>();
   }
   for (const auto& jc : j.value("cases", nlohmann::json::array())) {
     CaseResult c;

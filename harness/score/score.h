@@ -83,8 +83,15 @@ struct ScoreOptions {
 LaneSpec shaderLane(const std::filesystem::path& shader, const std::string& params,
                     const std::string& name, bool qualify);
 
+// Bounds of a lanes file (docs/trust.md): each lane renders every case, so the count bounds the
+// work and the memory of the scorecard (about 0.4 MB of results a lane).
+inline constexpr size_t kMaxLanes = 256;
+inline constexpr size_t kMaxLaneNameBytes = 100;
+
 // The lanes of a lanes file: {"name": {"shader": "x.hlsl", "shader_params": [...], ...}, ...},
 // each a taa section (a sweep preset's "taa" object); shaders relative to the file's folder.
+// Throws cases::CaseError naming the file, the lane and the key: over kMaxLanes lanes, a name
+// empty, too long or holding a control character, a shader that is not a string.
 std::vector<LaneSpec> loadLanes(const std::filesystem::path& file);
 
 // Each case's lanes run as one lanes::LaneRunner, the built-in lane rendering the reference.

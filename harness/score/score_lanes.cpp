@@ -117,11 +117,30 @@ std::vector<LaneSpec> loadLanes(const fs::path& file) {
     throw cases::CaseError({file.string() +
                             ": expected lanes {\"name\": {\"shader\": \"x.hlsl\", \"shader_params\": "
                             "[...]}, ...}"});
+  if (j.size() > kMaxLanes)
+    throw cases::CaseError({file.string() + ": " + std::to_string(j.size()) +
+                            " lanes, over the limit of " + std::to_string(kMaxLanes) +
+                            " (each lane renders every case); split the file (docs/trust.md)"});
   std::vector<LaneSpec> out;
   for (const auto& [name, taa] : j.items()) {
+    // A lane's name heads its row and names its files: printable, and short.
+    if (name.empty() || name.size() > kMaxLaneNameBytes ||
+        std::any_of(name.begin(), name.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+      throw cases::CaseError({file.string() + ": lane " +
+                              nlohmann::json(name.substr(0, 40)).dump() +
+                              ": a lane's name is 1 to " + std::to_string(kMaxLaneNameBytes) +
+                              " bytes without control characters; rename it"});
     if (!taa.is_object())
       throw cases::CaseError({file.string() + ": " + name +
                               ": a lane is a taa section, e.g. {\"shader\": \"x.hlsl\"}"});
+    if (const auto it = taa.find("shader"); it != taa.end() && !it->is_string())
+      throw cases::CaseError({file.string() + ": " + name +
+                              ".shader: not a string; give the shader's file, e.g. \"x.hlsl\""});
+    if (const auto it = taa.find("shader_params"); it != taa.end() && !it->is_array())
+      throw cases::CaseError(
+          {file.string() + ": " + name +
+           ".shader_params: not a list; give [{\"name\": ..., \"value\": ...}]"});
     LaneSpec l;
     l.name = name;
     l.taa = taa;

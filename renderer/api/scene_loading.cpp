@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <vector>
 
+#include "core/json_guard.h"
 #include "scene/build_scene.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene_error.h"
 
 namespace taa {
 
@@ -13,7 +16,26 @@ std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec) {
   return std::make_shared<const scene::Scene>(scene::buildScene(spec));
 }
 
-bool gltfAnimates(const std::filesystem::path& file) { return scene::gltfHasAnimations(file); }
+bool gltfAnimates(const std::filesystem::path& file) {
+  return scene::gltfHasAnimations(file);
+}
+
+std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file,
+                                             const std::string& bytes) {
+  std::string json = bytes;
+  if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0) {
+    try {
+      json = scene::glbJsonChunk(file, std::vector<uint8_t>(bytes.begin(), bytes.end()));
+    } catch (const scene::SceneError&) {
+      return {};
+    }
+  }
+  // Bounded nesting before the parse, as loading checks it.
+  if (!jsonStructureProblem(json).empty()) return {};
+  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+  if (doc.is_discarded()) return {};
+  return scene::gltfFileUris(doc);
+}
 
 SceneBounds gltfPosedBounds(const std::filesystem::path& file, int frames, int fps) {
   scene::Scene scene;

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "spec/case_spec.h"
 
@@ -22,6 +24,13 @@ std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec);
 // Whether the glTF file lists any animation (scene::gltfHasAnimations): false when it cannot be
 // read, which loading the scene then reports.
 bool gltfAnimates(const std::filesystem::path& file);
+
+// The files the glTF `file`, whose bytes are `bytes` (.gltf or .glb), reads besides itself:
+// its external buffers and images, relative to its folder (scene::gltfFileUris). Empty when
+// the bytes are not a glTF document loading could read (loading then reports why). For the
+// case's input hash: editing a .bin or a texture is editing the case.
+std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file,
+                                             const std::string& bytes);
 
 struct SceneBounds {
   glm::vec3 lo{0.0f};

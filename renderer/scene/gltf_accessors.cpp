@@ -1,6 +1,7 @@
 #include "scene/gltf_accessors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "scene/scene_error.h"
@@ -201,6 +202,13 @@ std::vector<float> readGltfAccessor(const fs::path& file, const tinygltf::Model&
   // No buffer view: all zeros, as the spec defines (then the sparse values alone count).
   for (size_t i = 0; span.base && i < span.count; ++i) element(i, span.base + i * span.stride);
   if (a.sparse.isSparse) applySparse(file, model, a, name, comps, element);
+  // The glTF spec allows finite values only: a NaN or infinite vertex, weight or keyframe
+  // would reach the frame (and its hash) as whatever the rasteriser makes of it.
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      fail(file, name + " element " + std::to_string(i / size_t(comps)) + " holds " +
+                     (std::isnan(out[i]) ? "NaN" : "an infinity") +
+                     "; accessors hold finite numbers only, so fix or re-export the scene");
   return out;
 }
 

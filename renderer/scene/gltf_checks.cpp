@@ -422,6 +422,15 @@ json parseGltfJson(const std::filesystem::path& file, const std::string& text) {
 
 void checkGltfDocument(const std::filesystem::path& file, const json& doc) {
   Checker(file, doc).run();
+  // glTF 1.0 files parse too, but mean other things by the same keys: asset.version is
+  // "MAJOR.MINOR", and only major version 2 is read (the checker made sure it is a string).
+  const std::string version = doc.at("asset").at("version").get<std::string>();
+  if (version.rfind("2.", 0) != 0 || version.size() < 3 ||
+      version.find_first_not_of("0123456789", 2) != std::string::npos)
+    throw SceneError(file,
+                     "asset.version is " + shown(doc.at("asset").at("version")) +
+                         ", not glTF 2.x; convert the file to glTF 2.0 (e.g. with the Khronos "
+                         "glTF converters) and set asset.version to \"2.0\"");
 }
 
 }  // namespace taa::scene

@@ -30,6 +30,11 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 // as tinygltf decodes it). The message names `file`, the key and the uri.
 void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc);
 
+// The files a glTF document's buffers[].uri and images[].uri name, relative to its folder
+// (percent-decoded, as loading opens them), in document order: not data: URIs, nor the uris
+// checkGltfUris refuses (loading reports those).
+std::vector<std::string> gltfFileUris(const nlohmann::json& doc);
+
 // Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
 // read (loadGltf then reports why). For spec-level checks that need to know whether a
 // glTF scene moves without loading it.

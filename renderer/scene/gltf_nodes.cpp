@@ -196,6 +196,14 @@ Model Converter::run() {
   }
   model.nodes.reserve(gltfNodes_.size());  // at most every node, without regrowth copies
   for (int r : roots) addNode(r, model);
+  // Without scenes every node belongs to the scene, and one that no root leads to lies on a
+  // cycle (each node of it is another's child): refused, as a cycle below a root is.
+  if (g_.scenes.empty())
+    for (size_t i = 0; i < nodes_.size(); ++i)
+      if (nodes_[i] < 0)
+        fail(
+            "nodes[" + std::to_string(i) +
+            "] is on a cycle of children (no root node leads to it); the hierarchy must be a tree");
   if (model.nodes.empty())
     fail("has no nodes in its default scene; nothing would be drawn, add a node with a mesh");
   model.skins = readGltfSkins(file_, g_, nodes_);

@@ -109,6 +109,25 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
   return std::string(reinterpret_cast<const char*>(bytes.data() + 20), length);
 }
 
+std::vector<std::string> gltfFileUris(const nlohmann::json& doc) {
+  std::vector<std::string> out;
+  if (!doc.is_object()) return out;
+  for (const char* key : {"buffers", "images"}) {
+    const auto list = doc.find(key);
+    if (list == doc.end() || !list->is_array()) continue;
+    for (const auto& entry : *list) {
+      if (!entry.is_object()) continue;
+      const auto uri = entry.find("uri");
+      if (uri == entry.end() || !uri->is_string()) continue;
+      const std::string value = uri->get<std::string>();
+      // A refused uri is reported by loading; it names no file that could be read.
+      if (startsWithNoCase(value, "data:") || !uriProblem(value).empty()) continue;
+      out.push_back(percentDecode(value));
+    }
+  }
+  return out;
+}
+
 void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc) {
   for (const char* key : {"buffers", "images"}) {
     const auto list = doc.find(key);
@@ -121,11 +140,11 @@ void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc)
       const std::string value = uri->get<std::string>();
       const std::string problem = uriProblem(value);
       if (!problem.empty())
-        throw SceneError(file, std::string(key) + "[" + std::to_string(i) + "].uri " +
-                                   nlohmann::json(value.size() > 200 ? value.substr(0, 200) + "..."
-                                                                     : value)
-                                       .dump(-1, ' ', true) +
-                                   " " + problem);
+        throw SceneError(
+            file, std::string(key) + "[" + std::to_string(i) + "].uri " +
+                      nlohmann::json(value.size() > 200 ? value.substr(0, 200) + "..." : value)
+                          .dump(-1, ' ', true) +
+                      " " + problem);
     }
   }
 }

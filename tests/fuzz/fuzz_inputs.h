@@ -9,16 +9,24 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "case/case_error.h"
 #include "case/case_loader.h"
+#include "case/coverage.h"
+#include "cli/options.h"
+#include "cli/run_cases.h"
 #include "core/exr_codec.h"
 #include "core/image_io.h"
+#include "core/json_guard.h"
 #include "core/png_codec.h"
+#include "run/merge.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
+#include "score/score.h"
 #include "script/track.h"
 #include "script/track_csv.h"
 #include "script/track_json.h"
@@ -33,6 +41,42 @@ namespace taa::fuzz {
 inline void readCase(const std::string& text) {
   try {
     cases::parseCase(text, "/nonexistent-taa-fuzz/case.json");
+  } catch (const cases::CaseError&) {
+  }
+}
+
+// A results.json as another run's folder gives it: as `run --verdict-from` and `merge` parse
+// it (then merge's checks of one shard and of its image paths), and as `coverage --results`
+// reads its logs. Refusals are UsageError, MergeError or coverage's invalid_argument.
+inline void readResults(const std::string& text) {
+  try {
+    const run::RunResults r = cli::parseResultsText(text, "fuzz/results.json", "fix");
+    try {
+      (void)run::mergeShards({{"fuzz", r}});
+    } catch (const run::MergeError&) {
+    }
+    for (const auto& c : r.cases) (void)run::imagePathsOf(c);
+  } catch (const cli::UsageError&) {
+  }
+  if (!jsonStructureProblem(text).empty()) return;  // coverage refuses it before parsing
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  try {
+    (void)cases::runLogsFromResults(j);
+  } catch (const std::invalid_argument&) {
+  }
+}
+
+// A lanes file (score --lanes): read from a private folder, as the loader reads a file.
+inline void readLanes(const std::string& bytes) {
+  static const std::filesystem::path file = [] {
+    const auto d =
+        std::filesystem::temp_directory_path() / ("taa-fuzz-lanes-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    return d / "lanes.json";
+  }();
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  try {
+    (void)score::loadLanes(file);
   } catch (const cases::CaseError&) {
   }
 }

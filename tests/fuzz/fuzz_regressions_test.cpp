@@ -48,6 +48,12 @@ TEST(FuzzRegressions, GltfCorpus) {
 TEST(FuzzRegressions, ImageCorpus) {
   replay("image", &readImageBytes);
 }
+TEST(FuzzRegressions, ResultsCorpus) {
+  replay("results", &readResults);
+}
+TEST(FuzzRegressions, LanesCorpus) {
+  replay("lanes", &readLanes);
+}
 
 }  // namespace
 }  // namespace taa::fuzz

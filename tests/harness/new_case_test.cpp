@@ -83,5 +83,23 @@ TEST_F(HarnessNewCase, BadFrameCountsAreUsageErrors) {
   }
 }
 
+// A name becomes a file name: 5,000 characters (over the file system's limit, once exit 3) or a
+// control character (once written into the name) are usage errors, and nothing is written.
+TEST_F(HarnessNewCase, NamesAreShortAndPrintable) {
+  fs::create_directories(root_ / "cases/scenes");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/skinned_quad.gltf",
+                root_ / "cases/scenes/skinned_quad.gltf");
+  for (const std::string& name :
+       {std::string(5000, 'a'), std::string("'a\tb'"), std::string("$'a\\001b'")}) {
+    const auto r = harness("new-case --scene " +
+                           (root_ / "cases/scenes/skinned_quad.gltf").string() + " --name " + name);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("use 1 to 100 letters, digits"), std::string::npos) << r.output;
+  }
+  size_t files = 0;
+  for (const auto& e : fs::directory_iterator(root_ / "cases")) files += e.is_regular_file();
+  EXPECT_EQ(files, 1u) << "only the case the fixture wrote";
+}
+
 }  // namespace
 }  // namespace taa

@@ -2,6 +2,7 @@
 // timing is the same bytes as one worker's unsharded run: console lines, results.json, JUnit,
 // the report and the images.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <fstream>
@@ -13,9 +14,11 @@
 #include <vector>
 
 #include "api/device.h"
+#include "core/cache_folder.h"
 #include "harness/cli_fixture.h"
 #include "report/html_report.h"
 #include "run/results.h"
+#include "run/results_seal.h"
 
 namespace taa {
 namespace {
@@ -143,6 +146,14 @@ TEST_F(ParallelRun, BadJobCountsAreRefused) {
   }
 }
 
+// Seals `results` as `run` would (the user's key, which the harness the tests start shares):
+// a test that edits one field and reseals sees that field's check, not the seal's.
+void reseal(const fs::path& results) {
+  const std::string key = readFile(userCacheFolder("results-seal.key"));
+  ASSERT_EQ(key.size(), 32u);
+  std::ofstream(run::sealPathOf(results)) << run::hmacSha256Hex(key, readFile(results)) + "\n";
+}
+
 // ctest's case.NAME after its shard, and the shard after the main job (tests/CMakeLists.txt):
 // the verdict is the earlier run's only when that run was made by this build (executable,
 // SPIR-V, CPU level, CI setting) from the same case inputs and goldens; otherwise the case
@@ -207,11 +218,13 @@ TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
   auto j = nlohmann::json::parse(readFile(results));
   j["build"] = "build-id 0123456789abcdef | spirv 0 | x86-64 | device default | missing goldens skip";
   std::ofstream(results) << j.dump(1);
+  reseal(results);
   rendered("small", "an earlier run of another build");
   j = nlohmann::json::parse(readFile(results));
   j["build"] = nlohmann::json::parse(readFile(root_ / "relay" / "results.json"))["build"];
   j["commit"] = "0123456789abcdef";
   std::ofstream(results) << j.dump(1);
+  reseal(results);
   rendered("small", "an earlier run of another commit");
   fs::remove(results);
   rendered("small", "no earlier run");
@@ -219,6 +232,61 @@ TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
   const auto bad = run("small", from);
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("results.json"), std::string::npos) << bad.output;
+}
+
+// A reused verdict needs the earlier run's environment and an unforged file: results.json is
+// sealed (run/results_seal.h), so a status turned from fail to pass, or a fingerprint edited to
+// match, renders the case instead of passing it (issue 43).
+TEST_F(ParallelRun, VerdictFromAnEarlierRunNeedsItsSealAndEnvironment) {
+  writeCase("b_strict",
+            R"({"scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 0}}})");
+  const fs::path results = root_ / "shard" / "results.json";
+  ASSERT_EQ(
+      harness("run " + casePath("b_strict") + " --out " + (root_ / "shard").string()).exitCode, 1);
+  ASSERT_TRUE(fs::exists(run::sealPathOf(results)));
+  const std::string from = " --verdict-from " + results.string();
+  const auto reused = run("b_strict", from);
+  EXPECT_EQ(reused.exitCode, 1) << reused.output;
+  ASSERT_NE(reused.output.find("verdict: from"), std::string::npos) << reused.output;
+  const std::string sealed = readFile(results);
+  auto edit = [&](const std::function<void(nlohmann::json&)>& change) {
+    auto j = nlohmann::json::parse(sealed);
+    change(j);
+    std::ofstream(results) << j.dump(1) << "\n";
+  };
+  auto rendersWithNote = [&](const std::string& why) {
+    const auto r = run("b_strict", from);
+    EXPECT_EQ(r.exitCode, 1) << why << "\n" << r.output;  // the render's own verdict
+    EXPECT_EQ(r.output.find("verdict: from"), std::string::npos) << why << "\n" << r.output;
+    EXPECT_NE(r.output.find("note: --verdict-from " + results.string() + ": not reused"),
+              std::string::npos)
+        << why << "\n"
+        << r.output;
+  };
+  edit([](auto& j) {
+    j["cases"][0]["status"] = "pass";
+    j["cases"][0]["invariants"][0]["passed"] = true;
+  });
+  rendersWithNote("a status edited from fail to pass");
+  edit([](auto& j) { j["fingerprint"] = "llvmpipe (LLVM 99) | Mesa 99 | vulkan 1.3 | x86-64-v9"; });
+  rendersWithNote("a fingerprint edited");
+  std::ofstream(results) << sealed;
+  fs::remove(run::sealPathOf(results));
+  rendersWithNote("no seal");
+  // Sealed, but from another environment (another driver or Mesa): renders, without a note.
+  edit([](auto& j) {
+    j["fingerprint"] = "llvmpipe (LLVM 99) | Mesa 99 | vulkan 1.3 | x86-64-v9";
+    for (auto& c : j["cases"]) c["fingerprint"] = j["fingerprint"];
+  });
+  reseal(results);
+  const auto other = run("b_strict", from);
+  EXPECT_EQ(other.output.find("verdict: from"), std::string::npos) << other.output;
+  EXPECT_EQ(other.output.find("note: --verdict-from"), std::string::npos) << other.output;
+  // The file as written, sealed again, is reused again: the checks above refused for cause.
+  std::ofstream(results) << sealed;
+  reseal(results);
+  EXPECT_NE(run("b_strict", from).output.find("verdict: from"), std::string::npos);
 }
 
 // The unsharded run and its three shards, made once for the suite (each test copies them).
@@ -286,6 +354,71 @@ TEST_F(Merge, RefusesShardsThatDoNotMakeOneRun) {
   });
   refused(shard(1) + " " + shard(2) + " " + shard(3), "stopped at its first failure (--fail-fast)");
   EXPECT_FALSE(fs::exists(root_ / "merged" / "results.json"));  // nothing written when refused
+}
+
+// A shard's folder is another run's output: every path in it is checked before merge reads or
+// copies it (core/contained_file.h), and its results' fields are checked before they are
+// trusted (issue 43).
+TEST_F(Merge, RefusesForgedPathsLinksFifosAndForeignShards) {
+  const std::string all = shard(1) + " " + shard(2) + " " + shard(3);
+  auto refused = [&](const std::string& why, const std::string& dirs = "") {
+    const auto r = merge(dirs.empty() ? all : dirs);
+    EXPECT_EQ(r.exitCode, 2) << why << "\n" << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("passwd:"), std::string::npos) << r.output;
+  };
+  const fs::path results1 = fs::path(shard(1)) / "results.json";
+  const std::string original = readFile(results1);
+  const auto first = nlohmann::json::parse(original)["cases"][0];
+  const std::string caseName = first["name"];
+  ASSERT_FALSE(first["frames"].empty()) << "a case with frame images";
+  editResults(
+      1, [](auto& j) { j["cases"][0]["frames"][0]["images"]["actual"] = "../../../etc/passwd"; });
+  refused("is not inside the case's folder");
+  editResults(1, [&](auto& j) {
+    j["cases"][0]["frames"][0]["images"]["actual"] = caseName + "/../../../../etc/passwd";
+  });
+  refused("is not inside the case's folder");
+  std::ofstream(results1) << original;
+  const fs::path caseDir = fs::path(shard(1)) / caseName;
+  fs::create_symlink("/etc/passwd", caseDir / "extra.png");
+  refused("leads outside");
+  fs::remove(caseDir / "extra.png");
+  ASSERT_EQ(::mkfifo((caseDir / "fifo.png").c_str(), 0600), 0);
+  refused("a FIFO");
+  fs::remove(caseDir / "fifo.png");
+  fs::rename(caseDir, fs::path(shard(1)) / "elsewhere");
+  fs::create_symlink("elsewhere", caseDir);
+  refused("is a symbolic link");
+  fs::remove(caseDir);
+  fs::rename(fs::path(shard(1)) / "elsewhere", caseDir);
+  // Shard indices as run --shard takes them: no wrap-around, no fractions.
+  for (const char* shard : {"[2, 4294967298]", "[2.5, 2]", "[0, 3]", "[4, 3]"}) {
+    editResults(1, [&](auto& j) { j["suite"]["shard"] = nlohmann::json::parse(shard); });
+    refused("suite.shard is not [I, N]");
+  }
+  std::ofstream(results1) << original;
+  editResults(1,
+              [](auto& j) { j["build"] = "build-id 00 | spirv 00 | x86-64-v2 | device default"; });
+  refused("merge shards of one build");
+  std::ofstream(results1) << original;
+  editResults(1, [](auto& j) { j["device"] = "another device"; });
+  refused("merge shards of one device");
+  std::ofstream(results1) << original;
+  const auto inside = harness("merge " + all + " --out " + shard(2) + "/merged");
+  EXPECT_EQ(inside.exitCode, 2) << inside.output;
+  EXPECT_NE(inside.output.find("inside the shard output"), std::string::npos) << inside.output;
+  EXPECT_FALSE(fs::exists(root_ / "merged" / "results.json"));  // nothing written when refused
+  // The shards as run wrote them merge, sealed; with one edited (and so unsealed), the merged
+  // results are not sealed either.
+  reseal(results1);
+  ASSERT_EQ(merge(all).exitCode, 0);
+  EXPECT_TRUE(fs::exists(run::sealPathOf(root_ / "merged" / "results.json")));
+  std::ofstream(results1) << original << " ";
+  const auto unsealed = merge(all);
+  EXPECT_EQ(unsealed.exitCode, 0) << unsealed.output;
+  EXPECT_NE(unsealed.output.find("is not sealed"), std::string::npos) << unsealed.output;
+  EXPECT_FALSE(fs::exists(run::sealPathOf(root_ / "merged" / "results.json")));
 }
 
 }  // namespace

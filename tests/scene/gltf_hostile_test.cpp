@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "scene/gltf_images.h"
 #include "scene/gltf_loader.h"
@@ -240,6 +242,58 @@ TEST(GltfHostile, CyclesAreStillRefused) {
   std::ofstream(dir / "cycle.gltf") << R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
     "nodes": [{"children": [1]}, {"children": [2]}, {"children": [0]}]})";
   EXPECT_TRUE(refused(dir / "cycle.gltf", "nodes[0] is reached twice"));
+}
+
+// docs/trust.md: a cycle is refused with or without scenes (without, no root leads to it).
+TEST(GltfHostile, CyclesWithoutScenesAreRefused) {
+  const fs::path dir = scratch();
+  writeTriangle(dir, accessor("3"), kView);
+  std::ofstream(dir / "cycle.gltf") << R"({"asset": {"version": "2.0"},
+    "nodes": [{"mesh": 0}, {"children": [2]}, {"children": [1]}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "buffers": [{"uri": "tri.bin", "byteLength": 36}], "bufferViews": )" +
+                                           kView + R"(,
+    "accessors": [)" + accessor("3") + "]}";
+  EXPECT_TRUE(refused(dir / "cycle.gltf", "nodes[1] is on a cycle of children"));
+}
+
+TEST(GltfHostile, OnlyGltf2IsRead) {
+  const fs::path dir = scratch();
+  for (const char* version : {"1.0", "3.0", "2", "2.x"}) {
+    std::ofstream(dir / "old.gltf") << R"({"asset": {"version": ")" << version << R"("}})";
+    EXPECT_TRUE(refused(dir / "old.gltf", "not glTF 2.x")) << version;
+  }
+}
+
+TEST(GltfHostile, NonFiniteVertexAndKeyframeValuesAreRefused) {
+  const fs::path dir = scratch();
+  const float nan = std::numeric_limits<float>::quiet_NaN(),
+              inf = std::numeric_limits<float>::infinity();
+  // The triangle's last position is NaN, then infinite.
+  for (const float bad : {nan, inf}) {
+    const fs::path file = writeTriangle(dir, accessor("3"), kView);
+    std::string bin = test::readFile(dir / "tri.bin");
+    std::memcpy(bin.data() + 32, &bad, 4);
+    std::ofstream(dir / "tri.bin", std::ios::binary) << bin;
+    EXPECT_TRUE(refused(file, "accessors[0] ("));
+    EXPECT_TRUE(refused(file, std::isnan(bad) ? "holds NaN" : "holds an infinity"));
+  }
+  // An animation's keyframe time: the same reader, the same refusal.
+  const float times[2] = {0.0f, inf};
+  const float values[6] = {0, 0, 0, 1, 0, 0};
+  std::string extraBin(reinterpret_cast<const char*>(times), 8);
+  extraBin.append(reinterpret_cast<const char*>(values), 24);
+  const fs::path file = writeTriangle(
+      dir,
+      accessor("3") + R"(, {"bufferView": 1, "componentType": 5126, "type": "SCALAR", "count": 2},
+      {"bufferView": 2, "componentType": 5126, "type": "VEC3", "count": 2})",
+      R"([{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8},
+          {"buffer": 0, "byteOffset": 44, "byteLength": 24}])",
+      R"(, "animations": [{"samplers": [{"input": 1, "output": 2}],
+          "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}])",
+      extraBin);
+  EXPECT_TRUE(refused(file, "accessors[1]"));
+  EXPECT_TRUE(refused(file, "holds an infinity"));
 }
 
 TEST(GltfHostile, DeepJsonAndDuplicateKeysAreRefusedBeforeParsing) {

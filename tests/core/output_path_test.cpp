@@ -1,0 +1,91 @@
+// The one output-path rule (core/output_file.h): outputs go to a new path or over a regular
+// file, never to a device, FIFO or link, nor over the command's own input.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/output_file.h"
+#include "support/text.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path outputScratch() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(TAA_TEST_OUT) / "output_path" / info->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string outputRefusal(const fs::path& file, const std::vector<fs::path>& inputs = {}) {
+  try {
+    checkOutputPath(file, inputs, "--out");
+  } catch (const OutputPathError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OutputPath, ANewPathOrARegularFileIsWritten) {
+  const fs::path dir = outputScratch();
+  EXPECT_EQ(outputRefusal(dir / "new.png"), "");
+  std::ofstream(dir / "old.png") << "old";
+  EXPECT_EQ(outputRefusal(dir / "old.png"), "");
+  writeFileAtomically(dir / "old.png", "new");
+  EXPECT_EQ(test::readFile(dir / "old.png"), "new");
+}
+
+TEST(OutputPath, AFifoOrALinkIsRefusedAndSurvives) {
+  const fs::path dir = outputScratch();
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  std::ofstream(dir / "target") << "kept";
+  fs::create_symlink(dir / "target", dir / "link");
+  fs::create_symlink("/dev/null", dir / "null");
+  for (const char* name : {"fifo", "link", "null"}) {
+    EXPECT_NE(outputRefusal(dir / name).find(std::string(dir / name) + ": is a"), std::string::npos)
+        << name;
+    // writeFileAtomically applies the type rule itself, for every writer.
+    EXPECT_THROW(writeFileAtomically(dir / name, "x"), OutputPathError) << name;
+  }
+  EXPECT_NE(outputRefusal(dir / "fifo").find("FIFO"), std::string::npos);
+  EXPECT_TRUE(fs::is_fifo(dir / "fifo"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link"));
+  EXPECT_EQ(test::readFile(dir / "target"), "kept");
+  EXPECT_EQ(fs::directory_iterator(dir) == fs::directory_iterator(), false);
+  for (const auto& e : fs::directory_iterator(dir))  // no temporary left beside them
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(OutputPath, ADeviceIsRefusedAndSurvives) {
+  // As root a device's folder is writable, so a rename would replace the node with a file. The
+  // node is /dev/full's twin made here (root only), so a regression replaces it, not /dev/full.
+  if (::geteuid() != 0) GTEST_SKIP() << "making a device node needs root";
+  const fs::path full = outputScratch() / "full";
+  ASSERT_EQ(::mknod(full.c_str(), S_IFCHR | 0666, ::makedev(1, 7)), 0);
+  EXPECT_NE(outputRefusal(full).find("a device"), std::string::npos);
+  EXPECT_THROW(writeFileAtomically(full, "x"), OutputPathError);
+  struct stat st {};
+  ASSERT_EQ(::lstat(full.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  EXPECT_THROW(createOutputDirectory(full), OutputPathError);
+}
+
+TEST(OutputPath, TheCommandsOwnInputIsRefused) {
+  const fs::path dir = outputScratch();
+  std::ofstream(dir / "v.json") << "{}";
+  EXPECT_NE(outputRefusal(dir / "v.json", {dir / "v.json"}).find("own input"), std::string::npos);
+  // Another spelling of the same file.
+  EXPECT_NE(outputRefusal(dir / "sub" / ".." / "v.json", {dir / "v.json"}).find("own input"),
+            std::string::npos);
+  EXPECT_EQ(outputRefusal(dir / "w.json", {dir / "v.json"}), "");
+}
+
+}  // namespace
+}  // namespace taa

@@ -1,0 +1,12 @@
+// libFuzzer target for the results-file readers (merge, coverage --results, run --verdict-from);
+// see fuzz_inputs.h and ci/fuzz.sh.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  taa::fuzz::readResults(std::string(reinterpret_cast<const char*>(data), size));
+  return 0;
+}

@@ -1,0 +1,101 @@
+// The one output-path rule at the commands (core/output_file.h checkOutputPath): `bake --out`
+// and `compare --heatmap` never write to a FIFO, a device or a link, nor over their own input;
+// each is refused with exit 2 before any work, and the path is left as it was (issue 43).
+// `coverage --results` a FIFO is refused at once rather than waiting for a writer.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "core/image.h"
+#include "core/image_io.h"
+#include "harness/cli_fixture.h"
+#include "support/text.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+using test::HarnessCli;
+
+std::string readWhole(const fs::path& p) {
+  return test::readFile(p);
+}
+
+class OutputPathCli : public HarnessCli {
+ protected:
+  void SetUp() override {
+    HarnessCli::SetUp();
+    ASSERT_EQ(::mkfifo((root_ / "fifo").c_str(), 0600), 0);
+    std::ofstream(root_ / "target") << "kept";
+    fs::create_symlink(root_ / "target", root_ / "link");
+  }
+  // Refused with exit 2 naming the path, and the FIFO, the link and its target as they were.
+  void expectRefused(const std::string& args, const std::string& path, const std::string& why) {
+    const auto r = harness(args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(path), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_fifo(root_ / "fifo"));
+    EXPECT_TRUE(fs::is_symlink(root_ / "link"));
+    EXPECT_EQ(readWhole(root_ / "target"), "kept");
+  }
+};
+
+TEST_F(OutputPathCli, BakeWritesNoFifoLinkDeviceNorItsOwnCase) {
+  const std::string bake = "bake " + casePath("small") + " --out ";
+  expectRefused(bake + (root_ / "fifo").string(), "fifo", "a FIFO");
+  expectRefused(bake + (root_ / "link").string(), "link", "a symbolic link");
+  const std::string before = readWhole(casePath("small"));
+  expectRefused(bake + casePath("small"), "small.json", "own input");
+  expectRefused(bake + (root_ / "cases" / "." / "small.json").string(), "small.json", "own input");
+  EXPECT_EQ(readWhole(casePath("small")), before);
+  if (::geteuid() == 0) {  // /dev/full's twin, so a regression replaces it, not /dev/full
+    const fs::path full = root_ / "full";
+    ASSERT_EQ(::mknod(full.c_str(), S_IFCHR | 0666, ::makedev(1, 7)), 0);
+    expectRefused(bake + full.string(), full.string(), "a device");
+    struct stat st {};
+    ASSERT_EQ(::lstat(full.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISCHR(st.st_mode));
+  }
+  const auto ok = harness(bake + (root_ / "track.json").string());
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;  // a new path is written
+}
+
+TEST_F(OutputPathCli, CompareHeatmapWritesNoFifoLinkNorAnInput) {
+  const std::string a = (root_ / "a.png").string(), b = (root_ / "b.png").string();
+  writePng(a, Image(8, 8, 4, 0.25f));
+  writePng(b, Image(8, 8, 4, 0.5f));
+  const std::string compare = "compare " + a + " " + b + " --heatmap ";
+  expectRefused(compare + (root_ / "fifo").string(), "fifo", "a FIFO");
+  expectRefused(compare + (root_ / "link").string(), "link", "a symbolic link");
+  const std::string before = readWhole(b);
+  expectRefused(compare + b, "b.png", "own input");
+  EXPECT_EQ(readWhole(b), before);
+  const auto ok = harness(compare + (root_ / "heat.png").string());
+  EXPECT_NE(ok.exitCode, 2) << ok.output;
+  EXPECT_TRUE(fs::is_regular_file(root_ / "heat.png"));
+}
+
+TEST_F(OutputPathCli, CoverageResultsAFifoIsRefusedAtOnce) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto r =
+      harness("coverage " + casePath("small") + " --results " + (root_ / "fifo").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("a FIFO"), std::string::npos) << r.output;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+  // A traced constant that is no number: exit 2 naming the file and the key (was "stoi", 3).
+  std::ofstream(root_ / "results.json")
+      << R"({"cases": [{"name": "small", "log": ["taa_resolve spec constants: 0=99999999999"]}]})";
+  const auto bad =
+      harness("coverage " + casePath("small") + " --results " + (root_ / "results.json").string());
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("results.json: cases[0].log"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace taa

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the case reader, the track readers, the glTF loader and the PNG/OpenEXR readers
+# Fuzzes the case reader, the track readers, the glTF loader, the PNG/OpenEXR readers and the
+# reference cache's entry reader
 # with libFuzzer under ASan
 # and UBSan (ci/asan-build.sh), each for a bounded time: $TAA_FUZZ_SECONDS (default 60).
 # Seeds: the checked-in corpus tests/fuzz/corpus/TARGET (replayed first: each must pass),
@@ -14,7 +15,7 @@ cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
 seconds=${TAA_FUZZ_SECONDS:-60}
 out=${TAA_FUZZ_OUT:-$build/fuzz}
-[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image
+[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image fuzz_reference_entry
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Called where `set -e` does not reach (a lane's `||`): each step that can fail returns.
@@ -42,7 +43,7 @@ fuzz_one() {
 # core the sanitized unit tests leave free is not idle); each target's output is printed whole,
 # in target order, once all have ended.
 jobs=${TAA_FUZZ_JOBS:-1}
-targets=(case track gltf image)
+targets=(case track gltf image reference_entry)
 logs=$(mktemp -d)
 status=0
 for ((lane = 0; lane < jobs; lane++)); do

@@ -30,6 +30,14 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 // as tinygltf decodes it). The message names `file`, the key and the uri.
 void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc);
 
+// The JSON of a .gltf or .glb file; discarded when it cannot be read or parsed.
+nlohmann::json readGltfDocument(const std::filesystem::path& file);
+
+// The files a glTF reads besides itself: its buffers[].uri and images[].uri that are not data:
+// URIs, percent-decoded, relative to its folder, in the order listed. Empty when the file
+// cannot be read or parsed (loadGltf then reports why).
+std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file);
+
 // Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
 // read (loadGltf then reports why). For spec-level checks that need to know whether a
 // glTF scene moves without loading it.

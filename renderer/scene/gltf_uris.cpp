@@ -130,4 +130,22 @@ void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc)
   }
 }
 
+std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file) {
+  const nlohmann::json doc = readGltfDocument(file);
+  std::vector<std::string> out;
+  if (doc.is_discarded()) return out;
+  for (const char* key : {"buffers", "images"}) {
+    const auto list = doc.find(key);
+    if (list == doc.end() || !list->is_array()) continue;
+    for (const auto& entry : *list) {
+      if (!entry.is_object()) continue;
+      const auto uri = entry.find("uri");
+      if (uri == entry.end() || !uri->is_string()) continue;
+      const std::string value = uri->get<std::string>();
+      if (!startsWithNoCase(value, "data:")) out.push_back(percentDecode(value));
+    }
+  }
+  return out;
+}
+
 }  // namespace taa::scene

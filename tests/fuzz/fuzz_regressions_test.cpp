@@ -45,6 +45,13 @@ TEST(FuzzRegressions, GltfCorpus) {
 TEST(FuzzRegressions, ImageCorpus) {
   replay("image", &readImageBytes);
 }
+TEST(FuzzRegressions, ReferenceEntryCorpus) {
+  replay("reference_entry", &readReferenceEntry);
+  // The corpus's valid entries decode: the fuzzer starts from inputs that reach the pixels.
+  EXPECT_TRUE(decodeReferenceEntry(
+      test::readFile(fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/reference_entry/valid_2x2_rgba"),
+      kFuzzReferenceKey));
+}
 
 }  // namespace
 }  // namespace taa::fuzz

@@ -85,7 +85,7 @@ std::optional<Image> decodeReferenceEntry(std::string_view b, const std::string&
   sha.update(b.data() + at, payload);
   const auto actual = sha.finish();
   if (std::memcmp(actual.data(), digest.data(), kDigestBytes) != 0) return std::nullopt;
-  Image image(int(w), int(h), int(c));
+  Image image{static_cast<int>(w), static_cast<int>(h), static_cast<int>(c)};
   std::memcpy(image.data.data(), b.data() + at, payload);
   return image;
 }

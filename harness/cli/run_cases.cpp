@@ -356,9 +356,10 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   out.results.suite = batch.suite;
   out.workers = workers;
   TerminalProgress progress(workers, count);
-  // --no-reference-cache: nothing read from disk either.
+  // --no-reference-cache: a cache that holds nothing and reads nothing from disk, so every
+  // reference renders and the closing line still counts them.
   const auto store = options.shareReferences ? ReferenceStore::fromEnvironment(std::cerr) : nullptr;
-  ReferenceCache references(size_t(128) << 20, store.get());
+  ReferenceCache references(options.shareReferences ? size_t(128) << 20 : 0, store.get());
   std::vector<CaseSlot> slots(count);
   bool regression = false, badInput = false;
   StagingFolder staging;
@@ -371,7 +372,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       [&](size_t w, size_t k) {
         run::RunOptions ro = options.run;
         if (!staging.path.empty()) ro.outDir = staging.path;
-        if (options.shareReferences) ro.references = &references;
+        ro.references = &references;
         ro.progress = progress.forCase(w, batch.cases[k].spec.name);
         slots[k] = runOne(*devices[w], batch.cases[k], ro, keepOutputs);
         progress.caseDone();

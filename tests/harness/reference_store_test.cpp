@@ -210,9 +210,18 @@ TEST(ReferenceStore, AFolderThatCannotBeWrittenIsANote) {
   EXPECT_EQ(n.find("note:"), n.rfind("note:")) << "one note, not one per reference: " << n;
 }
 
+// Restores the variables on every way out: the unit shards run many suites in one process.
+struct CacheVariables {
+  ~CacheVariables() {
+    unsetenv("TAA_REFERENCE_CACHE_DIR");
+    unsetenv("TAA_REFERENCE_CACHE_MAX_MB");
+  }
+};
+
 TEST(ReferenceStore, TheEnvironmentNamesTheFolderAndTheLimit) {
   const fs::path dir = freshFolder();
   std::ostringstream notes;
+  const CacheVariables restore;
   setenv("TAA_REFERENCE_CACHE_DIR", dir.c_str(), 1);
   setenv("TAA_REFERENCE_CACHE_MAX_MB", "3", 1);
   auto store = ReferenceStore::fromEnvironment(notes);
@@ -232,7 +241,6 @@ TEST(ReferenceStore, TheEnvironmentNamesTheFolderAndTheLimit) {
   }
   unsetenv("TAA_REFERENCE_CACHE_MAX_MB");
   EXPECT_EQ(ReferenceStore::fromEnvironment(notes)->maxBytes(), kDefaultReferenceCacheBytes);
-  unsetenv("TAA_REFERENCE_CACHE_DIR");
 }
 
 // A second process's references, read from disk, are the bits a render gives: a fresh

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "api/scene_loading.h"
 #include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_validate.h"
@@ -16,7 +17,6 @@
 #include "core/json_guard.h"
 #include "core/sha256.h"
 #include "invariants/registry.h"
-#include "scene/gltf_loader.h"
 
 namespace taa::cases {
 
@@ -100,7 +100,7 @@ std::string referencedFilesSha256(const spec::CaseSpec& spec) {
   auto gltf = [&](const std::string& key, const std::string& ref) {
     files.emplace_back(key, dir / ref);
     const fs::path folder = (dir / ref).parent_path();
-    for (const auto& uri : scene::gltfReferencedFiles(dir / ref))
+    for (const auto& uri : gltfFiles(dir / ref))
       files.emplace_back(key + " " + uri, folder / uri);
   };
   if (!spec.scene.gltf.empty()) gltf("scene.gltf", spec.scene.gltf);

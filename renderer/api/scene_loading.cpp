@@ -15,6 +15,10 @@ std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec) {
 
 bool gltfAnimates(const std::filesystem::path& file) { return scene::gltfHasAnimations(file); }
 
+std::vector<std::string> gltfFiles(const std::filesystem::path& file) {
+  return scene::gltfReferencedFiles(file);
+}
+
 SceneBounds gltfPosedBounds(const std::filesystem::path& file, int frames, int fps) {
   scene::Scene scene;
   scene.models.push_back(scene::loadGltf(file, scene));

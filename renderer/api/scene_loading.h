@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "spec/case_spec.h"
 
@@ -22,6 +24,10 @@ std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec);
 // Whether the glTF file lists any animation (scene::gltfHasAnimations): false when it cannot be
 // read, which loading the scene then reports.
 bool gltfAnimates(const std::filesystem::path& file);
+
+// The files the glTF reads besides itself (scene::gltfReferencedFiles): its buffers' and images'
+// relative paths, percent-decoded; empty when it cannot be read.
+std::vector<std::string> gltfFiles(const std::filesystem::path& file);
 
 struct SceneBounds {
   glm::vec3 lo{0.0f};

@@ -144,33 +144,34 @@ TEST(ReferenceStore, AStrayTemporaryFileIsIgnoredAndRemovedLater) {
 
 // kill -9 of a writer at any moment: every entry the folder then holds is complete and
 // verified (the write goes to a temporary file renamed into place), so no reader can take a
-// torn one, even one that did not check.
+// torn one, even one that did not check. A writer spends a part of its time writing, so the
+// kill lands at 24 moments, one in each writer.
 TEST(ReferenceStore, KillDuringAWriteLeavesNoTornEntry) {
   const fs::path dir = freshFolder();
-  const Image big = pattern(512, 256, 3.0f);  // 2 MiB an entry: a kill lands mid-write
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    std::ostringstream notes;
-    ReferenceStore store(dir, kDefaultReferenceCacheBytes, notes);
-    for (int i = 0;; ++i) store.save(keyOf(std::to_string(i % 64)), big);
-  }
-  // Until a few entries are in place, then at once.
-  for (int tries = 0; tries < 2000 && filesIn(dir).size() < 4; ++tries)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  std::this_thread::sleep_for(std::chrono::milliseconds(37));
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
+  const Image big = pattern(512, 256, 3.0f);  // 2 MiB an entry
   int entries = 0;
-  for (const auto& f : filesIn(dir)) {
-    const std::string name = f.filename().string();
-    if (name[0] == '.') continue;  // the killed write's temporary file
-    ++entries;
-    const std::string key = f.stem().string();
-    const auto image = decodeReferenceEntry(readAll(f), key);
-    ASSERT_TRUE(image) << name << " is torn";
-    EXPECT_TRUE(sameBits(*image, big)) << name;
+  for (int round = 0; round < 24; ++round) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::ostringstream notes;
+      ReferenceStore store(dir, kDefaultReferenceCacheBytes, notes);
+      for (int i = 0;; ++i) store.save(keyOf(std::to_string(i % 8)), big);
+    }
+    for (int tries = 0; tries < 2000 && filesIn(dir).empty(); ++tries)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::this_thread::sleep_for(std::chrono::microseconds(500 + 1700 * round));
+    kill(child, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    for (const auto& f : filesIn(dir)) {
+      const std::string name = f.filename().string();
+      if (name[0] == '.') continue;  // the killed write's temporary file
+      ++entries;
+      const auto image = decodeReferenceEntry(readAll(f), f.stem().string());
+      ASSERT_TRUE(image) << name << " is torn (round " << round << ")";
+      EXPECT_TRUE(sameBits(*image, big)) << name;
+    }
   }
   EXPECT_GT(entries, 0);
 }

@@ -100,8 +100,7 @@ std::string referencedFilesSha256(const spec::CaseSpec& spec) {
   auto gltf = [&](const std::string& key, const std::string& ref) {
     files.emplace_back(key, dir / ref);
     const fs::path folder = (dir / ref).parent_path();
-    for (const auto& uri : gltfFiles(dir / ref))
-      files.emplace_back(key + " " + uri, folder / uri);
+    for (const auto& uri : gltfFiles(dir / ref)) files.emplace_back(key + " " + uri, folder / uri);
   };
   if (!spec.scene.gltf.empty()) gltf("scene.gltf", spec.scene.gltf);
   if (!spec.camera.track.empty()) files.emplace_back("camera.track", dir / spec.camera.track);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the case reader, the track readers, the glTF loader, the PNG/OpenEXR readers, a
 # user's HLSL resolve (compile, entry-point rules, spirv-val, interface check), the results-file
-# readers (merge, coverage --results, run --verdict-from, bless --from) and the lanes reader with
+# readers (merge, coverage --results, run --verdict-from, bless --from) the lanes reader and the reference cache's
+# entry reader with
 # libFuzzer under ASan
 # and UBSan (ci/asan-build.sh), each for a bounded time: $TAA_FUZZ_SECONDS (default 60).
 # Seeds: the checked-in corpus tests/fuzz/corpus/TARGET (replayed first: each must pass),
@@ -16,7 +17,7 @@ cd "$(dirname "$0")/.."
 build=${TAA_ASAN_BUILD:-build-asan}
 seconds=${TAA_FUZZ_SECONDS:-60}
 out=${TAA_FUZZ_OUT:-$build/fuzz}
-[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image fuzz_shader fuzz_results fuzz_lanes
+[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image fuzz_shader fuzz_results fuzz_lanes fuzz_reference_entry
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Called where `set -e` does not reach (a lane's `||`): each step that can fail returns.
@@ -49,7 +50,7 @@ fuzz_one() {
 # core the sanitized unit tests leave free is not idle); each target's output is printed whole,
 # in target order, once all have ended.
 jobs=${TAA_FUZZ_JOBS:-1}
-targets=(case track gltf image shader results lanes)
+targets=(case track gltf image shader results lanes reference_entry)
 logs=$(mktemp -d)
 status=0
 for ((lane = 0; lane < jobs; lane++)); do

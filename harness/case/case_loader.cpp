@@ -118,6 +118,51 @@ std::string inputsSha256(const spec::CaseSpec& spec, const std::string& text) {
   return toHex(digest.data(), digest.size());
 }
 
+}  // namespace
+
+std::string referencedFilesSha256(const spec::CaseSpec& spec) {
+  const fs::path dir = spec.file.parent_path();
+  std::vector<std::pair<std::string, fs::path>> files;  // (key, file)
+  auto gltf = [&](const std::string& key, const std::string& ref) {
+    files.emplace_back(key, dir / ref);
+    const fs::path folder = (dir / ref).parent_path();
+    std::string bytes;  // one that cannot be read lists no files (its load names why)
+    try {
+      bytes = readInputFile(dir / ref, kMaxSceneFileBytes);
+    } catch (const InputFileError&) {
+    }
+    for (const auto& uri : gltfReferencedFiles(dir / ref, bytes))
+      files.emplace_back(key + " " + uri, folder / uri);
+  };
+  if (!spec.scene.gltf.empty()) gltf("scene.gltf", spec.scene.gltf);
+  if (!spec.camera.track.empty()) files.emplace_back("camera.track", dir / spec.camera.track);
+  if (!spec.debug.image.empty()) files.emplace_back("debug.image", dir / spec.debug.image);
+  for (size_t i = 0; i < spec.movers.size(); ++i) {
+    const std::string at = "movers[" + std::to_string(i) + "].";
+    if (!spec.movers[i].gltf.empty()) gltf(at + "gltf", spec.movers[i].gltf);
+    if (!spec.movers[i].track.empty()) files.emplace_back(at + "track", dir / spec.movers[i].track);
+  }
+  Sha256 h;
+  for (const auto& [key, file] : files) {
+    // A file that cannot be read fails the case's scene load, which names it; here it is a
+    // part of the key like any other.
+    std::string b;
+    try {
+      b = readInputFile(file, kMaxSceneFileBytes);
+    } catch (const InputFileError&) {
+      b = "unreadable";
+    }
+    const uint64_t n[2] = {key.size(), b.size()};
+    h.update(n, sizeof(n));  // lengths delimit the parts
+    h.update(key.data(), key.size());
+    h.update(b.data(), b.size());
+  }
+  const auto digest = h.finish();
+  return toHex(digest.data(), digest.size());
+}
+
+namespace {
+
 // A user's resolve in force: none of the built-in resolve's settings (it replaces them), and
 // every constant the shader declares with its typed value, given or default.
 nlohmann::json userShaderJson(const spec::CheckedCase& spec, const nlohmann::json& taa) {

@@ -24,6 +24,12 @@ struct LoadedCase {
 
 LoadedCase loadCase(const std::filesystem::path& file);
 
+// SHA-256 over the bytes of every file the case reads other than the case file and a user's
+// shader: the scene and mover glTFs with the buffers and images they name, the tracks, the
+// still image. A reference kept across runs (run/reference_key.h) is a function of these; an
+// edit of the case's resolve settings or shader leaves the digest as it was.
+std::string referencedFilesSha256(const spec::CaseSpec& spec);
+
 // A JSON file a command reads beside its cases (a case to patch, a presets or lanes file):
 // bounded in size and nesting before parsing, parse errors quoting none of its bytes.
 // Throws CaseError naming the file.

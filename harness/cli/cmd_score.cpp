@@ -106,7 +106,9 @@ int cmdScore(const Args& args) {
   std::cout << "scorecard of " << s.lanes.size() << " lanes on " << s.device << " ("
             << s.cases.size() << " cases, " << s.skipped.size() << " skipped):\n"
             << score::scoreMarkdown(s) << "wrote " << (out / "score.md").string()
-            << ", score.json, score.html, score.svg\n";
+            << ", score.json, score.html, score.svg\n"
+            << "references: " << s.references.rendered << " rendered, " << s.references.fromDisk
+            << " from disk, " << s.references.reused << " reused\n";
   return kPass;
 }
 

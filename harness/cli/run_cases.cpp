@@ -16,6 +16,8 @@
 #include <set>
 
 #include "api/device.h"
+#include "api/reference_cache.h"
+#include "api/reference_store.h"
 #include "case/case_error.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
@@ -325,11 +327,12 @@ std::string throughputLine(const BatchOutcome& outcome, double wallSeconds, cons
   std::snprintf(buf, sizeof(buf),
                 "run: %ld frames in %.1f s (%.1f frames/s); CPU %.1f s (user %.1f, system %.1f), "
                 "CPU/wall %.2f with %zu worker%s; pipelines: %zu compiled, %zu reused; "
-                "references: %zu rendered, %zu reused",
+                "references: %zu rendered, %zu from disk, %zu reused",
                 frames, wallSeconds, wallSeconds > 0 ? double(frames) / wallSeconds : 0.0,
                 user + system, user, system, wallSeconds > 0 ? (user + system) / wallSeconds : 0.0,
                 outcome.workers, outcome.workers == 1 ? "" : "s", outcome.pipelinesCreated,
-                outcome.pipelinesReused, outcome.referencesRendered, outcome.referencesReused);
+                outcome.pipelinesReused, outcome.referencesRendered, outcome.referencesFromDisk,
+                outcome.referencesReused);
   return buf;
 }
 
@@ -363,7 +366,10 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   out.results.suite = batch.suite;
   out.workers = workers;
   TerminalProgress progress(workers, count);
-  ReferenceCache references;
+  // --no-reference-cache: a cache that holds nothing and reads nothing from disk, so every
+  // reference renders and the closing line still counts them.
+  const auto store = options.shareReferences ? ReferenceStore::fromEnvironment(std::cerr) : nullptr;
+  ReferenceCache references(options.shareReferences ? size_t(128) << 20 : 0, store.get());
   std::vector<CaseSlot> slots(count);
   bool regression = false, badInput = false;
   StagingFolder staging;
@@ -376,7 +382,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
       [&](size_t w, size_t k) {
         run::RunOptions ro = options.run;
         if (!staging.path.empty()) ro.outDir = staging.path;
-        if (options.shareReferences) ro.references = &references;
+        ro.references = &references;
         ro.progress = progress.forCase(w, batch.cases[k].spec.name);
         slots[k] = runOne(*devices[w], batch.cases[k], ro, keepOutputs);
         progress.caseDone();
@@ -403,7 +409,9 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
     out.pipelinesReused += p.reused;
   }
   out.referencesRendered = references.stats().rendered;
+  out.referencesFromDisk = references.stats().fromDisk;
   out.referencesReused = references.stats().reused;
+  if (store) store->trim();
   out.exitCode = badInput ? kBadInput : regression ? kRegression : kPass;
   return out;
 }

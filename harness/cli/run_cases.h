@@ -59,7 +59,7 @@ struct BatchOutcome {
   size_t notRun = 0;  // cases skipped by failFast after the first failure
   size_t workers = 1;
   size_t pipelinesCreated = 0, pipelinesReused = 0;  // over every worker's device
-  size_t referencesRendered = 0, referencesReused = 0;
+  size_t referencesRendered = 0, referencesFromDisk = 0, referencesReused = 0;
   std::map<std::string, std::map<int, Image>> outputs;  // when keepOutputs
 };
 
@@ -82,9 +82,9 @@ struct CpuTimes {
 };
 CpuTimes cpuTimes();
 // "run: 4210 frames in 41.2 s (102 frames/s); CPU 75.3 s (user 70.1, system 5.2), CPU/wall 1.83
-// with 2 workers; pipelines: 95 compiled, 1630 reused; references: 900 rendered, 2100 reused".
-// Timing, not a result: it is the one
-// line that differs between two runs of the same cases.
+// with 2 workers; pipelines: 95 compiled, 1630 reused; references: 900 rendered, 0 from disk, 2100
+// reused". Timing, not a result: it is the one line that differs between two runs of the same
+// cases.
 std::string throughputLine(const BatchOutcome& outcome, double wallSeconds, const CpuTimes& before);
 
 BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,

@@ -58,15 +58,6 @@ std::string hexOf(Sha256& h) {
   return toHex(d.data(), d.size());
 }
 
-std::string executableIdentity() {
-  std::string id;
-  dl_iterate_phdr(readBuildId, &id);
-  if (!id.empty()) return id;
-  Sha256 h;
-  hashFile(h, "/proc/self/exe");
-  return "sha256 " + hexOf(h);
-}
-
 // Names and bytes of the files, in name order.
 std::string digestOf(std::vector<fs::path> files) {
   std::sort(files.begin(), files.end());
@@ -82,6 +73,18 @@ std::string digestOf(std::vector<fs::path> files) {
 }
 
 }  // namespace
+
+std::string executableIdentity() {
+  static const std::string identity = [] {
+    std::string id;
+    dl_iterate_phdr(readBuildId, &id);
+    if (!id.empty()) return id;
+    Sha256 h;
+    hashFile(h, "/proc/self/exe");
+    return "sha256 " + hexOf(h);
+  }();
+  return identity;
+}
 
 std::string spirvIdentity() {
   std::vector<fs::path> files;

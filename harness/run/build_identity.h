@@ -20,6 +20,9 @@ namespace taa::run {
 std::string buildIdentity(const std::string& deviceRequest, bool missingGoldenFails,
                           bool requireExact);
 
+// The executable's GNU build ID, else the SHA-256 of its file (computed once).
+std::string executableIdentity();
+
 // The SHA-256 over every .spv file of shaderFolder(), as buildIdentity has it: the built-in
 // shaders' bytes (`bless --from` refuses a run made from other ones).
 std::string spirvIdentity();

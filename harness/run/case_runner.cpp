@@ -38,15 +38,14 @@ namespace {
 // The case's own lane: images are read for checked frames and for the frames the invariants
 // judge with them (long warm-ups cost no read-back, nor reference renders, which run only for
 // frames read back).
-lanes::LaneSetup caseLane(const spec::CaseSpec& spec, const scene::Scene& scene,
-                          const InvariantRun& checks, const RunOptions& options, bool hashEveryFrame) {
+lanes::LaneSetup caseLane(Device& device, const spec::CaseSpec& spec, const scene::Scene& scene,
+                          const InvariantRun& checks, const RunOptions& options,
+                          bool hashEveryFrame) {
   lanes::LaneSetup lane{&spec, &scene, {}, {}};
   lane.options.hashEveryFrame = hashEveryFrame;
   lane.options.captures = checks.needs().captures;
-  if (lane.options.captures.has(Capture::Reference) && options.references) {
-    lane.options.referenceCache = options.references;
-    lane.options.referenceKey = referenceKey(spec);
-  }
+  if (lane.options.captures.has(Capture::Reference))
+    shareReferences(lane.options, options.references, spec, device.identity());
   const auto& checked = spec.output.frames;
   lane.reads = [&checks, &checked](int f) {
     return checks.readsImages(f) || std::binary_search(checked.begin(), checked.end(), f);
@@ -89,7 +88,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   // Every frame's output is hashed for the goldens, and read for invariants that judge
   // warm-up frames too.
   std::vector<lanes::LaneSetup> sides{
-      caseLane(spec, *scene, checks, options, golden.has_value() || checks.judgesWarmUp())};
+      caseLane(device, spec, *scene, checks, options, golden.has_value() || checks.judgesWarmUp())};
   if (!loaded.abCase.empty() && options.writeImages) {
     abSide = cases::parseCase(loaded.abCase, spec.file);
     sides.push_back({&abSide.spec, nullptr, {}, isChecked});
@@ -120,7 +119,8 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
     result.framesRendered += spec.script.frames * int(runner.size());
   }
   if (checks.needs().secondRun) {
-    lanes::LaneRunner repeat(device, {caseLane(spec, *scene, checks, options, checks.judgesWarmUp())});
+    lanes::LaneRunner repeat(
+        device, {caseLane(device, spec, *scene, checks, options, checks.judgesWarmUp())});
     repeat.run([&](lanes::LaneFrame& lf) { checks.observeRepeat(invariants::FrameView::of(lf.record)); }, 0,
                progress);
     result.framesRendered += spec.script.frames;

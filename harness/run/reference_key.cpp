@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "case/case_loader.h"
+#include "golden/environment.h"
+#include "run/build_identity.h"
 
 namespace taa::run {
 
@@ -44,6 +46,25 @@ std::string referenceKey(const spec::CaseSpec& spec) {
   std::error_code ec;
   auto folder = std::filesystem::weakly_canonical(std::filesystem::absolute(spec.file).parent_path(), ec);
   return folder.string() + "\n" + j.dump();
+}
+
+std::string ReferenceKeyParts::joined() const {
+  std::string out;
+  for (const std::string* part : {&settings, &inputFiles, &environment, &build})
+    out += std::to_string(part->size()) + ":" + *part + "\n";  // lengths delimit the parts
+  return out;
+}
+
+ReferenceKeyParts referenceKeyParts(const spec::CaseSpec& spec, const DeviceIdentity& device) {
+  return {referenceKey(spec), cases::referencedFilesSha256(spec),
+          golden::currentEnvironment(device).fingerprint(), executableIdentity()};
+}
+
+void shareReferences(RenderOptions& options, ReferenceCache* cache, const spec::CaseSpec& spec,
+                     const DeviceIdentity& device) {
+  if (!cache) return;
+  options.referenceCache = cache;
+  options.referenceKey = referenceKeyParts(spec, device).joined();
 }
 
 }  // namespace taa::run

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "api/reference_store.h"
 #include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
@@ -15,6 +17,7 @@
 #include "invariants/flicker_meter.h"
 #include "invariants/registry.h"
 #include "lanes/lane_runner.h"
+#include "run/reference_key.h"
 #include "run/timing.h"
 #include "spec/taa_modes.h"
 
@@ -86,8 +89,9 @@ Image finiteOnly(const Image& out, const Image& reference, long long& nonFinite,
   return f;
 }
 
-CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& base,
-                    const ScoreOptions& o, const std::vector<LaneSpec>& specs) {
+CaseScore scoreCase(Device& device, ReferenceCache& references, const fs::path& file,
+                    const nlohmann::json& base, const ScoreOptions& o,
+                    const std::vector<LaneSpec>& specs) {
   std::vector<std::unique_ptr<ScoreLane>> lanes;
   for (const auto& spec : specs) {
     auto lane = std::make_unique<ScoreLane>();
@@ -111,7 +115,10 @@ CaseScore scoreCase(Device& device, const fs::path& file, const nlohmann::json& 
     auto& l = *lp;
     if (!l.score.skipped.empty()) continue;
     lanes::LaneSetup setup{&l.loaded.spec, nullptr, {}, {}};
-    if (setups.empty()) setup.options.captures |= {Capture::Reference};
+    if (setups.empty()) {
+      setup.options.captures |= {Capture::Reference};
+      run::shareReferences(setup.options, &references, l.loaded.spec, device.identity());
+    }
     if (c.movers) setup.options.captures |= {Capture::Ids};
     if (c.movers) l.ghosting = invariants::makeInvariant("no_ghosting", l.loaded.spec);
     running.push_back(&l);
@@ -182,6 +189,9 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
   const std::vector<fs::path> files = inputFilesIn(o.casesDir, ".json", problems);
   if (!problems.empty()) throw cases::CaseError(problems);
   bool compiled = false;
+  // References kept across runs: scoring again after an edit of a shader renders none.
+  const auto store = ReferenceStore::fromEnvironment(std::cerr);
+  ReferenceCache references(size_t(128) << 20, store.get());
   for (const auto& file : files) {
     if (o.maxCases > 0 && int(s.cases.size()) >= o.maxCases) break;
     const cases::LoadedCase own = cases::loadCase(file);
@@ -194,13 +204,15 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
     if (!compiled)
       for (const auto& l : s.lanes) laneCase(base, file, l);
     compiled = true;
-    s.cases.push_back(scoreCase(device, file, base, o, s.lanes));
+    s.cases.push_back(scoreCase(device, references, file, base, o, s.lanes));
     // The lanes drop the case's checks; its labels still say what the case is for.
     s.cases.back().stress = hasLabel(own.spec, "stress");
   }
   if (s.cases.empty())
     throw cases::CaseError({o.casesDir.string() +
                             ": no case where a resolve applies (taa.mode full); pass --cases DIR"});
+  if (store) store->trim();
+  s.references = references.stats();
   return s;
 }
 

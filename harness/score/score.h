@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "api/device.h"
+#include "api/reference_cache.h"
 
 namespace taa::score {
 
@@ -67,6 +68,7 @@ struct Scorecard {
   std::string device;
   std::vector<CaseScore> cases;
   std::vector<std::string> skipped;  // "name: why a resolve does not apply"
+  ReferenceCacheStats references;    // timing, not a result: not in the scorecard's files
 };
 
 struct ScoreOptions {

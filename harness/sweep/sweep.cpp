@@ -1,9 +1,12 @@
 #include "sweep/sweep.h"
 
 #include <algorithm>
+#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "api/reference_cache.h"
+#include "api/reference_store.h"
 #include "api/user_shader.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
@@ -11,6 +14,7 @@
 #include "compare/metrics.h"
 #include "invariants/flicker_meter.h"
 #include "lanes/lane_runner.h"
+#include "run/reference_key.h"
 #include "run/timing.h"
 
 namespace taa::sweep {
@@ -86,9 +90,15 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
   // The frame before the first measured one is read too: flicker needs a predecessor.
   const auto read = [&](int f) { return f + 1 >= result.fromFrame; };
   std::vector<lanes::LaneSetup> setups;
+  // Kept across runs: a sweep after a run (or another sweep) of the case renders no reference.
+  const auto store = ReferenceStore::fromEnvironment(std::cerr);
+  ReferenceCache references(size_t(128) << 20, store.get());
   for (const auto& l : lanes) {
     lanes::LaneSetup s{&l->loaded.spec, nullptr, {}, read};
-    if (setups.empty()) s.options.captures = {Capture::Reference};  // rendered once, for every preset
+    if (setups.empty()) {
+      s.options.captures = {Capture::Reference};  // rendered once, for every preset
+      run::shareReferences(s.options, &references, l->loaded.spec, device.identity());
+    }
     setups.push_back(std::move(s));
   }
   lanes::LaneRunner runner(device, std::move(setups));
@@ -133,6 +143,7 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
     out.push_back(std::move(p));
   }
   result.presets = std::move(out);
+  if (store) store->trim();
   return result;
 }
 

@@ -19,9 +19,12 @@
 
 namespace taa {
 
+class ReferenceStore;
+
 struct ReferenceCacheStats {
   size_t rendered = 0;  // references rendered (misses)
-  size_t reused = 0;    // references taken from the cache
+  size_t fromDisk = 0;  // references read from the store (an earlier process rendered them)
+  size_t reused = 0;    // references taken from memory
   size_t bytes = 0;     // held now
 };
 
@@ -29,9 +32,12 @@ class ReferenceCache {
  public:
   // Holds at most `maxBytes` of images, dropping the least recently used first: memory stays
   // flat however many cases a run has.
-  explicit ReferenceCache(size_t maxBytes = size_t(128) << 20) : maxBytes_(maxBytes) {}
+  // A miss in memory asks `store` (api/reference_store.h), when given, and a render is written
+  // to it.
+  explicit ReferenceCache(size_t maxBytes = size_t(128) << 20, ReferenceStore* store = nullptr)
+      : maxBytes_(maxBytes), store_(store) {}
 
-  // The image kept under `key`, if any.
+  // The image kept under `key`, in memory or in the store, if any.
   std::shared_ptr<const Image> find(const std::string& key);
   void insert(const std::string& key, Image image);
   ReferenceCacheStats stats() const;
@@ -43,7 +49,10 @@ class ReferenceCache {
     std::shared_ptr<const Image> image;
     std::list<std::string>::iterator recent;
   };
+  void keep(const std::string& key, std::shared_ptr<const Image> image);  // under mutex_
+
   size_t maxBytes_;
+  ReferenceStore* store_;
   mutable std::mutex mutex_;
   std::unordered_map<std::string, Entry> entries_;
   std::list<std::string> recent_;  // most recently used first

@@ -34,6 +34,9 @@ class Renderer {
 
   // The passes and buffers this case allocated, one line each.
   const std::vector<std::string>& log() const;
+  // The shaders whose SPIR-V a reference frame's key holds (ReferencePass::setShaders); empty
+  // when the case renders no reference.
+  std::vector<std::string> referenceShaders() const;
 
   // Renders frame `frame`; frames must come in order from 0. Images are read back
   // when `readImages` is set (the frame is written or checked).

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 
+#include "api/device.h"
 #include "api/device_error.h"
+#include "api/reference_cache.h"
 #include "frame/draw_list.h"
 #include "frame/frame_readback.h"
 #include "frame/frame_uniforms.h"
@@ -16,7 +19,6 @@
 #include "passes/inject.h"
 #include "passes/post_filter.h"
 #include "passes/reference.h"
-#include "api/reference_cache.h"
 #include "passes/shadow.h"
 #include "passes/still_image.h"
 #include "script/frame_state.h"
@@ -98,13 +100,27 @@ VkDeviceSize uniformStride(vk::Context& ctx) {
 
 }  // namespace
 
+namespace {
+
+// Builds a pass, adding the shaders it loads to `into`.
+template <class Make>
+auto recordingShaders(std::set<std::string>& into, Make make) {
+  ShaderUseRecord record;
+  auto pass = make();
+  for (auto& name : record.names()) into.insert(std::move(name));
+  return pass;
+}
+
+}  // namespace
+
 struct Renderer::State {
   vk::Context& ctx;
   const spec::CaseSpec& spec;
   const scene::Scene& scene;
   RenderOptions options;
   GpuScene gpuScene;
-  std::unique_ptr<ShadowPass> shadow;  // lighting.shadows
+  std::set<std::string> referenceShaders;  // of the passes the reference reads
+  std::unique_ptr<ShadowPass> shadow;      // lighting.shadows
   float shadowDistance = 0.0f;
   std::unique_ptr<StillImagePass> still;  // debug.image
   std::unique_ptr<PostFilter> debugChannels;
@@ -135,11 +151,20 @@ struct Renderer::State {
         scene(sc),
         options(o),
         gpuScene(c, sc),
-        shadow(s.lighting.shadows
-                   ? std::make_unique<ShadowPass>(c, gpuScene, s.lighting.cascades,
-                                                  s.render.lod0 || s.render.lod0_alpha_test)
-                   : nullptr),
-        still(s.debug.image.empty() ? nullptr : std::make_unique<StillImagePass>(c, sc.still)),
+        shadow(recordingShaders(referenceShaders,
+                                [&] {
+                                  return s.lighting.shadows
+                                             ? std::make_unique<ShadowPass>(
+                                                   c, gpuScene, s.lighting.cascades,
+                                                   s.render.lod0 || s.render.lod0_alpha_test)
+                                             : nullptr;
+                                })),
+        still(recordingShaders(referenceShaders,
+                               [&] {
+                                 return s.debug.image.empty()
+                                            ? nullptr
+                                            : std::make_unique<StillImagePass>(c, sc.still);
+                               })),
         debugChannels(makeDebugChannels(c, s)),
         plan(planWithCaptures(s, o)),
         firstFrame(buildDrawList(sc, script::frameState(s, 0))),
@@ -150,9 +175,13 @@ struct Renderer::State {
         targets(c, config),
         gbuffer(c, gpuScene, config),
         prev(c, needs, targets),
-        reference(o.captures.has(Capture::Reference)
-                      ? std::make_unique<ReferencePass>(c, s, gpuScene, shadow.get(), still.get())
-                      : nullptr),
+        reference(recordingShaders(referenceShaders,
+                                   [&] {
+                                     return o.captures.has(Capture::Reference)
+                                                ? std::make_unique<ReferencePass>(
+                                                      c, s, gpuScene, shadow.get(), still.get())
+                                                : nullptr;
+                                   })),
         inject(s.inject.frames.empty() ? nullptr : std::make_unique<InjectPass>(c, s)),
         uniformStride(taa::uniformStride(c)),
         frameUniforms(c, uniformStride * VkDeviceSize(eyeCount(s)),
@@ -161,6 +190,7 @@ struct Renderer::State {
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true),
         timer(c),
         readback(c) {
+    if (reference) reference->setShaders({referenceShaders.begin(), referenceShaders.end()});
     log.push_back("device: " + c.info().name + " (" + c.info().driverInfo + ")");
     for (const auto& note : sc.notes) log.push_back("scene note: " + note);
     for (const auto& model : sc.models)
@@ -209,6 +239,10 @@ Renderer::~Renderer() = default;
 
 const std::vector<std::string>& Renderer::log() const {
   return s_->log;
+}
+
+std::vector<std::string> Renderer::referenceShaders() const {
+  return s_->reference ? s_->reference->shaders() : std::vector<std::string>{};
 }
 
 FrameRecord Renderer::renderFrame(int frame, bool readImages) {

@@ -9,6 +9,7 @@
 #include "script/stereo.h"
 #include "vk/context.h"
 #include "vk/dispatch.h"
+#include "vk/pipeline.h"
 
 namespace taa {
 
@@ -81,6 +82,20 @@ ReferencePass::ReferencePass(vk::Context& ctx, const spec::CaseSpec& spec, const
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 }
 
+void ReferencePass::setShaders(const std::vector<std::string>& names) {
+  shaderNames_ = names;
+  Sha256 h;
+  for (const auto& name : names) {
+    const std::vector<uint32_t> words = vk::loadSpirv(name);
+    const uint64_t n[2] = {name.size(), words.size()};
+    h.update(n, sizeof(n));  // lengths delimit the parts
+    h.update(name.data(), name.size());
+    h.update(words.data(), words.size() * sizeof(uint32_t));
+  }
+  const auto digest = h.finish();
+  shaderDigest_ = toHex(digest.data(), digest.size());
+}
+
 void ReferencePass::prepare(const script::FrameState& state, const ShadowCascades& shadows,
                             int eye) {
   const glm::ivec2 size(spec_.render.width, spec_.render.height);
@@ -126,6 +141,7 @@ std::string ReferencePass::frameKey(const std::string& caseKey, const DrawList& 
     h.update(data, bytes);
   };
   add(caseKey.data(), caseKey.size());
+  add(shaderDigest_.data(), shaderDigest_.size());
   const uint32_t shape[4] = {accum_.desc().width, accum_.desc().height, uint32_t(offsets_.size()),
                              still_ ? 1u : 0u};
   add(shape, sizeof(shape));

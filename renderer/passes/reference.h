@@ -38,9 +38,15 @@ class ReferencePass {
   void record(VkCommandBuffer cmd, const DrawList& draws, VkBuffer instances, int eye = 0);
   // What this frame's reference is a function of, once every eye is prepared: `caseKey` (what
   // the case gives the pass: scene, shading, size, samples; RenderOptions::referenceKey), the
-  // sub-samples' uniforms, the draws, instances and deformed vertices, and the shadow cascades.
+  // sub-samples' uniforms, the draws, instances and deformed vertices, and the shadow cascades),
+  // and the SPIR-V the pass and the passes it reads run (setShaders).
   std::string frameKey(const std::string& caseKey, const DrawList& draws,
                        const ShadowCascades& shadows) const;
+  // The shaders (names in shaderFolder()) whose code reaches the reference: its own and those
+  // of the shadow and still-image passes it reads. Their SPIR-V bytes join frameKey, so a
+  // reference kept on disk is not read after an edit of one; an edit of the resolve's is.
+  void setShaders(const std::vector<std::string>& names);
+  const std::vector<std::string>& shaders() const { return shaderNames_; }
   vk::Image& output() { return accum_; }
   int samples() const { return int(offsets_.size()); }
 
@@ -57,6 +63,8 @@ class ReferencePass {
   VkDeviceSize stride_ = 0;
   vk::Sampler point_;
   StillImagePass* still_ = nullptr;
+  std::vector<std::string> shaderNames_;
+  std::string shaderDigest_;  // SHA-256 over shaderNames_' names and SPIR-V
 };
 
 }  // namespace taa

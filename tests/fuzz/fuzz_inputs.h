@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "api/reference_store.h"
+#include "api/scene_loading.h"
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "case/coverage.h"
@@ -105,12 +107,22 @@ inline void readGltf(const std::string& bytes) {
   const bool glb = bytes.rfind("glTF", 0) == 0;
   const std::filesystem::path file = dir / (glb ? "in.glb" : "in.gltf");
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  (void)gltfReferencedFiles(file, bytes);  // the case's input hash and the reference key read these
   scene::Scene s;
   try {
     s.models.push_back(scene::loadGltf(file, s));
     scene::poseModel(s, 0, 0.5);
   } catch (const scene::SceneError&) {
   }
+}
+
+// A reference cache entry (api/reference_store.h) as a store reads it, under the key the
+// corpus's entries were written for: a complete, verified entry or nothing, never a throw.
+inline constexpr const char* kFuzzReferenceKey =
+    "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef";
+inline void readReferenceEntry(const std::string& bytes) {
+  if (auto image = decodeReferenceEntry(bytes, kFuzzReferenceKey))
+    if (image->data.size() != image->pixelCount() * size_t(image->channels)) std::abort();
 }
 
 // The image codecs as `compare` and the golden reader use them: OpenEXR (channels by

@@ -54,6 +54,13 @@ TEST(FuzzRegressions, ResultsCorpus) {
 TEST(FuzzRegressions, LanesCorpus) {
   replay("lanes", &readLanes);
 }
+TEST(FuzzRegressions, ReferenceEntryCorpus) {
+  replay("reference_entry", &readReferenceEntry);
+  // The corpus's valid entries decode: the fuzzer starts from inputs that reach the pixels.
+  EXPECT_TRUE(decodeReferenceEntry(
+      test::readFile(fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/reference_entry/valid_2x2_rgba"),
+      kFuzzReferenceKey));
+}
 
 }  // namespace
 }  // namespace taa::fuzz

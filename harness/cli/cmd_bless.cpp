@@ -150,16 +150,30 @@ int blessOne(const cases::LoadedCase& loaded, const BlessSource& source, const B
   auto manifest = golden::makeManifest(loaded, source.environment, source.stored, source.digests,
                                        plan.reason, previous ? &*previous : nullptr);
   manifest.bless.commit = source.commit;
+  // An earlier environment whose every frame hashes as this render's stays a positive (a bless
+  // that changed no frame here, such as an input hash that now covers more files, keeps the
+  // machines that render these same bytes); one of other frames goes with the old images.
+  size_t dropped = 0;
+  if (previous)
+    for (const auto& p : previous->positives()) {
+      if (p.environment.fingerprint() == manifest.environment.fingerprint()) continue;
+      if (p.sequence == manifest.sequence && p.signatures.size() == manifest.sequence.size())
+        manifest.others.push_back(p);
+      else
+        ++dropped;
+    }
   std::vector<std::pair<golden::GoldenFrame, Image>> files;
   for (const auto& gf : manifest.frames) files.emplace_back(gf, source.stored.at(gf.frame));
   golden::replaceGoldens(root, manifest, files);
   std::cout << "BLESSED " << r.name << ": " << manifest.frames.size() << " frame(s) in "
             << (root / r.name).string() << " (" << plan.reason << ")\n";
-  if (previous && !previous->others.empty())
-    std::cout
-        << "NOTE " << r.name << ": the " << previous->others.size()
-        << " other environment(s)' positives were dropped with the old images; add them again "
-           "(bless --add-environment, or bless --from a run there)\n";
+  if (!manifest.others.empty())
+    std::cout << "NOTE " << r.name << ": kept the positives of " << manifest.others.size()
+              << " other environment(s) whose frames hash as this render's\n";
+  if (dropped)
+    std::cout << "NOTE " << r.name << ": the positives of " << dropped
+              << " other environment(s) were dropped with the old frames; add them again "
+                 "(bless --add-environment there, or bless --from a run there)\n";
   return kPass;
 }
 

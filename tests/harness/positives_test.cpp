@@ -107,6 +107,33 @@ TEST_F(Positives, AnotherLevelGetsItsOwnPositiveFromItsRunFolderAndIsThenExact) 
       << r.output;
 }
 
+TEST_F(Positives, APlainBlessKeepsThePositivesWhoseFramesItReproducesAndDropsTheRest) {
+  ASSERT_EQ(bless("small").exitCode, 0);
+  ASSERT_EQ(run("small", "", kSse).exitCode, 0);
+  ASSERT_EQ(blessFrom("--add-environment").exitCode, 0);
+  // A machine that renders the primary's very bytes (as x86-64-v3 and v4 do on lavapipe).
+  auto m = readJson(root_ / "goldens/small/manifest.json");
+  auto twin = m["other_environments"][0];
+  twin["environment"] = m["environment"];
+  twin["environment"]["cpu_features"] = "x86-64-twin";
+  twin.erase("frame_sha256");
+  twin.erase("frame_signatures");
+  twin["same_frames_as_primary"] = true;
+  m["other_environments"].push_back(twin);
+  std::ofstream(root_ / "goldens/small/manifest.json") << m.dump(2);
+  // An edit that changes no frame here: the twin stays, sse4.1's other frames cannot be vouched for.
+  std::string edited = kSmallCase;
+  edited.replace(edited.find("small moving case"), 5, "tiny");
+  writeCase("small", edited);
+  const auto r = bless("small");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("kept the positives of 1 other environment(s)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("the positives of 1 other environment(s) were dropped"), std::string::npos) << r.output;
+  const auto after = readJson(root_ / "goldens/small/manifest.json");
+  ASSERT_EQ(after["other_environments"].size(), 1u);
+  EXPECT_EQ(after["other_environments"][0]["environment"]["cpu_features"], "x86-64-twin");
+}
+
 TEST_F(Positives, ALevelWithoutAPositiveTakesTheTolerancePathAndSaysSo) {
   ASSERT_EQ(bless("small").exitCode, 0);
   const auto r = run("small", "", "GALLIUM_OVERRIDE_CPU_CAPS=ssse3");

@@ -11,6 +11,7 @@
 
 #include "api/device.h"
 #include "cli_fixture.h"
+#include "support/text.h"
 
 namespace taa {
 namespace {
@@ -37,13 +38,6 @@ Counts countsOf(const std::string& output) {
   return c;
 }
 
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 class ReferenceCacheCli : public test::HarnessCli {
  protected:
   void SetUp() override {
@@ -56,7 +50,7 @@ class ReferenceCacheCli : public test::HarnessCli {
   }
   // Each checked frame's reference RMSE: equal doubles for bit-identical references.
   nlohmann::json referenceRmse(const fs::path& out) const {
-    const auto j = nlohmann::json::parse(readAll(out / "results.json"));
+    const auto j = nlohmann::json::parse(test::readFile(out / "results.json"));
     return j["cases"][0]["reference_rmse"];
   }
   std::vector<fs::path> entries() const {
@@ -102,7 +96,7 @@ TEST_F(ReferenceCacheCli, ATamperedEntryIsRenderedAgain) {
   const auto files = entries();
   ASSERT_FALSE(files.empty());
   for (const auto& f : files) {  // one pixel bit each
-    std::string b = readAll(f);
+    std::string b = test::readFile(f);
     b[b.size() - 7] = char(b[b.size() - 7] ^ 0x01);
     std::ofstream(f, std::ios::binary | std::ios::trunc) << b;
   }
@@ -124,9 +118,9 @@ TEST_F(ReferenceCacheCli, TwoRunsAtOnceOnOneCacheGiveTheResultsOfOne) {
             TAA_HARNESS_BIN + " run " + casePath("ref") + " --out " + (root_ / out).string() +
             " >" + (root_ / out).string() + ".log 2>&1 & " + out + "=$!; ";
   ASSERT_EQ(std::system(("bash -c '" + both + "wait $a && wait $b'").c_str()), 0)
-      << readAll(root_ / "a.log") << readAll(root_ / "b.log");
-  EXPECT_EQ(referenceRmse(root_ / "a"), rmse) << readAll(root_ / "a.log");
-  EXPECT_EQ(referenceRmse(root_ / "b"), rmse) << readAll(root_ / "b.log");
+      << test::readFile(root_ / "a.log") << test::readFile(root_ / "b.log");
+  EXPECT_EQ(referenceRmse(root_ / "a"), rmse) << test::readFile(root_ / "a.log");
+  EXPECT_EQ(referenceRmse(root_ / "b"), rmse) << test::readFile(root_ / "b.log");
   // What they left is whole: a third run reads every reference.
   const auto third = runRef();
   EXPECT_EQ(countsOf(third.output).rendered, 0) << third.output;
@@ -140,7 +134,7 @@ TEST_F(ReferenceCacheCli, AReferenceShaderEditMissesAResolveShaderEditHits) {
   fs::copy(shaderFolder(), shaders, fs::copy_options::recursive);
   const std::string env = "TAA_SHADER_DIR=" + shaders.string();
   auto editGenerator = [&](const char* file) {
-    std::string b = readAll(shaders / file);
+    std::string b = test::readFile(shaders / file);
     b[8] = char(b[8] ^ 0x01);
     std::ofstream(shaders / file, std::ios::binary | std::ios::trunc) << b;
   };

@@ -27,6 +27,7 @@
 #include "run/reference_key.h"
 #include "scene/build_scene.h"
 #include "support/gpu.h"
+#include "support/text.h"
 
 namespace taa {
 namespace {
@@ -54,13 +55,6 @@ Image pattern(int w, int h, float seed) {
 bool sameBits(const Image& a, const Image& b) {
   return a.sameShape(b) && a.data.size() == b.data.size() &&
          std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 void writeAll(const fs::path& file, const std::string& bytes) {
@@ -168,7 +162,7 @@ TEST(ReferenceStore, KillDuringAWriteLeavesNoTornEntry) {
       const std::string name = f.filename().string();
       if (name[0] == '.') continue;  // the killed write's temporary file
       ++entries;
-      const auto image = decodeReferenceEntry(readAll(f), f.stem().string());
+      const auto image = decodeReferenceEntry(test::readFile(f), f.stem().string());
       ASSERT_TRUE(image) << name << " is torn (round " << round << ")";
       EXPECT_TRUE(sameBits(*image, big)) << name;
     }
@@ -300,7 +294,7 @@ TEST(ReferenceKey, EachPartMissesAndTheResolveIsNoPart) {
   writeAll(dir / "c.json", caseText);
 
   // A byte of the scene's buffer (the glTF itself unchanged).
-  std::string bin = readAll(dir / "animated.bin");
+  std::string bin = test::readFile(dir / "animated.bin");
   bin[bin.size() / 2] = char(bin[bin.size() / 2] ^ 1);
   writeAll(dir / "animated.bin", bin);
   const auto buffer = run::referenceKeyParts(cases::loadCase(dir / "c.json").spec, device);

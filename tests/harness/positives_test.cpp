@@ -11,7 +11,7 @@
 
 #include "harness/cli_fixture.h"
 
-namespace taa {
+namespace taa::positives_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -181,4 +181,4 @@ TEST_F(Positives, AnAlteredRunFolderIsRefusedAndNoGoldenChanges) {
 }
 
 }  // namespace
-}  // namespace taa
+}  // namespace taa::positives_test

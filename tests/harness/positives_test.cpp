@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/cli_fixture.h"
+#include "support/text.h"
 
 namespace taa::positives_test {
 namespace {
@@ -26,11 +27,6 @@ const std::string kNoDevice =
 nlohmann::json readJson(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
-}
-
-std::string fileBytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
 size_t exrCount(const fs::path& dir) {
@@ -64,11 +60,11 @@ TEST_F(Positives, AnotherLevelGetsItsOwnPositiveFromItsRunFolderAndIsThenExact) 
   EXPECT_EQ(harness("run " + casePath("small") + " --out " + (root_ / "nodev").string(), kNoDevice)
                 .exitCode,
             3);
-  const std::string exrBefore = fileBytes(root_ / "goldens/small/frame_0005.exr");
+  const std::string exrBefore = test::readFile(root_ / "goldens/small/frame_0005.exr");
   r = blessFrom("--add-environment");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("ADDED small environment"), std::string::npos) << r.output;
-  EXPECT_EQ(fileBytes(root_ / "goldens/small/frame_0005.exr"), exrBefore);  // only the manifest changes
+  EXPECT_EQ(test::readFile(root_ / "goldens/small/frame_0005.exr"), exrBefore);  // only the manifest changes
   const auto m = readJson(root_ / "goldens/small/manifest.json");
   ASSERT_EQ(m["other_environments"].size(), 1u);
   EXPECT_EQ(m["other_environments"][0]["environment"]["cpu_features"], "override:sse4.1");
@@ -142,8 +138,7 @@ TEST_F(Positives, ALevelWithoutAPositiveTakesTheTolerancePathAndSaysSo) {
   EXPECT_NE(r.output.find("1 by tolerance (no positive for"), std::string::npos) << r.output;
   const auto c = results()["cases"][0];
   EXPECT_EQ(c["golden_mode"], "tolerance");
-  std::ifstream junit(root_ / "out/junit.xml");
-  const std::string xml((std::istreambuf_iterator<char>(junit)), {});
+  const std::string xml = test::readFile(root_ / "out/junit.xml");
   EXPECT_NE(xml.find("golden: tolerance: no positive for"), std::string::npos);
 }
 

@@ -153,7 +153,7 @@ inline void compileHlsl(const std::string& text) {
     return d;
   }();
   std::vector<uint32_t> words(text.size() / 4);
-  std::memcpy(words.data(), text.data(), words.size() * 4);
+  if (!words.empty()) std::memcpy(words.data(), text.data(), words.size() * 4);  // no null source
   (void)user::userSpirvProblem(words, "fuzz.spv");
   const std::filesystem::path file = dir / "src" / "in.hlsl";
   std::ofstream(file, std::ios::binary | std::ios::trunc) << text;

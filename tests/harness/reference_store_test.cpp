@@ -170,6 +170,54 @@ TEST(ReferenceStore, KillDuringAWriteLeavesNoTornEntry) {
   EXPECT_GT(entries, 0);
 }
 
+// Processes sharing one folder: two writers saving the same entries over and over while a
+// reader loads them. A reader sees an entry whole or not at all (a partial one would be
+// dropped with a note), and neither writer's temporary file is the other's (a clash fails a
+// rename, which is a note too). A writer that noted anything exits 1 instead of being killed.
+TEST(ReferenceStore, WritersAndAReaderAtOnceSeeOnlyWholeEntries) {
+  const fs::path dir = freshFolder();
+  const Image big = pattern(256, 256, 5.0f);  // 1 MiB an entry: a write takes a while
+  std::vector<pid_t> writers;
+  for (int w = 0; w < 2; ++w) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::ostringstream notes;
+      ReferenceStore store(dir, kDefaultReferenceCacheBytes, notes);
+      for (int i = 0;; ++i) {
+        store.save(keyOf(std::to_string(i % 4)), big);
+        if (!notes.str().empty()) _exit(1);
+      }
+    }
+    writers.push_back(child);
+  }
+  std::ostringstream notes;
+  ReferenceStore reader(dir, kDefaultReferenceCacheBytes, notes);
+  int whole = 0, exited = 0;
+  std::vector<int> status(writers.size(), 0);
+  for (int i = 0; whole < 100 && i < 1000000 && notes.str().empty() && exited == 0; ++i) {
+    if (const auto image = reader.load(keyOf(std::to_string(i % 4)))) {
+      ++whole;
+      EXPECT_TRUE(sameBits(*image, big));
+    }
+    for (size_t w = 0; w < writers.size(); ++w)
+      if (writers[w] && waitpid(writers[w], &status[w], WNOHANG) == writers[w]) {
+        writers[w] = 0;
+        ++exited;
+      }
+  }
+  for (size_t w = 0; w < writers.size(); ++w) {
+    if (writers[w]) {
+      kill(writers[w], SIGKILL);
+      waitpid(writers[w], &status[w], 0);
+    }
+    EXPECT_TRUE(WIFSIGNALED(status[w])) << "writer " << w << " noted a failure (exit "
+                                        << WEXITSTATUS(status[w]) << ")";
+  }
+  EXPECT_EQ(notes.str(), "");
+  EXPECT_GT(whole, 0);
+}
+
 // The folder over its limit: the least recently used entries go (a read counts as a use), the
 // rest stay.
 TEST(ReferenceStore, TrimKeepsTheMostRecentlyUsedUnderTheLimit) {

@@ -341,6 +341,17 @@ TEST_F(Merge, RefusesShardsThatDoNotMakeOneRun) {
   harness("run " + repoCases(kMergeCases) + " --shard 2/3 --out " + (root_ / "other").string() + " " +
           (fs::path(TAA_SOURCE_DIR) / "cases" / "fxaa_only.json").string());
   refused(shard(1) + " " + (root_ / "other").string() + " " + shard(3), "ran another case set");
+  // A shard of another build, as a rebuilt shader folder makes it: the same cases, commit and
+  // device, and results that are its own, not edited. The merge must not pass it off as the
+  // first shard's build.
+  const fs::path shaders = root_ / "shaders";
+  fs::copy(shaderFolder(), shaders, fs::copy_options::recursive);
+  std::ofstream(shaders / "extra.spv") << "not loaded, but another folder's digest";
+  ASSERT_EQ(harness("run " + repoCases(kMergeCases) + " --shard 2/3 --out " + (root_ / "rebuilt").string(),
+                    "CI=false TAA_SHADER_DIR=" + shaders.string())
+                .exitCode,
+            0);
+  refused(shard(1) + " " + (root_ / "rebuilt").string() + " " + shard(3), "merge shards of one build");
   editResults(2, [](auto& j) { j["commit"] = "0123456789abcdef"; });
   refused(shard(1) + " " + shard(2) + " " + shard(3), "was run at commit 0123456789abcdef");
   editResults(2, [&](auto& j) {

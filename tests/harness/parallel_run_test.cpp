@@ -212,6 +212,16 @@ TEST_F(ParallelRun, VerdictFromAnEarlierRunOnlyForTheSameInputs) {
                 .output.find("verdict: from"),
             std::string::npos)
       << "another SPIR-V folder is another build";
+  // A rebuilt shader keeps its file's size (one constant changed): the digest reads the bytes.
+  fs::remove(shaders / "extra.spv");
+  std::string spirv = readFile(shaders / "taa_resolve.comp.spv");
+  spirv[8] = char(spirv[8] ^ 0x01);  // the generator word: the same size, other bytes
+  std::ofstream(shaders / "taa_resolve.comp.spv", std::ios::binary | std::ios::trunc) << spirv;
+  EXPECT_EQ(test::runHarness("run " + casePath("small") + from + " --out " + (root_ / "out").string() + " ",
+                             "CI=false TAA_SHADER_DIR=" + shaders.string() + " ")
+                .output.find("verdict: from"),
+            std::string::npos)
+      << "a SPIR-V file rewritten at the same size is another build";
   // Another build's or commit's results, or none, render too; a file that is not results is
   // refused.
   const fs::path results = root_ / "shard" / "results.json";

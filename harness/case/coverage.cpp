@@ -158,29 +158,20 @@ std::map<int, int> tracedConstants(const std::vector<std::string>& log) {
   return out;
 }
 
-std::map<std::string, std::vector<std::string>> runLogsFromResults(const nlohmann::json& j) {
-  std::map<std::string, std::vector<std::string>> logs;
-  if (!j.is_object() || !j.contains("cases") || !j["cases"].is_array())
-    throw std::invalid_argument("no \"cases\" list");
-  for (size_t i = 0; i < j["cases"].size(); ++i) {
-    const auto& c = j["cases"][i];
-    const std::string at = "cases[" + std::to_string(i) + "].";
-    if (!c.is_object() || !c.contains("log")) continue;
-    if (!c.contains("name") || !c["name"].is_string())
-      throw std::invalid_argument(at + "name: not a string");
-    const auto& log = c["log"];
-    if (!log.is_array() ||
-        !std::all_of(log.begin(), log.end(), [](const auto& l) { return l.is_string(); }))
-      throw std::invalid_argument(at + "log: not a list of strings");
-    auto lines = log.get<std::vector<std::string>>();
+std::map<std::string, std::vector<std::string>> checkedRunLogs(
+    const std::vector<std::pair<std::string, std::vector<std::string>>>& logs) {
+  std::map<std::string, std::vector<std::string>> out;
+  for (size_t i = 0; i < logs.size(); ++i) {
+    const auto& [name, lines] = logs[i];
+    if (lines.empty()) continue;
     try {
       tracedConstants(lines);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(at + "log: " + e.what());
+      throw std::invalid_argument("cases[" + std::to_string(i) + "].log: " + e.what());
     }
-    logs[c["name"].get<std::string>()] = std::move(lines);
+    out[name] = lines;
   }
-  return logs;
+  return out;
 }
 
 std::vector<CoverageRow> resolveBranchCoverage(

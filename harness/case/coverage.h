@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "spec/checked_case.h"
@@ -36,10 +37,11 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
 // word, when the line holds something other than ID=VALUE whole numbers in int's range.
 std::map<int, int> tracedConstants(const std::vector<std::string>& log);
 
-// Each case's log of a results.json as `coverage --results` reads it: name -> lines, every
-// traced constant checked (tracedConstants). Throws std::invalid_argument naming the key
-// ("cases[3].log: ...") when the document is not a run's results.
-std::map<std::string, std::vector<std::string>> runLogsFromResults(const nlohmann::json& j);
+// Each case's log (name, lines, in results.json's order) as `coverage --results` uses it:
+// name -> lines, every traced constant checked (tracedConstants). Throws
+// std::invalid_argument naming the case's place ("cases[3].log: ...").
+std::map<std::string, std::vector<std::string>> checkedRunLogs(
+    const std::vector<std::pair<std::string, std::vector<std::string>>>& logs);
 
 std::vector<CoverageRow> resolveBranchCoverage(
     const std::map<std::string, std::vector<std::string>>& logs);

@@ -3,10 +3,8 @@
 #include <algorithm>
 
 #include "cli/options.h"
-#include "cli/run_cases.h"
 #include "core/exr_codec.h"
 #include "core/image_io.h"
-#include "core/contained_file.h"
 #include "golden/signature.h"
 #include "run/build_identity.h"
 #include "run/golden_check.h"
@@ -34,28 +32,28 @@ bool isSha256Hex(const std::string& s) {
 
 RunFolderSource::RunFolderSource(fs::path folder) : folder_(std::move(folder)) {
   std::error_code ec;
-  if (!fs::is_directory(folder_, ec))
+  if (!fs::is_directory(folder_.root(), ec))
     throw UsageError(
-        "--from " + folder_.string() +
+        "--from " + folder_.root().string() +
         ": not a folder; pass the --out folder of a run (holding results.json and its frames)");
-  results_ = readResultsFile(folder_ / "results.json", "pass the --out folder of a `taa-harness run`");
+  results_ = folder_.readResults("pass the --out folder of a `taa-harness run`");
   if (results_.environment.device.empty() ||
       results_.environment.fingerprint() != results_.fingerprint)
     throw UsageError(
-        (folder_ / "results.json").string() +
+        folder_.resultsFile().string() +
         ": its environment is missing or disagrees with its fingerprint; bless --from needs the "
         "results.json of a run of this version (run the cases there again)");
 }
 
 BlessSource RunFolderSource::source(const cases::LoadedCase& loaded) const {
   const std::string& name = loaded.spec.name;
-  const std::string where = (folder_ / "results.json").string() + ": case " + name;
+  const std::string where = folder_.resultsFile().string() + ": case " + name;
   const auto it = std::find_if(results_.cases.begin(), results_.cases.end(),
                                [&](const run::CaseResult& c) { return c.name == name; });
   if (it == results_.cases.end())
-    throw UsageError((folder_ / "results.json").string() + " holds no case " + name +
+    throw UsageError(folder_.resultsFile().string() + " holds no case " + name +
                      "; run it there (taa-harness run " + loaded.spec.file.string() + " --out " +
-                     folder_.string() + ") or leave it out");
+                     folder_.root().string() + ") or leave it out");
   const run::CaseResult& r = *it;
   if (r.caseSha256 != loaded.sha256)
     throw UsageError(where + " was rendered from other case, scene, track or shader bytes than " +
@@ -64,7 +62,7 @@ BlessSource RunFolderSource::source(const cases::LoadedCase& loaded) const {
                      "); run it again from this tree");
   if (spirvOf(results_.build) != run::spirvIdentity())
     throw UsageError(
-        (folder_ / "results.json").string() +
+        folder_.resultsFile().string() +
         ": rendered with other built-in shaders (SPIR-V) than this build's; run it again with "
         "this tree's build");
   if (r.status == run::CaseStatus::Error)
@@ -89,25 +87,26 @@ BlessSource RunFolderSource::source(const cases::LoadedCase& loaded) const {
     if (size_t(f) >= sha.size())
       throw UsageError(where + " rendered " + std::to_string(sha.size()) +
                        " frames, not checked frame " + std::to_string(f));
-    const fs::path rel = fs::path(name) / (golden::frameBase(f) + ".exr");
+    const fs::path rel = run::RunFolder::caseFile(name, f, run::FrameFile::Exr);
+    const fs::path file = folder_.root() / rel;
     Image image;
     try {
-      image = exr::decode(
-          readContainedFile(folder_, rel, kMaxRunImageBytes, "frame " + std::to_string(f) + " of " + name),
-          kMaxImageSamples);
-    } catch (const InputError& e) {
-      throw UsageError((folder_ / rel).string() + ": " + e.what() +
+      image = exr::decode(folder_.readFile(rel, "frame " + std::to_string(f) + " of " + name,
+                                           "the run's frames are needed as it wrote them"),
+                          kMaxImageSamples);
+    } catch (const exr::ExrError& e) {
+      throw UsageError(file.string() + ": " + e.what() +
                        "; the run's frames are needed as it wrote them");
     }
     if (pixelSha256(image) != sha[size_t(f)])
-      throw UsageError((folder_ / rel).string() + " does not hash to what " + where +
+      throw UsageError(file.string() + " does not hash to what " + where +
                        " claims for frame " + std::to_string(f) +
                        "; the folder was altered: run it again");
     // The run signed the frame before its EXR rounded it to half floats: a cell may move by a
     // rounding step, never past the bounds two signatures are compared within.
     const auto d = golden::signatureDistance(golden::frameSignature(image), sig[size_t(f)]);
     if (d.cell > golden::kSignatureCellTolerance || d.mean > golden::kSignatureMeanTolerance)
-      throw UsageError((folder_ / rel).string() + "'s signature is not what " + where +
+      throw UsageError(file.string() + "'s signature is not what " + where +
                        " claims for frame " + std::to_string(f) +
                        "; the folder was altered: run it again");
     s.stored.emplace(f, std::move(image));

@@ -13,6 +13,7 @@
 #include "golden/bless.h"
 #include "golden/environment.h"
 #include "run/results.h"
+#include "run/run_folder.h"
 
 namespace taa::cli {
 
@@ -24,8 +25,8 @@ struct BlessSource {
   run::CaseResult result;       // its invariants and frame comparisons, as that run saw them
 };
 
-// A run's output folder as `bless --from` reads it. Every file is read through the input-path
-// rule (core/input_file.h): inside the folder once links are resolved, a regular file, bounded.
+// A run's output folder as `bless --from` reads it, through the folder's one reader
+// (run/run_folder.h): inside the folder once links are resolved, a regular file, bounded.
 class RunFolderSource {
  public:
   // Reads OUT/results.json; UsageError (exit 2) naming the file when it cannot be used.
@@ -37,11 +38,11 @@ class RunFolderSource {
   // results claim (or its signature differs).
   BlessSource source(const cases::LoadedCase& loaded) const;
 
-  const std::filesystem::path& folder() const { return folder_; }
+  const std::filesystem::path& folder() const { return folder_.root(); }
   const run::RunResults& results() const { return results_; }
 
  private:
-  std::filesystem::path folder_;
+  run::RunFolder folder_;
   run::RunResults results_;
 };
 

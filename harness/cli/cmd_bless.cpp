@@ -12,7 +12,8 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "cli/run_cases.h"
+#include "cli/batch_args.h"
+#include "run/run_folder.h"
 #include "compare/metric_table.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
@@ -46,7 +47,9 @@ const char* kBlessUsage =
 
 std::vector<std::string> failedCases(const fs::path& results) {
   std::vector<std::string> files;
-  for (const auto& c : readResultsFile(results, "pass the results.json of a previous run").cases)
+  const auto earlier =
+      run::RunFolder::ofResultsFile(results).readResults("pass the results.json of a previous run");
+  for (const auto& c : earlier.cases)
     if (c.status != run::CaseStatus::Pass && c.status != run::CaseStatus::Error)
       files.push_back(c.file);
   return files;
@@ -178,10 +181,10 @@ int blessOne(const cases::LoadedCase& loaded, const BlessSource& source, const B
 }
 
 // Renders the batch here: its sources, or an exit code when the batch could not run.
-std::variant<std::vector<BlessSource>, int> renderSources(const CaseBatch& batch,
+std::variant<std::vector<BlessSource>, int> renderSources(const run::CaseBatch& batch,
                                                           const ParsedArgs& a,
                                                           const fs::path& goldensRoot) {
-  BatchOptions options;
+  run::BatchOptions options;
   options.run.outDir = a.values.count("--out") ? fs::path(a.value("--out")) : temporaryOutput();
   options.run.goldensRoot = goldensRoot;
   options.device = a.value("--device");
@@ -192,13 +195,13 @@ std::variant<std::vector<BlessSource>, int> renderSources(const CaseBatch& batch
   createOutputDirectory(options.run.outDir);
   if (!a.values.count("--out"))
     std::cout << "bless: this render's frames are in " << options.run.outDir.string() << "\n";
-  auto outcome = runBatch(batch, options, nullptr, /*keepOutputs=*/true);
-  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) {
+  auto outcome = run::runBatch(batch, options, nullptr, /*keepOutputs=*/true);
+  if (outcome.verdict == run::BatchVerdict::BadInput) {
     // A scene that does not load (or a broken environment): say which case and why.
     for (const auto& r : outcome.results.cases)
       if (r.status == run::CaseStatus::Error)
         std::cerr << "error: " << r.name << ": " << r.message << "\n";
-    return outcome.exitCode;
+    return exitCodeOf(outcome.verdict);
   }
   std::vector<BlessSource> sources;
   for (auto& r : outcome.results.cases) {
@@ -244,7 +247,7 @@ int cmdBless(const Args& args) {
     paths.insert(paths.end(), failed.begin(), failed.end());
   }
   if (paths.empty()) throw UsageError(std::string("no case given\nusage: ") + kBlessUsage);
-  const CaseBatch batch = loadBatch(paths, "");
+  const run::CaseBatch batch = loadBatch(paths, "");
   std::vector<BlessSource> sources;
   if (fromRun) {
     // Every case is checked before any golden is written: a refused folder changes nothing.

@@ -6,9 +6,9 @@
 #include "case/resolve_lines.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/batch_args.h"
 #include "cli/options.h"
-#include "cli/run_cases.h"
-#include "core/json_guard.h"
+#include "run/run_folder.h"
 
 namespace taa::cli {
 
@@ -24,23 +24,16 @@ const char* kCoverageUsage =
     "  listed last as holes.\n"
     "  --fail-on-holes: exit 1 when there is one.";
 
-// Each case's log from a results.json, read as a file of another run's folder (inside it after
-// resolving links, regular: a FIFO is refused, never waited on; bounded). A key of the wrong
-// type or a traced constant that is no number is bad input naming the file and the key.
+// Each case's log from a results.json, read through the one reader of a run's folder (inside
+// it after resolving links, regular: a FIFO is refused, never waited on; bounded; every key of
+// the format). A traced constant that is no number is bad input naming the file and the key.
 std::map<std::string, std::vector<std::string>> runLogs(const std::string& file) {
   const std::string fix = "run `taa-harness run CASES --out DIR` and pass DIR/results.json";
-  const std::string text = readResultsText(file, fix);
-  if (const std::string problem = jsonStructureProblem(text); !problem.empty())
-    throw UsageError("--results " + file + ": " + problem);
-  nlohmann::json j;
+  const run::RunResults results = run::RunFolder::ofResultsFile(file).readResults(fix);
+  std::vector<std::pair<std::string, std::vector<std::string>>> logs;
+  for (const auto& c : results.cases) logs.emplace_back(c.name, c.log);
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError("--results " + file + ": not valid JSON (" +
-                     jsonErrorWithoutContent(e.what()) + "); " + fix);
-  }
-  try {
-    return cases::runLogsFromResults(j);
+    return cases::checkedRunLogs(logs);
   } catch (const std::invalid_argument& e) {
     throw UsageError("--results " + file + ": " + e.what() +
                      "; pass the results.json that `run` writes");
@@ -113,7 +106,7 @@ int cmdCoverage(const Args& args) {
   const auto a = parseArgs(args, {"--json", "--fail-on-holes"}, {"--results"}, kCoverageUsage);
   if (a.positional.empty())
     throw UsageError(std::string("no case given\nusage: ") + kCoverageUsage);
-  const CaseBatch batch = loadBatch(a.positional, "");
+  const run::CaseBatch batch = loadBatch(a.positional, "");
   std::vector<spec::CheckedCase> specs;
   for (const auto& c : batch.cases) specs.push_back(c.spec);
   const auto settings = cases::settingValueCoverage(specs);

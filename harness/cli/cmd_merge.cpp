@@ -6,14 +6,14 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "cli/run_cases.h"
-#include "core/contained_file.h"
+#include "core/input_file.h"
 #include "core/output_file.h"
 #include "report/html_report.h"
 #include "report/junit.h"
 #include "run/console.h"
 #include "run/merge.h"
 #include "run/results_seal.h"
+#include "run/run_folder.h"
 
 namespace taa::cli {
 
@@ -45,33 +45,30 @@ void refuseOutInShard(const fs::path& out, const fs::path& shard) {
                      ": merge into a folder of its own, e.g. --out out/merged");
 }
 
-// Copies the case folder `rel` of a shard into OUT: only regular files and folders, each inside
-// the shard's folder after resolving links (readContainedFile); a link, FIFO or device there is
-// no output of `run`, so the shard is refused (exit 2) rather than read through.
-void copyCaseFolder(const fs::path& shard, const fs::path& rel, const fs::path& out) {
+// Copies the case folder `rel` of a shard into OUT: only regular files and folders, each read
+// under the run folder's input-path rule; a link, FIFO or device there is no output of `run`,
+// so the shard is refused (exit 2) rather than read through.
+void copyCaseFolder(const run::RunFolder& shard, const fs::path& rel, const fs::path& out) {
   std::error_code ec;
-  const auto st = fs::symlink_status(shard / rel, ec);
+  const fs::path from = shard.root() / rel;
+  const auto st = fs::symlink_status(from, ec);
   if (fs::is_symlink(st))
-    throw UsageError((shard / rel).string() +
+    throw UsageError(from.string() +
                      " is a symbolic link; a shard's case folders are "
                      "folders `run` wrote: rerun that shard");
   if (!fs::is_directory(st)) return;
   createOutputDirectory(out / rel);
   std::vector<fs::path> entries;
-  for (const auto& e : fs::directory_iterator(shard / rel)) entries.push_back(e.path().filename());
+  for (const auto& e : fs::directory_iterator(from)) entries.push_back(e.path().filename());
   std::sort(entries.begin(), entries.end());
   for (const auto& name : entries) {
     const fs::path child = rel / name;
-    if (fs::is_directory(fs::symlink_status(shard / child, ec))) {
+    if (fs::is_directory(fs::symlink_status(shard.root() / child, ec))) {
       copyCaseFolder(shard, child, out);
       continue;
     }
-    try {
-      writeFileAtomically(out / child, readContainedFile(shard, child, kMaxRunImageBytes,
-                                                         "a file of the shard's case folder"));
-    } catch (const InputFileError& e) {
-      throw UsageError(std::string(e.what()) + "; rerun that shard");
-    }
+    writeFileAtomically(out / child, shard.readFile(child, "a file of the shard's case folder",
+                                                    "rerun that shard"));
   }
 }
 
@@ -83,14 +80,10 @@ void checkImagePaths(const run::ShardOutput& s) {
       const fs::path p(image);
       if (p.is_absolute() || std::find(p.begin(), p.end(), "..") != p.end() ||
           p.begin() == p.end() || *p.begin() != c.name)
-        throw UsageError((s.dir / "results.json").string() + ": case " + c.name + ": image path '" +
+        throw UsageError(run::RunFolder(s.dir).resultsFile().string() + ": case " + c.name + ": image path '" +
                          image.substr(0, 200) + "' is not inside the case's folder " + c.name +
                          "/: the file was edited, or not written by `run`; rerun that shard");
-      try {
-        checkContainedFile(s.dir, p, kMaxRunImageBytes, "case " + c.name + "'s image");
-      } catch (const InputFileError& e) {
-        throw UsageError(std::string(e.what()) + "; rerun that shard");
-      }
+      run::RunFolder(s.dir).checkFile(p, "case " + c.name + "'s image", "rerun that shard");
     }
 }
 }  // namespace
@@ -101,52 +94,49 @@ int cmdMerge(const Args& args) {
     throw UsageError(std::string("no shard output given\nusage: ") + kMergeUsage);
   if (!a.values.count("--out"))
     throw UsageError(std::string("--out DIR is required\nusage: ") + kMergeUsage);
-  const fs::path out = a.value("--out");
+  const run::RunFolder merged(a.value("--out"));
+  const fs::path& out = merged.root();
   std::vector<run::ShardOutput> shards;
   std::string unsealed;  // why the merged results cannot be sealed, "" when they can
   for (const auto& dir : a.positional) refuseOutInShard(out, dir);
   for (const auto& dir : a.positional) {
-    const fs::path results = fs::path(dir) / "results.json";
+    const run::RunFolder shard(dir);
     const std::string fix = "pass the --out folder of a `taa-harness run --shard`";
-    const std::string text = readResultsText(results, fix);
+    const std::string text = shard.readResultsText(fix);
     // The merged file is sealed only when every shard's is: merging must not launder an
     // edited shard into a file a later --verdict-from trusts.
-    if (const std::string why = run::sealProblem(results, text); !why.empty() && unsealed.empty())
+    if (const std::string why = run::sealProblem(shard.resultsFile(), text);
+        !why.empty() && unsealed.empty())
       unsealed = why;
-    shards.push_back({dir, parseResultsText(text, results, fix)});
+    shards.push_back({dir, shard.parseResults(text, fix)});
   }
-  run::RunResults merged;
-  try {
-    merged = run::mergeShards(shards);
-  } catch (const run::MergeError& e) {
-    throw UsageError(e.what());
-  }
+  const run::RunResults results = run::mergeShards(shards);  // MergeError: bad input, exit 2
   for (const auto& s : shards) checkImagePaths(s);
   createOutputDirectory(out);
   // Each case's images, at the paths its results give relative to the output folder.
   for (const auto& s : shards)
-    for (const auto& c : s.results.cases) copyCaseFolder(s.dir, c.name, out);
-  const std::string text = run::toJson(merged).dump(1) + "\n";
+    for (const auto& c : s.results.cases) copyCaseFolder(run::RunFolder(s.dir), c.name, out);
+  const std::string text = run::toJson(results).dump(1) + "\n";
   if (unsealed.empty())
-    unsealed = run::writeSealedResults(out / "results.json", text);
+    unsealed = run::writeSealedResults(merged.resultsFile(), text);
   else
-    run::writeUnsealedResults(out / "results.json", text);
+    run::writeUnsealedResults(merged.resultsFile(), text);
   if (!unsealed.empty())
-    std::cerr << "note: " << (out / "results.json").string() << " is not sealed (" << unsealed
+    std::cerr << "note: " << merged.resultsFile().string() << " is not sealed (" << unsealed
               << "); a later run --verdict-from renders its cases instead of reusing them\n";
-  report::writeJUnit(out / "junit.xml", merged);
-  report::writeHtmlReport(out / "report.html", merged);
+  report::writeJUnit(merged.junitFile(), results);
+  report::writeHtmlReport(merged.reportFile(), results);
   bool failed = false;
   double seconds = 0.0;
-  for (const auto& c : merged.cases) {
+  for (const auto& c : results.cases) {
     run::printCase(std::cout, c);
     failed |= run::caseFailed(c);
     seconds += c.seconds;
   }
-  run::printSummary(std::cout, merged, seconds);
-  std::cout << "merge: " << shards.size() << " shard(s) of " << merged.suite.cases.size()
+  run::printSummary(std::cout, results, seconds);
+  std::cout << "merge: " << shards.size() << " shard(s) of " << results.suite.cases.size()
             << " cases; the summary's time is the cases' own, added up\n";
-  std::cout << "report: " << (out / "report.html").string() << "\n";
+  std::cout << "report: " << merged.reportFile().string() << "\n";
   return failed ? kRegression : kPass;
 }
 

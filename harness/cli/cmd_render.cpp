@@ -7,11 +7,11 @@
 #include "case/case_loader.h"
 #include "cli/commands.h"
 #include "cli/options.h"
-#include "golden/manifest.h"
-#include "cli/run_cases.h"
+#include "cli/batch_args.h"
 #include "cli/run_support.h"
 #include "core/image_io.h"
 #include "core/output_file.h"
+#include "run/run_folder.h"
 
 namespace taa::cli {
 
@@ -32,7 +32,7 @@ int cmdRender(const Args& args) {
   const auto loaded = cases::loadCase(a.positional[0]);
   const auto& spec = loaded.spec;
   refuseOutputInGoldens(a.value("--out"), run::defaultGoldensRoot(spec.file));
-  const fs::path dir = fs::path(a.value("--out")) / spec.name;
+  const fs::path dir = run::RunFolder(a.value("--out")).caseFolder(spec.name);
   createOutputDirectory(dir);
 
   RenderOptions options;
@@ -51,17 +51,17 @@ int cmdRender(const Args& args) {
     for (const auto& [pass, ms] : r.gpuMs) j["gpu_ms"][pass] = ms;
     for (const auto& [name, value] : r.stats) j["stats"][name] = value;
     if (r.hasImages) {
-      const std::string base = golden::frameBase(r.frame);
-      writeExr(dir / (base + ".exr"), r.color);
-      writePng(dir / (base + ".png"), r.color);
+      const int f = r.frame;
+      writeExr(dir / run::frameFileName(f, run::FrameFile::Exr), r.color);
+      writePng(dir / run::frameFileName(f, run::FrameFile::Png), r.color);
       // Depth, ids and velocities lose meaning in half floats; the colour buffers do not.
       for (const auto& aux : r.aux) {
         const bool exact = aux.name == "depth" || aux.name == "material_id" || aux.name == "velocity";
-        (exact ? writeExrFloat : writeExr)(dir / (base + "." + aux.name + ".exr"), aux.image);
+        (exact ? writeExrFloat : writeExr)(dir / run::frameCaptureName(f, aux.name), aux.image);
       }
       if (r.hasReference) {
-        writeExrFloat(dir / (base + ".reference.exr"), r.reference);
-        writePng(dir / (base + ".reference.png"), r.reference);
+        writeExrFloat(dir / run::frameFileName(f, run::FrameFile::ReferenceExr), r.reference);
+        writePng(dir / run::frameFileName(f, run::FrameFile::ReferencePng), r.reference);
       }
       j["sha256"] = r.colorSha256;
       std::cout << spec.name << " frame " << r.frame << " sha256 " << r.colorSha256 << "\n";

@@ -10,7 +10,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/options.h"
-#include "cli/run_cases.h"
+#include "cli/batch_args.h"
 #include "compare/metric_table.h"
 #include "compare/tolerance.h"
 #include "core/output_file.h"
@@ -22,6 +22,7 @@
 #include "run/case_runner.h"
 #include "run/console.h"
 #include "run/results_seal.h"
+#include "run/run_folder.h"
 
 namespace taa::cli {
 
@@ -96,15 +97,17 @@ void writeResults(const fs::path& file, const std::string& text) {
 // their lines and verdict come from it instead of a render, and OUT/results.json holds them
 // (so a case test can take its verdict from a shard that took its own from the main job).
 // Empty when it does not: then the cases render (with a note when the seal is why).
-std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, const fs::path& out,
+std::optional<int> earlierVerdict(const run::CaseBatch& batch, const fs::path& from,
+                                  const run::RunFolder& out,
                                   const std::string& build, const std::string& device,
                                   const fs::path& goldensRoot) {
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(from, ec))) return std::nullopt;
   const std::string fix = "pass the results.json of an earlier run";
-  const std::string text = readResultsText(from, fix);
+  const run::RunFolder earlierFolder = run::RunFolder::ofResultsFile(from);
+  const std::string text = earlierFolder.readResultsText(fix);
   // A file that is no results at all is bad input (exit 2), sealed or not.
-  run::RunResults earlier = parseResultsText(text, from, fix);
+  run::RunResults earlier = earlierFolder.parseResults(text, fix);
   if (const std::string why = run::sealProblem(from, text); !why.empty()) {
     std::cerr << "note: --verdict-from " << from.string() << ": not reused (" << why
               << "); the cases render\n";
@@ -134,14 +137,14 @@ std::optional<int> earlierVerdict(const CaseBatch& batch, const fs::path& from, 
     run::printCase(std::cout, c);
     failed |= run::caseFailed(c);
   }
-  if (!fs::equivalent(from, out / "results.json", ec)) {
+  if (!fs::equivalent(from, out.resultsFile(), ec)) {
     earlier.cases = std::move(found);
     earlier.suite = batch.suite;
     earlier.notRun = 0;
-    writeResults(out / "results.json", run::toJson(earlier).dump(1) + "\n");
+    writeResults(out.resultsFile(), run::toJson(earlier).dump(1) + "\n");
   }
   // A shard that took its own verdicts from the main job has no report; the main job's is it.
-  const fs::path report = from.parent_path() / "report.html";
+  const fs::path report = earlierFolder.reportFile();
   std::cout << "verdict: from " << from.string() << " (a run of this build"
             << (fs::exists(report, ec) ? "; its report: " + report.string() : std::string()) << ")\n";
   return failed ? kRegression : kPass;
@@ -166,8 +169,9 @@ int cmdRun(const Args& args) {
     }
     above = numberOption(a, "--above", -1e300, 1e300);
   }
-  CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
-  const fs::path out = a.value("--out", "out");
+  run::CaseBatch batch = loadBatch(a.positional, a.value("--shard"));
+  const run::RunFolder folder(a.value("--out", "out"));
+  const fs::path& out = folder.root();
   for (const auto& c : batch.cases)
     refuseOutputInGoldens(out, a.values.count("--goldens") ? fs::path(a.value("--goldens"))
                                                   : run::defaultGoldensRoot(c.spec.file));
@@ -175,13 +179,13 @@ int cmdRun(const Args& args) {
   const bool requireExact = a.has("--require-exact") || requireExactFromEnvironment();
   if (a.values.count("--verdict-from"))
     if (const auto verdict =
-            earlierVerdict(batch, a.value("--verdict-from"), out,
+            earlierVerdict(batch, a.value("--verdict-from"), folder,
                            run::buildIdentity(a.value("--device"), runningInCi(), requireExact),
                            a.value("--device"), a.value("--goldens")))
       return *verdict;
   const auto start = std::chrono::steady_clock::now();
-  const CpuTimes cpuBefore = cpuTimes();
-  BatchOptions options;
+  const run::CpuTimes cpuBefore = run::cpuTimes();
+  run::BatchOptions options;
   options.jobs = parseJobs(a.value("--jobs"));
   options.shareReferences = !a.has("--no-reference-cache");
   options.run.outDir = out;
@@ -191,21 +195,22 @@ int cmdRun(const Args& args) {
   options.failFast = a.has("--fail-fast");
   options.run.missingGoldenFails = runningInCi();
   options.run.requireExact = requireExact;
-  const auto outcome = runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
+  const auto outcome =
+      run::runBatch(batch, options, [](const run::CaseResult& c) { run::printCase(std::cout, c); });
 
-  writeResults(out / "results.json", run::toJson(outcome.results).dump(1) + "\n");
-  report::writeJUnit(out / "junit.xml", outcome.results);
-  report::writeHtmlReport(out / "report.html", outcome.results);
+  writeResults(folder.resultsFile(), run::toJson(outcome.results).dump(1) + "\n");
+  report::writeJUnit(folder.junitFile(), outcome.results);
+  report::writeHtmlReport(folder.reportFile(), outcome.results);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run::printSummary(std::cout, outcome.results, seconds);
-  std::cout << throughputLine(outcome, seconds, cpuBefore) << "\n";
+  std::cout << run::throughputLine(outcome, seconds, cpuBefore) << "\n";
   if (outcome.notRun > 0)
     std::cout << "--fail-fast: stopped at the first failing case, " << outcome.notRun << " of "
               << batch.cases.size() << " cases not run\n";
-  std::cout << "report: " << (out / "report.html").string() << "\n";
-  if (outcome.exitCode == kBadInput || outcome.exitCode == kEnvironment) return outcome.exitCode;
+  std::cout << "report: " << folder.reportFile().string() << "\n";
+  if (outcome.verdict == run::BatchVerdict::BadInput) return exitCodeOf(outcome.verdict);
   if (a.values.count("--metric")) return metricVerdict(outcome.results, a.value("--metric"), above);
-  return outcome.exitCode;
+  return exitCodeOf(outcome.verdict);
 }
 
 }  // namespace taa::cli

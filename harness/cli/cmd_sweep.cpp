@@ -11,7 +11,7 @@
 #include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "core/input_file.h"
-#include "cli/run_cases.h"
+#include "cli/batch_args.h"
 #include "sweep/sweep.h"
 
 namespace taa::cli {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -38,7 +39,12 @@ const std::map<std::string, Command>& commands() {
 
 void usage(std::ostream& out) {
   out << "usage: taa-harness <command> [args]\n\ncommands:\n";
-  for (const auto& [name, cmd] : commands()) out << "  " << name << std::string(12 - name.size(), ' ') << cmd.summary << "\n";
+  // Names padded to the longest (and two spaces beyond), so a longer name never wraps.
+  size_t width = 0;
+  for (const auto& entry : commands()) width = std::max(width, entry.first.size());
+  for (const auto& [name, cmd] : commands())
+    out << "  " << name << std::string(std::max<size_t>(width + 2, 12) - name.size(), ' ')
+        << cmd.summary << "\n";
   out << "\n  --version   the version and the folder SPIR-V is loaded from\n";
   out << "\nexit codes: 0 pass, 1 regression, 2 bad input, 3 environment (no Vulkan device, ...)\n";
 }

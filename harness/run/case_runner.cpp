@@ -72,7 +72,7 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
   result.status = CaseStatus::Pass;
   const auto env = golden::currentEnvironment(device.identity());
   result.fingerprint = env.fingerprint();
-  fs::create_directories(options.outDir / spec.name);
+  fs::create_directories(RunFolder(options.outDir).caseFolder(spec.name));
 
   const auto scene = buildCaseScene(spec);
   InvariantRun checks(spec);
@@ -138,14 +138,14 @@ CaseResult runCase(Device& device, const cases::LoadedCase& loaded, const RunOpt
     for (auto& fc : result.frames)
       if (const auto it = abOutputs.find(fc.frame);
           it != abOutputs.end() && !fc.images.actual.empty())
-        writeAbImages(options.outDir / spec.name, spec.name, fc, it->second,
+        writeAbImages(RunFolder(options.outDir), spec.name, fc, it->second,
                       "preset " + spec.report.ab);
   } else if (options.writeImages) {
     for (const auto& [frame, image] : outputs) {
       FrameComparison fc;
       fc.frame = frame;
       fc.status = FrameStatus::MissingGolden;
-      writeFrameImages(options.outDir / spec.name, spec.name, fc, image, nullptr, nullptr,
+      writeFrameImages(RunFolder(options.outDir), spec.name, fc, image, nullptr, nullptr,
                        spec.report.zoom);
     }
   }

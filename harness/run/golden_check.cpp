@@ -11,7 +11,6 @@
 namespace taa::run {
 
 namespace fs = std::filesystem;
-using golden::frameBase;
 
 namespace {
 
@@ -30,20 +29,34 @@ int zoomFactor(int width) {
 
 }  // namespace
 
-void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComparison& fc,
+namespace {
+
+// One frame's files in a case's folder of the run: where each is written, and the name
+// results.json and the report give it.
+struct FrameFiles {
+  RunFolder out;
+  std::string caseName;
+  int frame;
+  fs::path path(FrameFile kind) const { return out.caseFolder(caseName) / frameFileName(frame, kind); }
+  std::string rel(FrameFile kind) const { return RunFolder::caseFile(caseName, frame, kind); }
+  std::string png(FrameFile kind, const Image& image) const {
+    writePng(path(kind), image);
+    return rel(kind);
+  }
+};
+
+}  // namespace
+
+void writeFrameImages(const RunFolder& out, const std::string& caseName, FrameComparison& fc,
                       const Image& actual, const Image* golden, const Image* errorMap,
                       const spec::ZoomSpec& zoom) {
-  const std::string base = frameBase(fc.frame);
-  writeExr(caseDir / (base + ".exr"), actual);
-  writePng(caseDir / (base + ".png"), actual);
-  fc.images.actual = rel + "/" + base + ".png";
-  if (golden) {
-    writePng(caseDir / (base + ".golden.png"), *golden);
-    fc.images.golden = rel + "/" + base + ".golden.png";
-  }
+  const FrameFiles files{out, caseName, fc.frame};
+  writeExr(files.path(FrameFile::Exr), actual);
+  fc.images.actual = files.png(FrameFile::Png, actual);
+  if (golden) fc.images.golden = files.png(FrameFile::GoldenPng, *golden);
   if (golden && errorMap) {
-    writePngLinear8(caseDir / (base + ".diff.png"), compare::heatmap(*errorMap));
-    fc.images.diff = rel + "/" + base + ".diff.png";
+    writePngLinear8(files.path(FrameFile::DiffPng), compare::heatmap(*errorMap));
+    fc.images.diff = files.rel(FrameFile::DiffPng);
   }
   // The region the case chose (report.zoom), or else the worst tenth of the frame, magnified
   // so single pixels are visible.
@@ -69,15 +82,11 @@ void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComp
     return compare::upscaleNearest(
         compare::crop(img, region.x, region.y, region.width, region.height), factor);
   };
-  writePng(caseDir / (base + ".zoom_actual.png"), zoomed(actual));
-  fc.images.zoomActual = rel + "/" + base + ".zoom_actual.png";
-  if (golden) {
-    writePng(caseDir / (base + ".zoom_golden.png"), zoomed(*golden));
-    fc.images.zoomGolden = rel + "/" + base + ".zoom_golden.png";
-  }
+  fc.images.zoomActual = files.png(FrameFile::ZoomActualPng, zoomed(actual));
+  if (golden) fc.images.zoomGolden = files.png(FrameFile::ZoomGoldenPng, zoomed(*golden));
   if (golden && errorMap) {
-    writePngLinear8(caseDir / (base + ".zoom_diff.png"), zoomed(compare::heatmap(*errorMap)));
-    fc.images.zoomDiff = rel + "/" + base + ".zoom_diff.png";
+    writePngLinear8(files.path(FrameFile::ZoomDiffPng), zoomed(compare::heatmap(*errorMap)));
+    fc.images.zoomDiff = files.rel(FrameFile::ZoomDiffPng);
   }
   fc.images.zoomX = region.x;
   fc.images.zoomY = region.y;
@@ -85,17 +94,16 @@ void writeFrameImages(const fs::path& caseDir, const std::string& rel, FrameComp
   fc.images.zoomH = region.height;
 }
 
-void writeAbImages(const fs::path& caseDir, const std::string& rel, FrameComparison& fc,
+void writeAbImages(const RunFolder& out, const std::string& caseName, FrameComparison& fc,
                    const Image& b, const std::string& label) {
-  const std::string base = frameBase(fc.frame);
-  writePng(caseDir / (base + ".ab.png"), b);
-  fc.images.ab = rel + "/" + base + ".ab.png";
+  const FrameFiles files{out, caseName, fc.frame};
+  fc.images.ab = files.png(FrameFile::AbPng, b);
   fc.images.abLabel = label;
   const auto& im = fc.images;
   if (im.zoomW <= 0 || im.zoomH <= 0) return;
   const Image crop = compare::crop(b, im.zoomX, im.zoomY, im.zoomW, im.zoomH);
-  writePng(caseDir / (base + ".zoom_ab.png"), compare::upscaleNearest(crop, zoomFactor(im.zoomW)));
-  fc.images.zoomAb = rel + "/" + base + ".zoom_ab.png";
+  fc.images.zoomAb =
+      files.png(FrameFile::ZoomAbPng, compare::upscaleNearest(crop, zoomFactor(im.zoomW)));
 }
 
 namespace {
@@ -216,65 +224,70 @@ bool GoldenCheck::compareSequence(CaseResult& result) {
         positive_.environment.fingerprint() + "): " + firstDiffWhy_ +
         (f > 0 ? "; frames 0-" + std::to_string(f - 1) + " are within tolerance" : "");
   }
-  if (!options_.writeImages) return true;
-  const fs::path caseDir = options_.outDir / spec_.name;
-  const std::string base = frameBase(f);
-  writeExr(caseDir / (base + ".exr"), firstDiffImage_);
-  writePng(caseDir / (base + ".png"), firstDiffImage_);
-  d.actual = spec_.name + "/" + base + ".png";
+  return true;
+}
+
+void GoldenCheck::writeFirstDifference(FirstDifference& d) const {
+  const FrameFiles files{RunFolder(options_.outDir), spec_.name, d.frame};
+  writeExr(files.path(FrameFile::Exr), firstDiffImage_);
+  d.actual = files.png(FrameFile::Png, firstDiffImage_);
   // The stored golden frames around it: what the sequence looked like where it was right.
   const golden::GoldenFrame* before = nullptr;
   const golden::GoldenFrame* after = nullptr;
   for (const auto& gf : goldens_->manifest.frames) {
-    if (gf.frame <= f && (!before || gf.frame > before->frame)) before = &gf;
-    if (gf.frame >= f && (!after || gf.frame < after->frame)) after = &gf;
+    if (gf.frame <= d.frame && (!before || gf.frame > before->frame)) before = &gf;
+    if (gf.frame >= d.frame && (!after || gf.frame < after->frame)) after = &gf;
   }
   for (const auto* gf : {before, after}) {
     if (!gf || (gf == after && after == before)) continue;
-    const std::string name = frameBase(gf->frame) + ".golden.png";
-    writePng(caseDir / name, goldens_->load(*gf));
-    d.goldenNeighbours.push_back({gf->frame, spec_.name + "/" + name});
+    const FrameFiles neighbour{files.out, spec_.name, gf->frame};
+    d.goldenNeighbours.push_back(
+        {gf->frame, neighbour.png(FrameFile::GoldenPng, goldens_->load(*gf))});
   }
-  return true;
 }
 
 CaseStatus GoldenCheck::finish(const std::map<int, Image>& outputs, const std::string& caseSha,
                                CaseResult& result) {
-  const fs::path caseDir = options_.outDir / spec_.name;
   result.blessCommand = blessCommandFor(spec_);
   result.frameSha256 = sequence_;
   result.frameSignatures = signatures_;
-  if (!problem_.empty() || !goldens_) {
-    // Unusable goldens are never compared with; missing ones are a skip outside CI.
-    for (const auto& [frame, image] : outputs) {
-      FrameComparison fc;
-      fc.frame = frame;
-      fc.status = FrameStatus::MissingGolden;
-      fc.actualSha256 = sequence_.at(size_t(frame));
-      if (options_.writeImages)
-        writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
-      result.frames.push_back(std::move(fc));
-    }
-    if (!problem_.empty()) {
-      result.message = "goldens cannot be used: " + problem_;
-      return CaseStatus::Fail;
-    }
-    result.message = "no goldens in " + dir_.string() + "; look at the frames, then bless them";
-    if (!options_.missingGoldenFails) return CaseStatus::NoGolden;
-    result.message += " (CI=true: a case without goldens fails in CI)";
+  // Unusable goldens are never compared with: every stored frame is then a missing golden.
+  const bool usable = problem_.empty() && goldens_;
+  for (const auto& [frame, image] : outputs) {
+    StoredFrame stored = usable ? judgeStoredFrame(frame, image) : StoredFrame{missingGolden(frame)};
+    if (options_.writeImages && stored.drawn)
+      writeFrameImages(RunFolder(options_.outDir), spec_.name, stored.comparison, image,
+                       stored.golden, stored.golden ? &stored.errorMap : nullptr,
+                       spec_.report.zoom);
+    result.frames.push_back(std::move(stored.comparison));
+  }
+  if (!usable) return verdictWithoutGoldens(result);
+  const CaseStatus status = verdictWithGoldens(caseSha, result);
+  if (options_.writeImages && firstDiff_ >= 0) writeFirstDifference(result.firstDifference);
+  return status;
+}
+
+CaseStatus GoldenCheck::verdictWithoutGoldens(CaseResult& result) const {
+  if (!problem_.empty()) {
+    result.message = "goldens cannot be used: " + problem_;
     return CaseStatus::Fail;
   }
+  // Missing goldens are a skip outside CI.
+  result.message = "no goldens in " + dir_.string() + "; look at the frames, then bless them";
+  if (!options_.missingGoldenFails) return CaseStatus::NoGolden;
+  result.message += " (CI=true: a case without goldens fails in CI)";
+  return CaseStatus::Fail;
+}
+
+CaseStatus GoldenCheck::verdictWithGoldens(const std::string& caseSha, CaseResult& result) {
   const auto& m = goldens_->manifest;
   result.goldenFingerprint = positive_.environment.fingerprint();
   result.goldenMode = ownPositive_ ? "exact" : "tolerance";
-  bool anyFailed = false;
+  bool anyFailed = std::any_of(result.frames.begin(), result.frames.end(), [](const auto& f) {
+    return f.status == FrameStatus::Failed || f.status == FrameStatus::MissingGolden;
+  });
   std::vector<std::string> notes;
   const bool missingPositive = !ownPositive_ && options_.requireExact;
-  for (const auto& [frame, image] : outputs) {
-    result.frames.push_back(compareStoredFrame(frame, image));
-    anyFailed |= result.frames.back().status == FrameStatus::Failed ||
-                 result.frames.back().status == FrameStatus::MissingGolden;
-  }
   if (ownPositive_ && positive_.sequence.empty()) {
     notes.push_back(
         (dir_ / "manifest.json").string() +
@@ -330,19 +343,22 @@ std::string GoldenCheck::requireExactNote() const {
          spec_.file.string() + " --reason \"...\"`";
 }
 
-FrameComparison GoldenCheck::compareStoredFrame(int frame, const Image& image) {
-  const fs::path caseDir = options_.outDir / spec_.name;
+FrameComparison GoldenCheck::missingGolden(int frame) const {
   FrameComparison fc;
   fc.frame = frame;
+  fc.status = FrameStatus::MissingGolden;
   fc.actualSha256 = sequence_.at(size_t(frame));
+  return fc;
+}
+
+GoldenCheck::StoredFrame GoldenCheck::judgeStoredFrame(int frame, const Image& image) const {
+  StoredFrame stored{missingGolden(frame)};
+  FrameComparison& fc = stored.comparison;
   fc.toleranceMode = !ownPositive_;
   const golden::GoldenFrame* gf = goldens_->manifest.find(frame);
   if (!gf) {
-    fc.status = FrameStatus::MissingGolden;
     fc.failures.push_back("frame " + std::to_string(frame) + " is checked but was never blessed");
-    if (options_.writeImages)
-      writeFrameImages(caseDir, spec_.name, fc, image, nullptr, nullptr, spec_.report.zoom);
-    return fc;
+    return stored;
   }
   // The stored EXR is the primary positive's; another environment's positive has only its hash.
   const auto& own = positive_.sequence;
@@ -354,9 +370,10 @@ FrameComparison GoldenCheck::compareStoredFrame(int frame, const Image& image) {
                           std::to_string(image.height) + " differs from the golden's " +
                           std::to_string(goldenImage.width) + "x" +
                           std::to_string(goldenImage.height));
-    return fc;
+    stored.drawn = false;  // no heatmap of images of two sizes
+    return stored;
   }
-  const auto measured =
+  auto measured =
       compare::measureAgainstGolden(goldenImage, image, spec_.checks.tolerance.pixel_threshold);
   fc.metrics = measured.metrics;
   if (fc.actualSha256 == fc.goldenSha256) {
@@ -370,10 +387,9 @@ FrameComparison GoldenCheck::compareStoredFrame(int frame, const Image& image) {
     fc.failures = compare::toleranceViolations(fc.metrics, spec_.checks.tolerance);
     fc.status = fc.failures.empty() ? FrameStatus::WithinTolerance : FrameStatus::Failed;
   }
-  if (options_.writeImages)
-    writeFrameImages(caseDir, spec_.name, fc, image, &goldenImage, &measured.errorMap,
-                     spec_.report.zoom);
-  return fc;
+  stored.golden = &goldenImage;
+  stored.errorMap = std::move(measured.errorMap);
+  return stored;
 }
 
 }  // namespace taa::run

@@ -15,21 +15,22 @@
 #include "golden/golden_store.h"
 #include "run/case_runner.h"
 #include "run/results.h"
+#include "run/run_folder.h"
 #include "spec/checked_case.h"
 
 namespace taa::run {
 
-// The images of checked frame `fc.frame` beside the report (actual; golden, diff heatmap and
-// magnified worst region when there is a golden; the region `zoom` names instead when it has
-// a size, with or without a golden), with their paths recorded in `fc`.
-void writeFrameImages(const std::filesystem::path& caseDir, const std::string& rel,
-                      FrameComparison& fc, const Image& actual, const Image* golden,
-                      const Image* errorMap, const spec::ZoomSpec& zoom = {});
+// The images of checked frame `fc.frame` in the case's folder of the run (actual; golden, diff
+// heatmap and magnified worst region when there is a golden; the region `zoom` names instead
+// when it has a size, with or without a golden), with their paths recorded in `fc`.
+void writeFrameImages(const RunFolder& out, const std::string& caseName, FrameComparison& fc,
+                      const Image& actual, const Image* golden, const Image* errorMap,
+                      const spec::ZoomSpec& zoom = {});
 
 // report.ab: the B side's output of the same frame, and its crop of the region writeFrameImages
 // magnified, recorded in `fc` under `label`.
-void writeAbImages(const std::filesystem::path& caseDir, const std::string& rel,
-                   FrameComparison& fc, const Image& b, const std::string& label);
+void writeAbImages(const RunFolder& out, const std::string& caseName, FrameComparison& fc,
+                   const Image& b, const std::string& label);
 
 class GoldenCheck {
  public:
@@ -44,17 +45,30 @@ class GoldenCheck {
 
   // The verdict, with result.frames, message, blessCommand, goldenFingerprint and
   // firstDifference filled in: Pass, NoGolden (or Fail when options.missingGoldenFails),
-  // Stale (changed pixels of a case edited since its bless) or Fail.
+  // Stale (changed pixels of a case edited since its bless) or Fail. Then, with
+  // options.writeImages, the frames' images: the verdict never depends on them.
   CaseStatus finish(const std::map<int, Image>& outputs, const std::string& caseSha,
                     CaseResult& result);
 
  private:
-  // Fills result.firstDifference (and writes its images) when the sequence differs from
-  // the golden's; returns whether it does.
+  // A stored frame's verdict and what its images are drawn from.
+  struct StoredFrame {
+    FrameComparison comparison;
+    const Image* golden = nullptr;  // the stored EXR compared with, if any
+    Image errorMap;                 // per pixel, when compared
+    bool drawn = true;              // false: no image of it (sizes differ)
+  };
+  CaseStatus verdictWithoutGoldens(CaseResult& result) const;
+  CaseStatus verdictWithGoldens(const std::string& caseSha, CaseResult& result);
+  // Fills result.firstDifference when the sequence differs from the golden's; returns whether
+  // it does.
   bool compareSequence(CaseResult& result);
+  // The first differing frame's image and the golden frames around it, named in `d`.
+  void writeFirstDifference(FirstDifference& d) const;
+  FrameComparison missingGolden(int frame) const;
   // A stored (output) frame against its golden: by hash where this environment has a positive,
-  // by the case's tolerances against the primary's EXR elsewhere; writes its images.
-  FrameComparison compareStoredFrame(int frame, const Image& image);
+  // by the case's tolerances against the primary's EXR elsewhere.
+  StoredFrame judgeStoredFrame(int frame, const Image& image) const;
   std::string toleranceNote() const;
   std::string requireExactNote() const;
 

@@ -4,17 +4,18 @@
 #pragma once
 
 #include <filesystem>
-#include <stdexcept>
 #include <vector>
 
 #include "run/results.h"
+#include "run/run_folder.h"
 
 namespace taa::run {
 
-// Why shards cannot be merged, naming the shard folders and the fix.
-class MergeError : public std::runtime_error {
+// Why shards cannot be merged, naming the shard folders and the fix: bad input (exit 2), the
+// shards' folders being the command's arguments.
+class MergeError : public RunFolderError {
  public:
-  using std::runtime_error::runtime_error;
+  using RunFolderError::RunFolderError;
 };
 
 struct ShardOutput {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "golden/environment.h"
+#include "spec/fields.h"
 
 namespace taa::run {
 
@@ -37,6 +38,10 @@ struct FrameImages {
 };
 
 enum class FrameStatus { Exact, WithinTolerance, Failed, MissingGolden };
+// Their names in results.json, the console and the report: one list (toString reads it).
+TAA_ENUM_NAMES(FrameStatus, {FrameStatus::Exact, "exact"},
+               {FrameStatus::WithinTolerance, "within_tolerance"}, {FrameStatus::Failed, "failed"},
+               {FrameStatus::MissingGolden, "missing_golden"})
 
 struct FrameComparison {
   int frame = 0;
@@ -59,6 +64,9 @@ struct InvariantResult {
 // In order of severity: a case's status is the worst of its checks (worse()). NoGolden is a
 // skip: a case without goldens whose other checks pass (outside CI; under CI=true it is Fail).
 enum class CaseStatus { Pass, NoGolden, Stale, Fail, Error };
+TAA_ENUM_NAMES(CaseStatus, {CaseStatus::Pass, "pass"}, {CaseStatus::NoGolden, "no_golden"},
+               {CaseStatus::Stale, "stale"}, {CaseStatus::Fail, "fail"},
+               {CaseStatus::Error, "error"})
 
 CaseStatus worse(CaseStatus a, CaseStatus b);
 
@@ -151,6 +159,10 @@ struct RunResults {
 
 const char* toString(FrameStatus s);
 const char* toString(CaseStatus s);
+// results.json through its one declaration (run/results_format.h). The reader throws
+// ResultsFormatError (run/results_visitors.h) naming the key path of a missing, unknown or
+// mistyped key, or the format_version when it is not this build's; RunFolder::readResults
+// adds the file's name and the fix.
 nlohmann::json toJson(const RunResults& r);
 RunResults runResultsFromJson(const nlohmann::json& j);
 

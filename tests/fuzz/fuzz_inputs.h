@@ -19,12 +19,12 @@
 #include "case/case_loader.h"
 #include "case/coverage.h"
 #include "cli/options.h"
-#include "cli/run_cases.h"
 #include "core/exr_codec.h"
 #include "core/image_io.h"
 #include "core/json_guard.h"
 #include "core/png_codec.h"
 #include "run/merge.h"
+#include "run/run_folder.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
@@ -47,23 +47,24 @@ inline void readCase(const std::string& text) {
   }
 }
 
-// A results.json as another run's folder gives it: as `run --verdict-from` and `merge` parse
-// it (then merge's checks of one shard and of its image paths), and as `coverage --results`
-// reads its logs. Refusals are UsageError, MergeError or coverage's invalid_argument.
+// A results.json as another run's folder gives it: as the folder's one reader parses it for
+// `run --verdict-from`, `merge`, `bless --from` and `coverage --results`, then merge's checks
+// of one shard and of its image paths, and coverage's check of the logs. Refusals are
+// RunFolderError (MergeError is one) or coverage's invalid_argument.
 inline void readResults(const std::string& text) {
   try {
-    const run::RunResults r = cli::parseResultsText(text, "fuzz/results.json", "fix");
+    const run::RunResults r = run::RunFolder("fuzz").parseResults(text, "fix");
     try {
       (void)run::mergeShards({{"fuzz", r}});
     } catch (const run::MergeError&) {
     }
-    for (const auto& c : r.cases) (void)run::imagePathsOf(c);
-  } catch (const cli::UsageError&) {
-  }
-  if (!jsonStructureProblem(text).empty()) return;  // coverage refuses it before parsing
-  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  try {
-    (void)cases::runLogsFromResults(j);
+    std::vector<std::pair<std::string, std::vector<std::string>>> logs;
+    for (const auto& c : r.cases) {
+      (void)run::imagePathsOf(c);
+      logs.emplace_back(c.name, c.log);
+    }
+    (void)cases::checkedRunLogs(logs);
+  } catch (const run::RunFolderError&) {
   } catch (const std::invalid_argument&) {
   }
 }

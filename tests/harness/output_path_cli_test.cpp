@@ -10,10 +10,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/image.h"
 #include "core/image_io.h"
 #include "harness/cli_fixture.h"
+#include "run/results.h"
 #include "support/text.h"
 
 namespace taa {
@@ -89,8 +91,11 @@ TEST_F(OutputPathCli, CoverageResultsAFifoIsRefusedAtOnce) {
   EXPECT_NE(r.output.find("a FIFO"), std::string::npos) << r.output;
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
   // A traced constant that is no number: exit 2 naming the file and the key (was "stoi", 3).
-  std::ofstream(root_ / "results.json")
-      << R"({"cases": [{"name": "small", "log": ["taa_resolve spec constants: 0=99999999999"]}]})";
+  run::RunResults forged;
+  forged.cases.emplace_back();
+  forged.cases[0].name = "small";
+  forged.cases[0].log = {"taa_resolve spec constants: 0=99999999999"};
+  std::ofstream(root_ / "results.json") << run::toJson(forged).dump();
   const auto bad =
       harness("coverage " + casePath("small") + " --results " + (root_ / "results.json").string());
   EXPECT_EQ(bad.exitCode, 2) << bad.output;

@@ -12,12 +12,25 @@
 # crash-*/timeout-*/oom-* in $TAA_FUZZ_OUT (default build-asan/fuzz): copy it into
 # tests/fuzz/corpus/TARGET/ once fixed, so every build replays it (fuzz_regressions_test).
 # TAA_ASAN_BUILT=1: the fuzz targets are built already (.ci/run builds the tree once).
+# `ci/fuzz.sh --targets` prints the targets' build names (.ci/run builds them with the tree).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# The targets are the files tests/fuzz/fuzz_NAME.cpp, less the *_test.cpp that replays their
+# corpus in taa_tests (tests/fuzz/CMakeLists.txt globs the same).
+targets=()
+for f in tests/fuzz/fuzz_*.cpp; do
+  [[ $f == *_test.cpp ]] && continue
+  f=${f#tests/fuzz/fuzz_}
+  targets+=("${f%.cpp}")
+done
+if [ "${1:-}" = --targets ]; then
+  echo "${targets[@]/#/fuzz_}"
+  exit 0
+fi
 build=${TAA_ASAN_BUILD:-build-asan}
 seconds=${TAA_FUZZ_SECONDS:-60}
 out=${TAA_FUZZ_OUT:-$build/fuzz}
-[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh fuzz_case fuzz_track fuzz_gltf fuzz_image fuzz_shader fuzz_results fuzz_lanes fuzz_reference_entry
+[ -n "${TAA_ASAN_BUILT:-}" ] || bash ci/asan-build.sh "${targets[@]/#/fuzz_}"
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Called where `set -e` does not reach (a lane's `||`): each step that can fail returns.
@@ -50,7 +63,6 @@ fuzz_one() {
 # core the sanitized unit tests leave free is not idle); each target's output is printed whole,
 # in target order, once all have ended.
 jobs=${TAA_FUZZ_JOBS:-1}
-targets=(case track gltf image shader results lanes reference_entry)
 logs=$(mktemp -d)
 status=0
 for ((lane = 0; lane < jobs; lane++)); do

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "core/input_file.h"
 #include "core/json_guard.h"
 #include "scene/build_scene.h"
 #include "scene/gltf_loader.h"
@@ -16,23 +17,43 @@ std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec) {
   return std::make_shared<const scene::Scene>(scene::buildScene(spec));
 }
 
-bool gltfAnimates(const std::filesystem::path& file) {
-  return scene::gltfHasAnimations(file);
-}
+namespace {
 
-std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file,
-                                             const std::string& bytes) {
+// The JSON of a .gltf or .glb file's bytes, nesting bounded before the parse as loading bounds
+// it; discarded when the bytes are not such a document.
+nlohmann::json gltfDocument(const std::filesystem::path& file, const std::string& bytes) {
+  const nlohmann::json none = nlohmann::json::value_t::discarded;
   std::string json = bytes;
   if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0) {
     try {
       json = scene::glbJsonChunk(file, std::vector<uint8_t>(bytes.begin(), bytes.end()));
     } catch (const scene::SceneError&) {
-      return {};
+      return none;
     }
   }
-  // Bounded nesting before the parse, as loading checks it.
-  if (!jsonStructureProblem(json).empty()) return {};
-  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+  if (!jsonStructureProblem(json).empty()) return none;
+  nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+  return doc.is_object() ? doc : none;
+}
+
+}  // namespace
+
+bool gltfAnimates(const std::filesystem::path& file) {
+  std::string bytes;
+  try {
+    bytes = readInputFile(file, kMaxSceneFileBytes);
+  } catch (const InputFileError&) {
+    return false;
+  }
+  const nlohmann::json doc = gltfDocument(file, bytes);
+  if (doc.is_discarded()) return false;
+  const auto a = doc.find("animations");
+  return a != doc.end() && a->is_array() && !a->empty();
+}
+
+std::vector<std::string> gltfReferencedFiles(const std::filesystem::path& file,
+                                             const std::string& bytes) {
+  const nlohmann::json doc = gltfDocument(file, bytes);
   if (doc.is_discarded()) return {};
   return scene::gltfFileUris(doc);
 }

@@ -21,8 +21,10 @@ struct Scene;
 // the case. Throws SceneError (an InputError) naming the file, the problem and the fix.
 std::shared_ptr<const scene::Scene> buildCaseScene(const spec::CaseSpec& spec);
 
-// Whether the glTF file lists any animation (scene::gltfHasAnimations): false when it cannot be
-// read, which loading the scene then reports.
+// Whether the glTF file lists any animation, read as the case's input hash reads it (bounded,
+// a regular file, gltfReferencedFiles' parse): false when it cannot be read, which loading the
+// scene then reports. For spec-level checks that need to know whether a glTF scene moves
+// without loading it.
 bool gltfAnimates(const std::filesystem::path& file);
 
 // The files the glTF `file`, whose bytes are `bytes` (.gltf or .glb), reads besides itself:

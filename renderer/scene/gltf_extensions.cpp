@@ -2,7 +2,6 @@
 // a compressed mesh or a KTX2 texture would otherwise fail deep inside tinygltf with a
 // message that does not name the extension.
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_loader.h"
@@ -31,35 +30,6 @@ std::vector<std::string> names(const nlohmann::json& doc, const char* key) {
 }
 
 }  // namespace
-
-nlohmann::json readGltfDocument(const std::filesystem::path& file) {
-  const nlohmann::json none = nlohmann::json::value_t::discarded;
-  // Read by size: istreambuf_iterator trips GCC 12's -Wnull-dereference.
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
-  const std::streamoff size = in ? std::streamoff(in.tellg()) : -1;
-  if (size <= 0) return none;
-  std::vector<uint8_t> bytes(size_t(size), 0);
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) return none;
-  std::string json(bytes.begin(), bytes.end());
-  if (bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' &&
-      bytes[3] == 'F') {
-    try {
-      json = glbJsonChunk(file, bytes);
-    } catch (const SceneError&) {
-      return none;
-    }
-  }
-  nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-  return doc.is_object() ? doc : none;
-}
-
-bool gltfHasAnimations(const std::filesystem::path& file) {
-  const nlohmann::json doc = readGltfDocument(file);
-  if (doc.is_discarded()) return false;
-  const auto a = doc.find("animations");
-  return a != doc.end() && a->is_array() && !a->empty();
-}
 
 const std::vector<std::string>& supportedGltfExtensions() {
   // KHR_mesh_quantization needs nothing beyond the accessor reader's integer formats.

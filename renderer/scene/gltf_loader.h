@@ -35,14 +35,6 @@ void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc)
 // checkGltfUris refuses (loading reports those).
 std::vector<std::string> gltfFileUris(const nlohmann::json& doc);
 
-// The JSON of a .gltf or .glb file; discarded when it cannot be read or parsed.
-nlohmann::json readGltfDocument(const std::filesystem::path& file);
-
-// Whether the glTF file (.gltf or .glb) lists any animation; false when it cannot be
-// read (loadGltf then reports why). For spec-level checks that need to know whether a
-// glTF scene moves without loading it.
-bool gltfHasAnimations(const std::filesystem::path& file);
-
 // The extensions loadGltf implements (extensionsRequired may list only these).
 const std::vector<std::string>& supportedGltfExtensions();
 

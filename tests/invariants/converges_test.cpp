@@ -100,6 +100,19 @@ TEST(InvariantConverges, InapplicableWhenAnythingMovesOrNothingAccumulates) {
                "camera.rotate.yaw_deg_per_s is 10");
   expectReason([](auto& s) { s.camera.bob.amplitude = 0.1f; }, "camera.bob.amplitude is 0.1");
   expectReason([](auto& s) { s.camera.cuts.emplace_back(); }, "camera.cuts has 1 cut(s)");
+  // A glTF scene that animates itself moves; held (animation_speed 0), or without animations, not.
+  auto gltf = [](const char* scene, float speed) {
+    auto s = staticCase();
+    s.file = std::string(TAA_SOURCE_DIR) + "/cases/t.json";
+    s.scene.gltf = scene;
+    s.scene.animation_speed = speed;
+    return s;
+  };
+  expectReason([&](auto& s) { s = gltf("scenes/animated.gltf", 1.0f); },
+               "the glTF scene's own animations play");
+  EXPECT_EQ(inapplicable("converges", gltf("scenes/animated.gltf", 0.0f)), "");
+  EXPECT_EQ(inapplicable("converges", gltf("scenes/box.glb", 1.0f)), "");
+  EXPECT_EQ(inapplicable("converges", gltf("scenes/missing.gltf", 1.0f)), "");
   expectReason([](auto& s) { s.movers.emplace_back(); }, "movers[0].speed is 1");
   expectReason(
       [](auto& s) {

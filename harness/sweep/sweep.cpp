@@ -109,8 +109,9 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
         const int f = lf.record.frame;
         if (!read(f)) return;
         const Image& reference = lf.reference;
-        if (lf.lane == 0) referenceFlicker.add(reference, f > result.fromFrame);
-        lanes[lf.lane]->flicker.add(lf.record.color, f > result.fromFrame);
+        // A measured frame's flicker is its change from the frame before, read for it.
+        if (lf.lane == 0) referenceFlicker.add(reference, f >= result.fromFrame);
+        lanes[lf.lane]->flicker.add(lf.record.color, f >= result.fromFrame);
         if (f < result.fromFrame) return;
         auto& p = out[lf.lane];
         p.rmsePerFrame.push_back(compare::computeMetrics(reference, lf.record.color).rmse);

@@ -10,6 +10,7 @@
 
 #include "case/case_error.h"
 #include "case/case_loader.h"
+#include "invariants/flicker_meter.h"
 #include "support/gpu.h"
 #include "support/text.h"
 
@@ -57,6 +58,21 @@ TEST(Sweep, BasicGhostsMoreThanTheFullResolveAndEverythingIsWritten) {
   EXPECT_NE(md.find("| default |"), std::string::npos) << md;
   EXPECT_NE(md.find("| yes |"), std::string::npos) << md;  // a Pareto front exists
   EXPECT_EQ(test::count(svg, "class=\"point-label\""), test::count(md, "| yes |")) << md;
+}
+
+// Flicker over the measured frames F..N-1 counts every pair from (F-1, F) on: the frame before
+// the first measured one is read too. Recomputed here from the case's own frames.
+TEST(Sweep, FlickerCountsThePairEndingAtTheFirstMeasuredFrame) {
+  const fs::path file = writeCase("flicker");
+  sweep::SweepOptions o;
+  o.fromFrame = 4;
+  const auto r = sweep::runSweep(test::device(), file, presets(), {"default"}, o);
+  ASSERT_EQ(r.presets.size(), 1u);
+  const auto records = test::renderCase(cases::loadCase(file).spec, {3, 4, 5, 6, 7, 8, 9});
+  invariants::FlickerMeter expected;
+  for (const auto& rec : records)
+    if (rec.hasImages) expected.add(rec.color, rec.frame > 3);
+  EXPECT_DOUBLE_EQ(r.presets[0].flicker, expected.mean());
 }
 
 TEST(Sweep, UnknownOrInvalidPresetsAreBadInputNamingThePreset) {

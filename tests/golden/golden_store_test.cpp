@@ -119,6 +119,27 @@ TEST(GoldenStore, LeftoversOfAKilledBlessAreIgnoredThenCleaned) {
   EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "next");
 }
 
+// The sweep at the start of every run and bless: the staging folder of a process that has
+// ended goes, with a note naming it; a live process's, this process's and a name that is no
+// staging folder stay.
+TEST(GoldenStore, StaleStagingOfEndedProcessesIsRemovedAndOnlyThat) {
+  const fs::path root = freshRoot("stale-staging");
+  const pid_t ended = fork();
+  ASSERT_GE(ended, 0);
+  if (ended == 0) _exit(0);
+  ASSERT_EQ(waitpid(ended, nullptr, 0), ended);
+  const std::string dead = ".c.bless-" + std::to_string(ended);
+  const std::vector<std::string> kept = {".c.bless-1", ".c.bless-" + std::to_string(getpid()),
+                                         ".c.bless-", ".c.bless-12x", "c.bless-" + std::to_string(ended)};
+  for (const auto& name : kept) fs::create_directories(root / name);
+  fs::create_directories(root / dead);
+  const auto notes = removeStaleStaging(root);
+  EXPECT_FALSE(fs::exists(root / dead));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find(dead), std::string::npos) << notes[0];
+  for (const auto& name : kept) EXPECT_TRUE(fs::exists(root / name)) << name;
+}
+
 TEST(GoldenStore, MalformedManifestNamesTheFile) {
   const fs::path root = freshRoot("malformed");
   fs::create_directories(root / "c");

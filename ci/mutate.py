@@ -91,6 +91,10 @@ def main():
                    help="run these mutants (repeatable), whatever the sample")
     p.add_argument("--also", action="append", default=[], metavar="ID",
                    help="add these mutants to the sample (repeatable)")
+    p.add_argument("--whole-tree", action="store_true",
+                   help="mutate every file with logic (renderer/, harness/, core/, the user "
+                        "headers' sources) with the key/size/prev-cur operators too (issue 46); "
+                        "without it, the files and operators of the 200-mutant sample")
     p.add_argument("--max", type=int, default=60, help="sample size (default 60)")
     p.add_argument("--seed", type=int, default=12, help="sample seed (default 12)")
     p.add_argument("--harness-share", type=float, default=0.3,
@@ -116,12 +120,13 @@ def main():
             return 2
         stored = json.loads((report / "mutation.json").read_text())
         summary = summarize(stored["mutants"], load_judged(), args)
-        summary.update(seed=stored["seed"], max=stored["max"])
+        summary.update(seed=stored["seed"], max=stored["max"],
+                       whole_tree=stored.get("whole_tree", False))
         write_reports(report, summary)
         print(f"{report / 'mutation.md'}: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["counts"].items())))
         return 0
 
-    every = ops.all_mutants(ROOT)
+    every = ops.all_mutants(ROOT, args.whole_tree)
     by_id = {m.id: m for m in every}
     unknown = [i for i in args.only + args.also if i not in by_id]
     if unknown:
@@ -151,6 +156,7 @@ def main():
     log(f"baseline: {len(base_outputs)} cases, {total:.0f} s; {len(chosen)} mutants")
     records, judged = [], load_judged()
     done = resumed(out, chosen) if args.resume else {}
+    previous_targets = []
     if done:
         log(f"resume: {len(done)} verdicts kept from {out / 'mutation.json'}")
     try:
@@ -159,6 +165,8 @@ def main():
                 records.append(done[m.id])
                 continue
             start = time.monotonic()
+            runner.stale = previous_targets  # mutate_ops.build_targets
+            previous_targets = ops.tree_targets(m)
             if not ops.tree_targets(m):
                 status, detail = runner.judge(m, base_outputs, ordered, total)
             else:

@@ -20,7 +20,23 @@ UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
                   "harness/golden": ["tests/golden", "tests/harness"],
                   "harness/invariants": ["tests/invariants"],
                   "harness/run": ["tests/harness", "tests/golden"],
-                  "harness/case": ["tests/case", "tests/audit"]}
+                  "harness/case": ["tests/case", "tests/audit"],
+                  # --whole-tree (issue 46): each folder's own tests/ twin, the CLI and run
+                  # tests (tests/harness) for the harness's other folders.
+                  "harness/cli": ["tests/harness"],
+                  "harness/lanes": ["tests/harness"],
+                  "harness/score": ["tests/harness"],
+                  "harness/sweep": ["tests/harness"],
+                  "harness/report": ["tests/report", "tests/harness"],
+                  "core": ["tests/core"],
+                  "renderer/scene": ["tests/scene"],
+                  "renderer/script": ["tests/script"],
+                  "renderer/user": ["tests/user"],
+                  "shaders/user": ["tests/user"],
+                  "renderer/passes": ["tests/renderer", "tests/effects"],
+                  "renderer/frame": ["tests/renderer", "tests/effects"],
+                  "renderer/api": ["tests/renderer"],
+                  "renderer/vk": ["tests/renderer"]}
 VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 
@@ -251,7 +267,7 @@ class Runner:
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
-        targets = ops.tree_targets(mutant)
+        targets = ops.build_targets(mutant, getattr(self, "stale", ()))
         if not targets:
             self.env["TAA_SHADER_DIR"] = str(work / "spv")
             if not self.build_shader_mutant(mutant, work):

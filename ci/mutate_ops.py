@@ -150,10 +150,10 @@ def _format_float(value):
     return text
 
 
-def _counterparts(name, names):
-    """The current-frame names of a previous-frame name that the file uses, and back:
-    prevRenderSize -> renderSize, curRenderSize; previous -> current; renderSize ->
-    prevRenderSize. Only names the file already has, so the mutant compiles."""
+def _counterparts(name, fits):
+    """The current-frame names of a previous-frame name, and back: prevRenderSize ->
+    renderSize, curRenderSize; previous -> current; renderSize -> prevRenderSize. Only those
+    `fits` accepts (a name the code has where this one stands), so most such mutants build."""
     def cap(rest, sep):
         return rest if sep else rest[:1].upper() + rest[1:]
     out = []
@@ -167,10 +167,39 @@ def _counterparts(name, names):
     if not _PREV.match(name) and not _CUR.match(name):
         out.extend(o + name[:1].upper() + name[1:] for o in ("prev", "previous"))
         out.extend(o + "_" + name for o in ("prev", "previous"))
-    return [o for o in dict.fromkeys(out) if o != name and o in names]
+    return [o for o in dict.fromkeys(out) if o != name and fits(o)]
 
 
-def _whole_tree_sites(code, raw, names, prev_code):
+class _Names:
+    """Where a file's code uses each identifier: as a member (after `.` or `->`, in the file
+    or its header), bare in its header (a class's fields), or bare on a line of the file. A
+    swapped name must be a member where a member stands, and otherwise declared in the
+    header or used bare in the 60 lines above (most often the same function): a local of
+    another function does not build. Member names are not checked against the member's
+    type, so a few mutants still do not build (stillborn, not counted)."""
+    WINDOW = 60
+
+    def __init__(self, text, header_text):
+        self.members, self.header, self.lines = set(), set(), []
+        for source, is_header in ((text, False), (header_text, True)):
+            in_block = False
+            for raw in source.split("\n"):
+                code, in_block = _code_mask(raw, in_block)
+                self.members.update(re.findall(r"(?:\.|->)\s*([A-Za-z_]\w*)", code))
+                bare = set(re.findall(r"(?<![\w.>])[A-Za-z_]\w*", code))
+                if is_header:
+                    self.header |= bare
+                else:
+                    self.lines.append(bare)
+
+    def fits(self, number, is_member):
+        if is_member:
+            return lambda o: o in self.members
+        near = set().union(*self.lines[max(0, number - self.WINDOW):number])
+        return lambda o: o in self.header or o in near
+
+
+def _whole_tree_sites(code, raw, names, number, prev_code):
     """The --whole-tree operators' sites of one code line (WHOLE_TREE_OPS)."""
     sites = []
     stripped = code.strip()
@@ -192,7 +221,8 @@ def _whole_tree_sites(code, raw, names, prev_code):
         declared = _DECLARED.search(code[:m.start()])
         if declared and declared.group(1) not in _NOT_A_TYPE:
             continue
-        for other in _counterparts(m.group(0), names):
+        is_member = bool(re.search(r"(\.|->)\s*$", code[:m.start()]))
+        for other in _counterparts(m.group(0), names.fits(number, is_member)):
             sites.append(("prev-cur", m.start(), m.end(), other))
     return sites
 
@@ -245,15 +275,6 @@ def _deletable(code, prev_code):
     return bool(_ASSIGN.match(code) or _CALL.match(code))
 
 
-def _code_names(text):
-    """Every identifier of a file's code (comments and strings left out)."""
-    names, in_block = set(), False
-    for raw in text.split("\n"):
-        code, in_block = _code_mask(raw, in_block)
-        names.update(re.findall(r"[A-Za-z_]\w*", code))
-    return names
-
-
 def file_mutants(root, rel, kind):
     """Every site of every operator, WHOLE_TREE_OPS included (all_mutants filters them):
     adding those never renumbers another operator's ids."""
@@ -261,7 +282,7 @@ def file_mutants(root, rel, kind):
     lines = text.split("\n")
     # A member renamed to its previous-frame twin is often declared in the header beside.
     header = (root / rel).with_suffix(".h")
-    names = _code_names(text + ("\n" + header.read_text() if header.is_file() else ""))
+    names = _Names(text, header.read_text() if header.is_file() else "")
     # prev_code: the last code line the older operators looked at (lines with a string left
     # out, as they always were, so their ids stay); prev_any: the last code line at all.
     counters, mutants, in_block, prev_code, prev_any = {}, [], False, "", ""
@@ -272,7 +293,8 @@ def file_mutants(root, rel, kind):
             continue
         if _SKIP_LINE.search(code):
             continue  # compile-time checks
-        whole = _whole_tree_sites(code, raw, names, prev_any) if not stripped.startswith("#") else []
+        whole = (_whole_tree_sites(code, raw, names, number, prev_any)
+                 if not stripped.startswith("#") else [])
         if stripped:
             prev_any = code
         if kind == "harness" and '"' in code:

@@ -156,7 +156,6 @@ def main():
     log(f"baseline: {len(base_outputs)} cases, {total:.0f} s; {len(chosen)} mutants")
     records, judged = [], load_judged()
     done = resumed(out, chosen) if args.resume else {}
-    previous_targets = []
     if done:
         log(f"resume: {len(done)} verdicts kept from {out / 'mutation.json'}")
     try:
@@ -165,8 +164,6 @@ def main():
                 records.append(done[m.id])
                 continue
             start = time.monotonic()
-            runner.stale = previous_targets  # mutate_ops.build_targets
-            previous_targets = ops.tree_targets(m)
             if not ops.tree_targets(m):
                 status, detail = runner.judge(m, base_outputs, ordered, total)
             else:
@@ -178,6 +175,8 @@ def main():
                 finally:
                     ops.restore(ROOT, m, original)
                     backup_path(out).unlink()
+                    # The build folder now holds the mutant: the next build restores it.
+                    runner.stale |= set(ops.tree_targets(m))
             rec = dict(m.as_json(), status=status, detail=detail,
                        seconds=round(time.monotonic() - start, 1))
             records.append(rec)

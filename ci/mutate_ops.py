@@ -90,10 +90,10 @@ def tree_targets(mutant):
 
 
 def build_targets(mutant, previous):
-    """What to build before judging a tree mutant: its own targets and those of the tree
-    mutant before it (`previous`), whose file was restored after its build: a restored user
-    header reaches the build folder only through taa_user_h, which a C++ mutant's targets
-    do not include."""
+    """What to build before judging a tree mutant: its own targets and `previous`, those
+    of the tree mutants restored since the last build that succeeded: a restored user header
+    reaches the build folder only through taa_user_h, which a C++ mutant's targets do not
+    include, and a stillborn shared.h mutant's build may stop before the SPIR-V."""
     own = tree_targets(mutant)
     return sorted(set(own) | set(previous)) if own else []
 

@@ -116,6 +116,9 @@ class Runner:
         self.tests = self.build / "tests" / "taa_tests"
         self.cases = sorted(Path(args.cases).resolve().glob("*.json"))
         self.env = dict(os.environ, CI="false")  # a missing golden is a skip, as locally
+        # Targets the build folder holds from a restored tree mutant, until a build succeeds:
+        # one that failed (a stillborn mutant) may have stopped before it rebuilt them.
+        self.stale = set()
 
     def ninja(self, targets, log_file):
         with open(log_file, "w") as f:
@@ -267,7 +270,7 @@ class Runner:
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
-        targets = ops.build_targets(mutant, getattr(self, "stale", ()))
+        targets = ops.build_targets(mutant, self.stale)
         if not targets:
             self.env["TAA_SHADER_DIR"] = str(work / "spv")
             if not self.build_shader_mutant(mutant, work):
@@ -285,6 +288,7 @@ class Runner:
             self.env.pop("TAA_SHADER_DIR", None)
             if not self.ninja(targets, work / "build.log"):
                 return "stillborn", "does not build"
+            self.stale = set()
         if mutant.kind == "harness":
             verdict = self.unit_tests(mutant, work)
             if verdict:

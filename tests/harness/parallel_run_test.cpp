@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "core/cache_folder.h"
 #include "harness/cli_fixture.h"
 #include "report/html_report.h"
+#include "run/ordered_run.h"
 #include "run/results.h"
 #include "run/results_seal.h"
 
@@ -440,6 +442,31 @@ TEST_F(Merge, RefusesForgedPathsLinksFifosAndForeignShards) {
   EXPECT_EQ(unsealed.exitCode, 0) << unsealed.output;
   EXPECT_NE(unsealed.output.find("is not sealed"), std::string::npos) << unsealed.output;
   EXPECT_FALSE(fs::exists(run::sealPathOf(root_ / "merged" / "results.json")));
+}
+
+// runOrdered, the worker pool under `run -j N`: a work item that throws stops the batch at its
+// turn, with its own exception, for any worker count. No test let a work item throw: the
+// whole-tree mutation sample (issue 46) deleted the line that picks up its exception, and the
+// failed item's results were delivered as if it had passed.
+TEST(OrderedRun, AWorkItemsExceptionIsRethrownAtItsTurnAndNothingAfterIsDelivered) {
+  for (const size_t workers : {size_t(1), size_t(2), size_t(4)}) {
+    std::vector<size_t> delivered;
+    try {
+      run::runOrdered(
+          6, workers,
+          [](size_t, size_t item) {
+            if (item == 2) throw std::runtime_error("item 2 failed");
+          },
+          [&](size_t item) {
+            delivered.push_back(item);
+            return true;
+          });
+      ADD_FAILURE() << workers << " workers: no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "item 2 failed") << workers << " workers";
+    }
+    EXPECT_EQ(delivered, (std::vector<size_t>{0, 1})) << workers << " workers";
+  }
 }
 
 }  // namespace

@@ -47,7 +47,9 @@ def log(*parts):
 # Shader folders whose tests are named after the pass that uses them: shaders/trace/ is the
 # adaptive pass's tracer, and its tests (adaptive_shading_test.cpp's traced vertex colours)
 # say adaptive, not trace.
-PASS_ALIASES = {"trace": ("adaptive",)}
+# Likewise shaders/taa/ is the resolve pass, and its GPU tests in tests/renderer say resolve
+# (resolve_tone_weight_test.cpp checks the history clamp of taa/color_space.glsl).
+PASS_ALIASES = {"trace": ("adaptive",), "taa": ("resolve",)}
 
 
 def pass_word(rel):

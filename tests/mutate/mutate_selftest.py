@@ -199,4 +199,10 @@ check(ops.build_targets(cpp[0], ops.tree_targets(header)) == ["taa-harness", "ta
 check(ops.build_targets(shader, ops.tree_targets(header)) == [],
       "a shader mutant built into a copy builds nothing in the tree")
 
+# A shader mutant meets the GPU tests of its pass under the names they use: the tracer's are
+# adaptive_*, the resolve's (shaders/taa/) resolve_* (the history clamp's firefly test).
+check(any(src.name == "resolve_tone_weight_test.cpp"
+          for src in mutate_runner.test_sources("shaders/taa/color_space.glsl")),
+      "a shaders/taa/ mutant runs tests/renderer/resolve_*_test.cpp")
+
 check.finish()

@@ -119,6 +119,21 @@ TEST(GoldenStore, LeftoversOfAKilledBlessAreIgnoredThenCleaned) {
   EXPECT_EQ(loadGoldens(root, "c")->manifest.bless.reason, "next");
 }
 
+// The run's sweep over every case's staging folders (".NAME.bless-PID"): one whose process has
+// ended goes, with a note; one of a live process stays. The whole-tree mutation sample (issue
+// 46) made the name parser refuse every real staging name, and no test noticed.
+TEST(GoldenStore, AStagingFolderOfAnEndedProcessIsRemovedAndALiveOnesKept) {
+  const fs::path root = freshRoot("staging");
+  const std::string live = ".d.bless-" + std::to_string(::getppid());
+  fs::create_directories(root / ".c.bless-999999");
+  fs::create_directories(root / live);
+  const auto notes = removeStaleStaging(root);
+  EXPECT_FALSE(fs::exists(root / ".c.bless-999999"));
+  EXPECT_TRUE(fs::exists(root / live));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("process 999999"), std::string::npos) << notes[0];
+}
+
 TEST(GoldenStore, MalformedManifestNamesTheFile) {
   const fs::path root = freshRoot("malformed");
   fs::create_directories(root / "c");

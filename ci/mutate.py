@@ -91,6 +91,10 @@ def main():
                    help="run these mutants (repeatable), whatever the sample")
     p.add_argument("--also", action="append", default=[], metavar="ID",
                    help="add these mutants to the sample (repeatable)")
+    p.add_argument("--whole-tree", action="store_true",
+                   help="mutate every file with logic (renderer/, harness/, core/, the user "
+                        "headers' sources) with the key/size/prev-cur operators too (issue 46); "
+                        "without it, the files and operators of the 200-mutant sample")
     p.add_argument("--max", type=int, default=60, help="sample size (default 60)")
     p.add_argument("--seed", type=int, default=12, help="sample seed (default 12)")
     p.add_argument("--harness-share", type=float, default=0.3,
@@ -116,12 +120,13 @@ def main():
             return 2
         stored = json.loads((report / "mutation.json").read_text())
         summary = summarize(stored["mutants"], load_judged(), args)
-        summary.update(seed=stored["seed"], max=stored["max"])
+        summary.update(seed=stored["seed"], max=stored["max"],
+                       whole_tree=stored.get("whole_tree", False))
         write_reports(report, summary)
         print(f"{report / 'mutation.md'}: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["counts"].items())))
         return 0
 
-    every = ops.all_mutants(ROOT)
+    every = ops.all_mutants(ROOT, args.whole_tree)
     by_id = {m.id: m for m in every}
     unknown = [i for i in args.only + args.also if i not in by_id]
     if unknown:
@@ -170,6 +175,8 @@ def main():
                 finally:
                     ops.restore(ROOT, m, original)
                     backup_path(out).unlink()
+                    # The build folder now holds the mutant: the next build restores it.
+                    runner.stale |= set(ops.tree_targets(m))
             rec = dict(m.as_json(), status=status, detail=detail,
                        seconds=round(time.monotonic() - start, 1))
             records.append(rec)

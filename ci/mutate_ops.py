@@ -19,6 +19,11 @@ HARNESS_GLOBS = ["harness/compare/metrics.cpp", "harness/compare/tolerance.cpp",
                  "harness/compare/flip*.cpp", "harness/golden/*.cpp", "harness/invariants/*.cpp",
                  "harness/run/golden_check.cpp", "harness/run/invariant_run.cpp",
                  "harness/case/case_validate.cpp", "harness/case/validate_*.cpp"]
+# --whole-tree (issue 46): every C++ file with logic, and the sources of the generated user
+# headers. The two lists above stay as they were, so the 200-mutant sample of issue 29 lists
+# the same ids without the flag.
+WHOLE_TREE_GLOBS = ["renderer/**/*.cpp", "harness/**/*.cpp", "core/*.cpp",
+                    "shaders/user/*.in", "shaders/user/taa_user_header.cpp"]
 
 # Binary operators are matched with a space on each side (clang-format's layout), which
 # keeps templates (vector<int>), shifts, arrows and unary minus out.
@@ -35,6 +40,23 @@ _CALL = re.compile(r"^\s*[A-Za-z_][\w:.]*(\.[A-Za-z_]\w*)*\s*\(.*\)\s*;\s*$")
 _DEFINE_NUMBER = re.compile(r"^\s*#define\s+\w+\s+\(?-?[\d.]")
 _SKIP_LINE = re.compile(r"\bstatic_assert\b|\blayout\s*\(")
 _KEYWORD_STATEMENT = re.compile(r"^\s*(return|break|continue|case|default|if|for|while|else)\b")
+# --whole-tree operators (issue 46), never offered without the flag (WHOLE_TREE_OPS):
+# `key` drops one line feeding a hash, digest or cache key (h.update(...), add(...),
+# key += ...), a field left out of a key; `size` doubles a sizeof or widens a stride by one;
+# `prev-cur` swaps a previous-frame name for the current-frame one on one line or back.
+_KEY_FEED = re.compile(r"^\s*(\w+\s*(\.|->)\s*)?(update|add|combine|mix)\s*\(|"
+                       r"^\s*[\w.]*(key|Key|hash|Hash|digest|Digest|signature|Signature)\w*\s*(\+=|\^=|<<)")
+_SIZEOF = re.compile(r"\bsizeof\s*\(")
+_CAPACITY_CALL = re.compile(r"\b(snprintf|to_chars|read|getaffinity|sched_getaffinity)\s*\(")
+_STRIDE = re.compile(r"(?<=[-*+/(,=]\s)(?<![\w.])([a-z]\w*[sS]tride\w*|stride\w*)\b(?!\s*[=(])")
+_IDENT = re.compile(r"(?<![\w#])[a-z_]\w*")
+_PREV = re.compile(r"^(prev|previous)(_?)(\w*)$")
+_CUR = re.compile(r"^(cur|current)(_?)(\w*)$")
+# A name right after a type is being declared (vec2 uv, const auto& prev): renaming it
+# only moves the declaration, which does not build or shadows nothing.
+_DECLARED = re.compile(r"\b(\w+)(\s+|[&*]\s*)$")
+_NOT_A_TYPE = {"return", "case", "else", "co_return", "throw"}
+WHOLE_TREE_OPS = {"key", "size", "prev-cur"}
 
 
 # Shader files the C++ side includes too (its structs, bindings and mask values): a mutant
@@ -44,14 +66,36 @@ HOST_SHARED = {"shaders/common/shared.h"}
 
 
 TREE_TARGETS = ["taa_shaders", "taa-harness", "taa_tests"]
+# The generated user headers: their sources rebuild the two headers (the tool first, for
+# taa_user_header.cpp). User shaders include them at run time, and the SPIR-V cache checks
+# each include's bytes, so nothing else needs building.
+USER_HEADER_TARGETS = ["taa_user_h"]
+# Other C++ (harness/, renderer/, core/): the harness and the tests that link it; ninja
+# recompiles only the mutated file's unity batch and relinks. No SPIR-V reads these files.
+CPP_TARGETS = ["taa-harness", "taa_tests"]
 
 
 def tree_targets(mutant):
     """The build targets a mutant edited in the tree rebuilds, or [] for a shader mutant
     built into a private copy of the SPIR-V (the tree and the build folder untouched).
-    Always all three: the build folder must match the tree a mutant leaves behind, the
-    SPIR-V a restored shared.h mutant rebuilt included, before the next one runs."""
-    return TREE_TARGETS if mutant.kind == "harness" or mutant.file in HOST_SHARED else []
+    shared.h is read by both sides: all three. ci/mutate.py also rebuilds the previous tree
+    mutant's targets, so the build folder matches the restored tree before the next runs."""
+    if mutant.file in HOST_SHARED:
+        return TREE_TARGETS
+    if mutant.kind != "harness":
+        return []
+    if mutant.file.startswith("shaders/user/"):
+        return USER_HEADER_TARGETS
+    return CPP_TARGETS
+
+
+def build_targets(mutant, previous):
+    """What to build before judging a tree mutant: its own targets and `previous`, those
+    of the tree mutants restored since the last build that succeeded: a restored user header
+    reaches the build folder only through taa_user_h, which a C++ mutant's targets do not
+    include, and a stillborn shared.h mutant's build may stop before the SPIR-V."""
+    own = tree_targets(mutant)
+    return sorted(set(own) | set(previous)) if own else []
 
 
 @dataclass
@@ -106,6 +150,83 @@ def _format_float(value):
     return text
 
 
+def _counterparts(name, fits):
+    """The current-frame names of a previous-frame name, and back: prevRenderSize ->
+    renderSize, curRenderSize; previous -> current; renderSize -> prevRenderSize. Only those
+    `fits` accepts (a name the code has where this one stands), so most such mutants build."""
+    def cap(rest, sep):
+        return rest if sep else rest[:1].upper() + rest[1:]
+    out = []
+    for pattern, others in ((_PREV, ("cur", "current")), (_CUR, ("prev", "previous"))):
+        m = pattern.match(name)
+        if m:
+            _, sep, rest = m.groups()
+            if rest:
+                out.append(rest[:1].lower() + rest[1:] if not sep else rest)
+            out.extend(o + sep + cap(rest, sep) for o in others)
+    if not _PREV.match(name) and not _CUR.match(name):
+        out.extend(o + name[:1].upper() + name[1:] for o in ("prev", "previous"))
+        out.extend(o + "_" + name for o in ("prev", "previous"))
+    return [o for o in dict.fromkeys(out) if o != name and fits(o)]
+
+
+class _Names:
+    """Where a file's code uses each identifier: as a member (after `.` or `->`, in the file
+    or its header), bare in its header (a class's fields), or bare on a line of the file. A
+    swapped name must be a member where a member stands, and otherwise declared in the
+    header or used bare in the 60 lines above (most often the same function): a local of
+    another function does not build. Member names are not checked against the member's
+    type, so a few mutants still do not build (stillborn, not counted)."""
+    WINDOW = 60
+
+    def __init__(self, text, header_text):
+        self.members, self.header, self.lines = set(), set(), []
+        for source, is_header in ((text, False), (header_text, True)):
+            in_block = False
+            for raw in source.split("\n"):
+                code, in_block = _code_mask(raw, in_block)
+                self.members.update(re.findall(r"(?:\.|->)\s*([A-Za-z_]\w*)", code))
+                bare = set(re.findall(r"(?<![\w.>])[A-Za-z_]\w*", code))
+                if is_header:
+                    self.header |= bare
+                else:
+                    self.lines.append(bare)
+
+    def fits(self, number, is_member):
+        if is_member:
+            return lambda o: o in self.members
+        near = set().union(*self.lines[max(0, number - self.WINDOW):number])
+        return lambda o: o in self.header or o in near
+
+
+def _whole_tree_sites(code, raw, names, number, prev_code):
+    """The --whole-tree operators' sites of one code line (WHOLE_TREE_OPS)."""
+    sites = []
+    stripped = code.strip()
+    # A string with a space in it is a message (add(key, "has no effect ...")), not a key.
+    strings = re.findall(r'"([^"\\]*(?:\\.[^"\\]*)*)"', raw)
+    if (_KEY_FEED.match(code) and stripped.endswith(";") and not any(" " in t for t in strings)
+            and (not prev_code.strip() or prev_code.rstrip()[-1] in ";{}")):
+        indent = len(raw) - len(raw.lstrip())
+        sites.append(("key", indent, len(raw.rstrip()), ""))
+    # A buffer's capacity handed to a formatter or read() only matters past a bound the
+    # text never reaches: a doubled capacity there is undefined behaviour no run can show.
+    for m in ([] if _CAPACITY_CALL.search(code) else _SIZEOF.finditer(code)):
+        close = _matching_paren(code, m.end() - 1)
+        if close is not None:
+            sites.append(("size", m.start(), close + 1, "(" + raw[m.start():close + 1] + " * 2)"))
+    for m in _STRIDE.finditer(code):
+        sites.append(("size", m.start(1), m.end(1), "(" + m.group(1) + " + 1)"))
+    for m in _IDENT.finditer(code):
+        declared = _DECLARED.search(code[:m.start()])
+        if declared and declared.group(1) not in _NOT_A_TYPE:
+            continue
+        is_member = bool(re.search(r"(\.|->)\s*$", code[:m.start()]))
+        for other in _counterparts(m.group(0), names.fits(number, is_member)):
+            sites.append(("prev-cur", m.start(), m.end(), other))
+    return sites
+
+
 def _line_sites(code, raw):
     """(op, start, end, replacement) for every mutation site of one code line."""
     sites = []
@@ -155,16 +276,35 @@ def _deletable(code, prev_code):
 
 
 def file_mutants(root, rel, kind):
+    """Every site of every operator, WHOLE_TREE_OPS included (all_mutants filters them):
+    adding those never renumbers another operator's ids."""
     text = (root / rel).read_text()
     lines = text.split("\n")
-    counters, mutants, in_block, prev_code = {}, [], False, ""
+    # A member renamed to its previous-frame twin is often declared in the header beside.
+    header = (root / rel).with_suffix(".h")
+    names = _Names(text, header.read_text() if header.is_file() else "")
+    # prev_code: the last code line the older operators looked at (lines with a string left
+    # out, as they always were, so their ids stay); prev_any: the last code line at all.
+    counters, mutants, in_block, prev_code, prev_any = {}, [], False, "", ""
     for number, raw in enumerate(lines, 1):
         code, in_block = _code_mask(raw, in_block)
         stripped = code.strip()
         if stripped.startswith("#") and not _DEFINE_NUMBER.match(code):
             continue
-        if _SKIP_LINE.search(code) or (kind == "harness" and '"' in code):
-            continue  # compile-time checks; message text is not what the harness compares
+        if _SKIP_LINE.search(code):
+            continue  # compile-time checks
+        whole = (_whole_tree_sites(code, raw, names, number, prev_any)
+                 if not stripped.startswith("#") else [])
+        if stripped:
+            prev_any = code
+        if kind == "harness" and '"' in code:
+            # Message text is not what the harness compares, but a key string is.
+            for op, start, end, new in (w for w in whole if w[0] == "key"):
+                k = counters.get(op, 0)
+                counters[op] = k + 1
+                mutants.append(Mutant(f"{rel}:{op}:{k}", rel, kind, op, number, raw.strip(),
+                                      (raw[:start] + new + raw[end:]).strip()))
+            continue
         if stripped.startswith("#"):  # `#define NAME NUMBER`: only the value mutates
             name = re.match(r"\s*#define\s+\w+", code)
             code = " " * name.end() + code[name.end():]
@@ -172,6 +312,7 @@ def file_mutants(root, rel, kind):
         if not stripped.startswith("#") and _deletable(code, prev_code):
             indent = len(raw) - len(raw.lstrip())
             sites.append(("delete", indent, len(raw.rstrip()), ""))
+        sites += whole
         for op, start, end, new in sites:
             after = raw[:start] + new + raw[end:]
             k = counters.get(op, 0)
@@ -183,9 +324,12 @@ def file_mutants(root, rel, kind):
     return mutants
 
 
-def target_files(root):
+def target_files(root, whole_tree=False):
     files = []
-    for kind, globs in (("shader", SHADER_GLOBS), ("harness", HARNESS_GLOBS)):
+    groups = [("shader", SHADER_GLOBS), ("harness", HARNESS_GLOBS)]
+    if whole_tree:
+        groups.append(("harness", WHOLE_TREE_GLOBS))  # edited in the tree, as the harness's
+    for kind, globs in groups:
         for pattern in globs:
             for p in sorted(root.glob(pattern)):
                 rel = p.relative_to(root).as_posix()
@@ -194,10 +338,11 @@ def target_files(root):
     return files
 
 
-def all_mutants(root):
+def all_mutants(root, whole_tree=False):
     out = []
-    for rel, kind in target_files(root):
-        out.extend(file_mutants(root, rel, kind))
+    for rel, kind in target_files(root, whole_tree):
+        out.extend(m for m in file_mutants(root, rel, kind)
+                   if whole_tree or m.op not in WHOLE_TREE_OPS)
     return out
 
 
@@ -226,6 +371,10 @@ def select(mutants, seed, count, harness_share):
                 by_op.setdefault(m.op, []).append(m)
             ops = sorted(by_op)
             rng.shuffle(ops)
+            # The --whole-tree operators lead a file's turn where it has their sites: they
+            # are the bug classes issue 46 asks about, and rare (a file's first pick would
+            # otherwise seldom be one). A stable sort: without them the order is as it was.
+            ops.sort(key=lambda op: op not in WHOLE_TREE_OPS)
             for op in ops:
                 rng.shuffle(by_op[op])
             queue = []

@@ -30,15 +30,17 @@ def summarize(records, judged, args):
     caught = counts.get("caught", 0)
     scored = caught + counts.get("survived", 0) + counts.get("escape", 0)
     score = caught / scored if scored else None
-    return {"seed": args.seed, "max": args.max, "counts": counts, "scored": scored,
-            "score": score, "mutants": records}
+    return {"seed": args.seed, "max": args.max,
+            "whole_tree": bool(getattr(args, "whole_tree", False)), "counts": counts,
+            "scored": scored, "score": score, "mutants": records}
 
 
 def write_reports(out, summary):
     (out / "mutation.json").write_text(json.dumps(summary, indent=1) + "\n")
     c = summary["counts"]
     lines = ["# Mutation self-test", "",
-             f"seed {summary['seed']}, {len(summary['mutants'])} mutants: "
+             f"seed {summary['seed']}{', --whole-tree' if summary.get('whole_tree') else ''}, "
+             f"{len(summary['mutants'])} mutants: "
              + ", ".join(f"{k} {v}" for k, v in sorted(c.items())), ""]
     if summary["score"] is not None:
         lines += [f"**score: {c.get('caught', 0)} / {summary['scored']} = "

@@ -20,7 +20,23 @@ UNIT_TEST_DIRS = {"harness/compare": ["tests/compare"],
                   "harness/golden": ["tests/golden", "tests/harness"],
                   "harness/invariants": ["tests/invariants"],
                   "harness/run": ["tests/harness", "tests/golden"],
-                  "harness/case": ["tests/case", "tests/audit"]}
+                  "harness/case": ["tests/case", "tests/audit"],
+                  # --whole-tree (issue 46): each folder's own tests/ twin, the CLI and run
+                  # tests (tests/harness) for the harness's other folders.
+                  "harness/cli": ["tests/harness"],
+                  "harness/lanes": ["tests/harness"],
+                  "harness/score": ["tests/harness"],
+                  "harness/sweep": ["tests/harness"],
+                  "harness/report": ["tests/report", "tests/harness"],
+                  "core": ["tests/core"],
+                  "renderer/scene": ["tests/scene"],
+                  "renderer/script": ["tests/script"],
+                  "renderer/user": ["tests/user"],
+                  "shaders/user": ["tests/user"],
+                  "renderer/passes": ["tests/renderer", "tests/effects"],
+                  "renderer/frame": ["tests/renderer", "tests/effects"],
+                  "renderer/api": ["tests/renderer"],
+                  "renderer/vk": ["tests/renderer"]}
 VOLATILE_KEYS = ("seconds", "timings", "date", "ms")  # wall and GPU times
 
 
@@ -31,7 +47,9 @@ def log(*parts):
 # Shader folders whose tests are named after the pass that uses them: shaders/trace/ is the
 # adaptive pass's tracer, and its tests (adaptive_shading_test.cpp's traced vertex colours)
 # say adaptive, not trace.
-PASS_ALIASES = {"trace": ("adaptive",)}
+# Likewise shaders/taa/ is the resolve pass, and its GPU tests in tests/renderer say resolve
+# (resolve_tone_weight_test.cpp checks the history clamp of taa/color_space.glsl).
+PASS_ALIASES = {"trace": ("adaptive",), "taa": ("resolve",)}
 
 
 def pass_word(rel):
@@ -100,6 +118,9 @@ class Runner:
         self.tests = self.build / "tests" / "taa_tests"
         self.cases = sorted(Path(args.cases).resolve().glob("*.json"))
         self.env = dict(os.environ, CI="false")  # a missing golden is a skip, as locally
+        # Targets the build folder holds from a restored tree mutant, until a build succeeds:
+        # one that failed (a stillborn mutant) may have stopped before it rebuilt them.
+        self.stale = set()
 
     def ninja(self, targets, log_file):
         with open(log_file, "w") as f:
@@ -251,7 +272,7 @@ class Runner:
     def judge(self, mutant, base_outputs, ordered, total_seconds):
         ordered = self.order_for(mutant, ordered) if mutant.kind == "shader" else ordered
         work = self.out / "work"
-        targets = ops.tree_targets(mutant)
+        targets = ops.build_targets(mutant, self.stale)
         if not targets:
             self.env["TAA_SHADER_DIR"] = str(work / "spv")
             if not self.build_shader_mutant(mutant, work):
@@ -269,6 +290,7 @@ class Runner:
             self.env.pop("TAA_SHADER_DIR", None)
             if not self.ninja(targets, work / "build.log"):
                 return "stillborn", "does not build"
+            self.stale = set()
         if mutant.kind == "harness":
             verdict = self.unit_tests(mutant, work)
             if verdict:

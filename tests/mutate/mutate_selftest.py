@@ -107,13 +107,102 @@ every = ops.all_mutants(ROOT)
 shared = next(m for m in every if m.file == "shaders/common/shared.h")
 shader = next(m for m in every if m.kind == "shader" and m.file.endswith(".comp"))
 harness = next(m for m in every if m.kind == "harness")
-for m in (shared, harness):
-    check({"taa_shaders", "taa-harness", "taa_tests"} <= set(ops.tree_targets(m)),
-          f"{m.id} rebuilds the SPIR-V, the harness and the tests (got {ops.tree_targets(m)})")
+check({"taa_shaders", "taa-harness", "taa_tests"} <= set(ops.tree_targets(shared)),
+      f"{shared.id} rebuilds the SPIR-V, the harness and the tests (got {ops.tree_targets(shared)})")
+check(ops.tree_targets(harness) == ["taa-harness", "taa_tests"],
+      f"{harness.id} rebuilds the harness and the tests, no SPIR-V (got {ops.tree_targets(harness)})")
 check(ops.tree_targets(shader) == [], f"{shader.id} is built into a copy, the tree untouched")
 order = [line.split("\t")[0] for line in listing("--max", "200")]
 in_tree = [i for i in order if i.startswith("harness/") or i.startswith("shaders/common/shared.h")]
 check(in_tree and order[-len(in_tree):] == in_tree,
       "mutants edited in the tree run after every mutant built into a copy")
+
+# --whole-tree (issue 46): every file with logic and three more operators, leaving the
+# default listing (the 200-mutant sample's) exactly as it was.
+whole = ops.all_mutants(ROOT, whole_tree=True)
+whole_files = {m.file for m in whole}
+for folder in ("renderer/user/", "renderer/scene/", "renderer/frame/", "renderer/passes/",
+               "renderer/script/", "harness/run/", "harness/lanes/", "harness/score/",
+               "harness/sweep/", "harness/report/", "harness/cli/", "core/", "shaders/user/"):
+    check(any(f.startswith(folder) for f in whole_files), f"--whole-tree mutates {folder}")
+check("shaders/user/taa_user_header.cpp" in whole_files, "--whole-tree mutates the header tool")
+check({"key", "size", "prev-cur"} <= {m.op for m in whole}, "--whole-tree has the three new operators")
+default_all = listing("--all")
+check(not any(f":{op}:" in line.split("\t")[0] for line in default_all
+              for op in ops.WHOLE_TREE_OPS), "without --whole-tree no new operator is listed")
+check(not any(line.startswith(("renderer/", "core/", "shaders/user/")) for line in default_all),
+      "without --whole-tree the files are the 200-mutant sample's")
+check(set(default_all) <= {f"{m.id}\tline {m.line}\t{m.before}  ->  {m.after}" for m in whole},
+      "--whole-tree keeps every id the default listing has, on the same line")
+sample = [line.split("\t")[0] for line in listing("--whole-tree", "--max", "300", "--seed", "46",
+                                                  "--harness-share", "0.8")]
+check(len(sample) == 300 and any(i.startswith("renderer/") for i in sample),
+      "the 300-sample of issue 46 lists 300 mutants over the renderer too")
+check({"key", "size", "prev-cur"} <= {i.split(":")[1] for i in sample},
+      "the 300-sample draws each new operator")
+
+with tempfile.TemporaryDirectory() as tmp:
+    copy = Path(tmp)
+    (copy / "renderer" / "frame").mkdir(parents=True)
+    probe = copy / "renderer" / "frame" / "probe.cpp"
+    probe.write_text("\n".join([
+        "void f(const State& s, Uniforms& u, Hasher& h, std::string& key, int stride) {",
+        "  h.update(name.data(), name.size());",
+        '  key += "mode=" + mode;',
+        '  add(key, "has no effect unless set");',
+        "  u.viewProj = s.prevCamera.viewProjection;",
+        "  glm::vec2 camera = s.camera.size;",
+        "  std::memcpy(dst, src, n * sizeof(float));",
+        "  std::snprintf(buf, sizeof(buf), fmt, v);",
+        "  const int at = y * stride + x;",
+        "  return prevCamera;",
+        "}", ""]))
+    found = {(m.op, m.after) for m in ops.file_mutants(copy, "renderer/frame/probe.cpp", "harness")
+             if m.op in ops.WHOLE_TREE_OPS}
+    for op, after in (("key", ""), ("key", ""),
+                      ("prev-cur", "u.viewProj = s.camera.viewProjection;"),
+                      ("size", "std::memcpy(dst, src, n * (sizeof(float) * 2));"),
+                      ("size", "const int at = y * (stride + 1) + x;"),
+                      ("prev-cur", "return camera;")):
+        check((op, after) in found, f"{op} site: {after or '(line deleted)'}")
+    mutants = ops.file_mutants(copy, "renderer/frame/probe.cpp", "harness")
+    keys = [m.before for m in mutants if m.op == "key"]
+    check(keys == ["h.update(name.data(), name.size());", 'key += "mode=" + mode;'],
+          f"key drops hash and key-string feeds, not a message (got {keys})")
+    check(not any(m.op == "size" and "snprintf" in m.before for m in mutants),
+          "no size site in a buffer capacity handed to a formatter")
+    check(not any(m.op == "prev-cur" and m.before.startswith("glm::vec2 camera") and
+                  m.after.startswith("glm::vec2 prevCamera") for m in mutants),
+          "a declared name is not renamed")
+    for m in (m for m in mutants if m.op in ops.WHOLE_TREE_OPS):
+        before = probe.read_bytes()
+        original = ops.apply(copy, m)
+        lines = probe.read_text().split("\n")
+        check(lines[m.line - 1].strip() == m.after and len(lines) == len(before.decode().split("\n")),
+              f"{m.id}: writes the listed mutation on its line")
+        ops.restore(copy, m, original)
+        check(probe.read_bytes() == before, f"{m.id}: restore leaves the file byte-identical")
+
+# Per-file rebuilds: C++ rebuilds the harness and the tests, a user header's source only the
+# headers; the mutant after a user header's rebuilds the headers too, so the restored one
+# reaches the build folder before it runs.
+by_file = {}
+for m in whole:
+    by_file.setdefault(m.file, m)
+cpp = [by_file[f] for f in sorted(by_file) if f.startswith(("renderer/", "core/"))]
+check(cpp and all(ops.tree_targets(m) == ["taa-harness", "taa_tests"] for m in cpp),
+      "renderer/ and core/ mutants rebuild the harness and the tests")
+header = by_file["shaders/user/taa_user.h.in"]
+check(ops.tree_targets(header) == ["taa_user_h"], f"{header.id} rebuilds the user headers only")
+check(ops.build_targets(cpp[0], ops.tree_targets(header)) == ["taa-harness", "taa_tests", "taa_user_h"],
+      "after a user header's mutant the next mutant rebuilds the restored headers too")
+check(ops.build_targets(shader, ops.tree_targets(header)) == [],
+      "a shader mutant built into a copy builds nothing in the tree")
+
+# A shader mutant meets the GPU tests of its pass under the names they use: the tracer's are
+# adaptive_*, the resolve's (shaders/taa/) resolve_* (the history clamp's firefly test).
+check(any(src.name == "resolve_tone_weight_test.cpp"
+          for src in mutate_runner.test_sources("shaders/taa/color_space.glsl")),
+      "a shaders/taa/ mutant runs tests/renderer/resolve_*_test.cpp")
 
 check.finish()

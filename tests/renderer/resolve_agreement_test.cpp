@@ -293,19 +293,6 @@ TEST(ResolveAgreement, LogToneWeighting) {
   checkAgreement([](spec::TaaSpec& t) { t.tonemap_weighting = ToneWeight::Log; }, kNoToneWeight);
 }
 
-// A YCoCg box's corners lie outside the RGB cube, so the clamped history can carry negative
-// components (luma even below -1): the weighted blends must see only its non-negative part.
-TEST(ResolveAgreement, ToneWeightingOfAHistoryClampedInYCoCg) {
-  for (const ToneWeight w : {ToneWeight::Karis, ToneWeight::InverseLuma, ToneWeight::Log})
-    checkAgreement(
-        [w](spec::TaaSpec& t) {
-          t.color_space = ColorSpace::YCoCg;
-          t.shrink_chroma = true;
-          t.tonemap_weighting = w;
-        },
-        kNoToneWeight);
-}
-
 TEST(ResolveAgreement, LottesLumaWeighting) {
   checkAgreement([](spec::TaaSpec& t) { t.luma_weight = true; },
                  [](spec::TaaSpec& t) { t.luma_weight = false; });

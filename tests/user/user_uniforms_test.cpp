@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "case/case_loader.h"
@@ -22,12 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using namespace taa;
 
-// Three loose globals, as a Unity TAA declares them: a vector, a scalar and a matrix.
-const char* kLoose = R"(#include "taa_user.hlsli"
-float4 _FinalBlendParameters;
-float _Sharpness;
-float4x4 _ColorMatrix;
-TAA_NUMTHREADS
+// One resolve body, declared two ways: three loose globals, as a Unity TAA declares them (a
+// vector, a scalar and a matrix), and its twin with the same values written into the code.
+const std::string kBody = R"(TAA_NUMTHREADS
 void main(uint3 id : SV_DispatchThreadID) {
   int2 p;
   if (!taa_pixel(id, p)) return;
@@ -36,19 +34,17 @@ void main(uint3 id : SV_DispatchThreadID) {
 }
 )";
 
-// Its twin with the same values written into the code.
-const char* kBaked = R"(#include "taa_user.hlsli"
+const std::string kLoose = R"(#include "taa_user.hlsli"
+float4 _FinalBlendParameters;
+float _Sharpness;
+float4x4 _ColorMatrix;
+)" + kBody;
+
+const std::string kBaked = R"(#include "taa_user.hlsli"
 static const float4 _FinalBlendParameters = float4(0.25, 0.0, 0.5, 1.0);
 static const float _Sharpness = 0.75;
 static const float4x4 _ColorMatrix = float4x4(0, 1, 0, 0,  1, 0, 0, 0,  0, 0, 0.5, 0,  0, 0, 0, 1);
-TAA_NUMTHREADS
-void main(uint3 id : SV_DispatchThreadID) {
-  int2 p;
-  if (!taa_pixel(id, p)) return;
-  float4 c = mul(_ColorMatrix, float4(taa_color_at(p), 1.0));
-  taa_output[p] = c * _Sharpness + _FinalBlendParameters;
-}
-)";
+)" + kBody;
 
 const char* kParams = R"([
   {"name": "_FinalBlendParameters", "value": [0.25, 0.0, 0.5, 1.0]},

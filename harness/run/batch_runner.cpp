@@ -199,7 +199,7 @@ BatchOutcome runBatch(const CaseBatch& batch, const BatchOptions& options,
   // --no-reference-cache: a cache that holds nothing and reads nothing from disk, so every
   // reference renders and the closing line still counts them.
   const auto store = options.shareReferences ? ReferenceStore::fromEnvironment(std::cerr) : nullptr;
-  ReferenceCache references(options.shareReferences ? size_t(128) << 20 : 0, store.get());
+  ReferenceCache references(options.shareReferences ? kDefaultReferenceMemoryBytes : 0, store.get());
   std::vector<CaseSlot> slots(count);
   bool regression = false, badInput = false;
   StagingFolder staging;

@@ -191,7 +191,7 @@ Scorecard runScore(Device& device, const ScoreOptions& o) {
   bool compiled = false;
   // References kept across runs: scoring again after an edit of a shader renders none.
   const auto store = ReferenceStore::fromEnvironment(std::cerr);
-  ReferenceCache references(size_t(128) << 20, store.get());
+  ReferenceCache references(kDefaultReferenceMemoryBytes, store.get());
   for (const auto& file : files) {
     if (o.maxCases > 0 && int(s.cases.size()) >= o.maxCases) break;
     const cases::LoadedCase own = cases::loadCase(file);

@@ -92,7 +92,7 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
   std::vector<lanes::LaneSetup> setups;
   // Kept across runs: a sweep after a run (or another sweep) of the case renders no reference.
   const auto store = ReferenceStore::fromEnvironment(std::cerr);
-  ReferenceCache references(size_t(128) << 20, store.get());
+  ReferenceCache references(kDefaultReferenceMemoryBytes, store.get());
   for (const auto& l : lanes) {
     lanes::LaneSetup s{&l->loaded.spec, nullptr, {}, read};
     if (setups.empty()) {

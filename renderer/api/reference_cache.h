@@ -28,13 +28,16 @@ struct ReferenceCacheStats {
   size_t bytes = 0;     // held now
 };
 
+// What a process keeps of references in memory unless told otherwise (run, score, sweep).
+inline constexpr size_t kDefaultReferenceMemoryBytes = size_t(128) << 20;
+
 class ReferenceCache {
  public:
   // Holds at most `maxBytes` of images, dropping the least recently used first: memory stays
   // flat however many cases a run has.
   // A miss in memory asks `store` (api/reference_store.h), when given, and a render is written
   // to it.
-  explicit ReferenceCache(size_t maxBytes = size_t(128) << 20, ReferenceStore* store = nullptr)
+  explicit ReferenceCache(size_t maxBytes = kDefaultReferenceMemoryBytes, ReferenceStore* store = nullptr)
       : maxBytes_(maxBytes), store_(store) {}
 
   // The image kept under `key`, in memory or in the store, if any.

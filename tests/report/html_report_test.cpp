@@ -121,6 +121,25 @@ TEST_F(ReportHtml, CaseWithoutFramesOrImagesStillRenders) {
   EXPECT_EQ(count(html_, "<svg "), 4u);  // error and frame-time curves of the two full cases
 }
 
+// report.ab: B is a second replay's output. When it is missing the view must say so, not link
+// an image that is not there.
+TEST_F(ReportHtml, AnAbViewWithoutItsSecondOutputSaysSo) {
+  taa::run::RunResults r = results_;
+  taa::run::FrameImages& im = r.cases[0].frames[0].images;
+  im.abLabel = "alpha 0.2";
+  im.ab = "img/missing_ab.png";
+  const std::string missing = renderHtmlReport(r, dir_);
+  EXPECT_NE(missing.find("A/B of the second parameter set needs both outputs"), std::string::npos);
+  EXPECT_EQ(missing.find("missing_ab.png"), std::string::npos);
+
+  taa::writePngLinear8(dir_ / "img/present_ab.png", taa::test::testPicture(0.1f));
+  im.ab = "img/present_ab.png";
+  const std::string present = renderHtmlReport(r, dir_);
+  EXPECT_EQ(present.find("needs both outputs"), std::string::npos);
+  EXPECT_NE(present.find("src=\"img/present_ab.png\""), std::string::npos);
+  EXPECT_NE(present.find("B: alpha 0.2"), std::string::npos);
+}
+
 TEST_F(ReportHtml, DeterministicAtomicAndExtendable) {
   EXPECT_EQ(renderHtmlReport(results_, dir_), html_);
   for (const auto& e : fs::directory_iterator(dir_))

@@ -150,6 +150,27 @@ void main() {
   EXPECT_EQ(fourth.spirv, third.spirv);
 }
 
+// The cache key's parts are kept apart: a `#define` given as an option and the same line at the
+// top of the source are different programs (GLSL wants #version first), so the second must be
+// compiled, and refused, not served the first one's SPIR-V.
+TEST_F(GlslCompilerTest, ADefineOptionAndTheSameLineInTheSourceAreDifferentEntries) {
+  const std::string body = R"(#version 450
+#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * SCALE, 1.0));
+}
+)";
+  options_.cacheDir = dir_ / "cache_define_boundary";
+  options_.defines = {"SCALE=0.5"};
+  const auto file = write("boundary.comp", body);
+  EXPECT_FALSE(compileComputeShader(file, options_).fromCache);
+  options_.defines.clear();
+  write("boundary.comp", "#define SCALE 0.5\n" + body);
+  EXPECT_NE(compileError(file).find("version"), std::string::npos);
+}
+
 // taa_user.h is generated from the resolve input table: every row offered to a user's shader
 // is declared by its macro, at its binding, and reflects back as exactly that input.
 TEST_F(GlslCompilerTest, EveryTableInputIsDeclaredByItsMacroAndReflectsAsItself) {

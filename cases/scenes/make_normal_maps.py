@@ -7,6 +7,12 @@ normal_tilt.gltf: two 1x1 quads on the ground (y = 0, facing +Y), u along +x, v 
   tests/renderer/normal_map_test.cpp to pin the tangent frame's signs.
 normal_bumps.gltf: an 8x8 floor whose UVs repeat a 64x64 map of round bumps (normal_bumps.png)
   once per unit; the case normal_map_bumps shows their speculars under camera motion.
+normal_half.gltf: a 2x2 floor whose map (normal_half.png) holds 127 in every channel of its left
+  column and 128 in its right; u spans 0.5 +- 2^-12 across the floor, so pixels sample the map
+  exactly half way between the two, where a float filter gives 0.5 and the tangent-space normal
+  (2t - 1) is exactly 0. Its sampler mirrors (MIRRORED_REPEAT), which lavapipe filters in float
+  (it filters 8-bit maps in fixed point only for repeat and clamp). Used by
+  tests/renderer/normal_map_test.cpp: the zero normal keeps the surface's.
 Only the standard library: PNGs are written with zlib, the buffers as data URIs.
 """
 import json
@@ -53,14 +59,14 @@ def bump(x, y, size):
     return encode(tuple(c / length for c in n))
 
 
-def quad(x0, x1, z0, z1, u1, v1):
+def quad(x0, x1, z0, z1, u1, v1, u0=0):
     # CCW seen from +Y (glTF front face), normal +Y; u along +x, v along +z.
     pos = [(x0, 0, z0), (x0, 0, z1), (x1, 0, z1), (x1, 0, z0)]
-    uv = [(0, 0), (0, v1), (u1, v1), (u1, 0)]
+    uv = [(u0, 0), (u0, v1), (u1, v1), (u1, 0)]
     return pos, uv, [0, 1, 2, 0, 2, 3]
 
 
-def gltf(path, quads, materials, images):
+def gltf(path, quads, materials, images, wrap=10497):
     buf = Buffer()
     add = buf.add
     primitives = []
@@ -81,7 +87,7 @@ def gltf(path, quads, materials, images):
         "meshes": [{"primitives": primitives}],
         "materials": materials,
         "textures": [{"source": i, "sampler": 0} for i in range(len(images))],
-        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
+        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": wrap, "wrapT": wrap}],
         "images": [{"uri": name} for name in images],
         "accessors": buf.accessors,
         "bufferViews": buf.views,
@@ -105,3 +111,6 @@ gltf(os.path.join(HERE, "normal_tilt.gltf"),
      [grey(0), grey(1)], ["normal_tilt_u.png", "normal_tilt_v.png"])
 png(os.path.join(HERE, "normal_bumps.png"), 64, bump)
 gltf(os.path.join(HERE, "normal_bumps.gltf"), [quad(-4, 4, -4, 4, 8, 8)], [grey(0, 0.5)], ["normal_bumps.png"])
+png(os.path.join(HERE, "normal_half.png"), 2, lambda x, y, size: [127 + x] * 3 + [255])
+gltf(os.path.join(HERE, "normal_half.gltf"), [quad(-1, 1, -1, 1, 0.5 + 2 ** -12, 1, 0.5 - 2 ** -12)],
+     [grey(0)], ["normal_half.png"], wrap=33648)

@@ -127,5 +127,44 @@ TEST(NormalMap, StrengthIsRefusedWhereItWouldDoNothing) {
   EXPECT_NO_THROW(scene::buildScene(adaptive));
 }
 
+// cases/scenes/normal_half.gltf: the floor's map holds 127 and 128 in every channel, and its u is
+// exactly 0.5 down the view's centre column (the camera looks straight along the floor's v),
+// where lavapipe's float filter (the sampler mirrors) gives 0.5 and the tangent-space normal is
+// exactly 0. Such a pixel keeps its surface normal, so it is shaded as the flat floor (strength 0)
+// is; elsewhere the map's near-zero normals tilt far either way. Dividing by the zero length
+// instead gives a NaN normal, which the lighting reads as facing away: ambient only.
+FrameRecord halfMapFrame(const std::string& path, float strength) {
+  return test::renderCase(test::caseFromJson(R"({
+      "scene": {"gltf": "scenes/normal_half.gltf"},
+      "material": {"normal_strength": )" + std::to_string(strength) + R"(},
+      "lighting": {"direction": [0.3, -1, 0.2]},
+      "render": {"path": ")" + path + R"(", "width": 160, "height": 90},
+      "camera": {"position": [0, 1.6, 1.6], "target": [0, 0, 0]},
+      "jitter": {"pattern": "none"},
+      "taa": {"mode": "off"},
+      "script": {"frames": 1},
+      "output": {"frames": [0], "aux": ["depth"]}
+    })",
+                                             "normal_half"))[0];
+}
+
+TEST(NormalMap, AZeroTangentSpaceNormalKeepsTheSurfacesNormal) {
+  for (const char* path : {"forward", "deferred"}) {
+    const FrameRecord mappedRecord = halfMapFrame(path, 1.0f), flatRecord = halfMapFrame(path, 0.0f);
+    const Image &mapped = mappedRecord.color, &flat = flatRecord.color;
+    const Image& depth = test::auxImage(mappedRecord, "depth");
+    const int x = mapped.width / 2 - 1;
+    int floor = 0, asFlat = 0;
+    for (int y = 0; y < mapped.height; ++y) {
+      if (depth.at(x, y) == 0.0f) continue;  // sky
+      ++floor;
+      asFlat += flat.at(x, y, 0) == mapped.at(x, y, 0) && flat.at(x, y, 1) == mapped.at(x, y, 1) &&
+                flat.at(x, y, 2) == mapped.at(x, y, 2);
+    }
+    EXPECT_GE(floor, 40) << path;
+    EXPECT_EQ(asFlat, floor) << path << ": centre column pixels shaded as the flat floor";
+  }
+}
+
 }  // namespace
 }  // namespace taa

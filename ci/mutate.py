@@ -181,7 +181,10 @@ def main():
                        seconds=round(time.monotonic() - start, 1))
             records.append(rec)
             log(f"[{n}/{len(chosen)}] {status:9} {m.id} ({rec['seconds']} s): {detail}")
-            write_reports(out, summarize(records, judged, args))
+            # The verdicts kept from OUT that lie further on go in too: a run that stops here
+            # (a crash, kill -9) must not lose what it has not reached yet.
+            ahead = [done[c.id] for c in chosen[n:] if c.id in done]
+            write_reports(out, summarize(records + ahead, judged, args))
     except Interrupted as e:
         log(f"interrupted ({e}): every file restored; partial report in {out}")
         return 130

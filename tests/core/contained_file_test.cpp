@@ -61,5 +61,14 @@ TEST(ContainedFile, RefusesFifosDevicesFoldersAndLargeFilesWithoutWaiting) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
+// The limit is the largest size read, not the first size refused.
+TEST(ContainedFile, AFileOfExactlyTheLimitIsReadAndOneByteMoreIsNot) {
+  const fs::path run = containedScratch() / "run";
+  std::ofstream(run / "case" / "at.png") << std::string(1024, 'x');
+  std::ofstream(run / "case" / "over.png") << std::string(1025, 'x');
+  EXPECT_EQ(readContainedFile(run, "case/at.png", 1024, "the image").size(), 1024u);
+  EXPECT_NE(containedRefusal(run, "case/over.png").find("over the limit"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace taa

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "core/image.h"
@@ -100,6 +101,26 @@ TEST_F(OutputPathCli, CoverageResultsAFifoIsRefusedAtOnce) {
       harness("coverage " + casePath("small") + " --results " + (root_ / "results.json").string());
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("results.json: cases[0].log"), std::string::npos) << bad.output;
+}
+
+// The resolve's lines are named as a developer finds them, from the repository's shaders/ folder,
+// wherever the build installed the sources.
+TEST_F(OutputPathCli, CoverageNamesTheResolvesLinesUnderShaders) {
+  run::RunResults traced;
+  traced.cases.emplace_back();
+  traced.cases[0].name = "small";
+  traced.cases[0].log = {
+      "taa_resolve spec constants: 0=2 1=1 19=0 20=0 21=0 2=0 3=2 4=2 5=3 6=1 7=0 8=1 9=0 10=0 "
+      "11=0 23=0 12=0 13=1 14=0 15=0 16=0 24=0 17=0 18=0 25=0 26=0 27=0 22=0"};
+  std::ofstream(root_ / "results.json") << run::toJson(traced).dump();
+  const auto r = harness("coverage " + casePath("small") + " --results " +
+                         (root_ / "results.json").string() + " --json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+  std::set<std::string> files;
+  for (const auto& line : j.at("resolve_lines")) files.insert(line.at("file").get<std::string>());
+  EXPECT_TRUE(files.count("shaders/taa/rectify.glsl")) << r.output.substr(0, 2000);
+  for (const auto& f : files) EXPECT_EQ(f.rfind("shaders/", 0), 0u) << f;
 }
 
 }  // namespace

@@ -50,6 +50,10 @@ TEST(TrackCsv, FrameColumnUsesTheFpsDirective) {
   ASSERT_EQ(t.samples.size(), 2u);
   EXPECT_EQ(t.samples[1].time, 1.0 / 144.0);
   EXPECT_FALSE(t.hasFov);
+  // The space after the colon is optional.
+  const RawTrack tight =
+      camera("# fps:24\nframe,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0,1,0,0,0,1\n");
+  EXPECT_EQ(tight.samples[1].time, 1.0 / 24.0);
 }
 
 TEST(TrackCsv, MoverScaleColumns) {

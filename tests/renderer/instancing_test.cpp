@@ -11,6 +11,7 @@
 
 #include "scene/gltf_loader.h"
 #include "script/frame_state.h"
+#include "support/content.h"
 #include "support/gpu.h"
 
 namespace taa {
@@ -96,6 +97,19 @@ TEST(Instancing, EveryInstanceIsDrawnOutsideOutWithItsOwnVelocity) {
   EXPECT_GT(pixels, 300);
   EXPECT_GT(fastest, 1.0) << "the boxes move";
   EXPECT_LT(worst, 2e-2);
+}
+
+// The tracer winds a mirrored instance's triangles back to counter-clockwise fronts, as the
+// raster's mirrored draw does: the single-sided mirrored box shows its outside to a ray too.
+TEST(Instancing, TheTracerSeesTheMirroredBoxAsTheRasterDoes) {
+  const std::string members = R"("scene": {"gltf": "scenes/instancing.gltf", "animation_offset_s": 0.3},
+    "camera": {"position": [0, 2.2, 3.4], "target": [0, 0.5, 0]})";
+  const auto spec = test::stillCase(members, "instancing_traced");
+  const double a = 5 * kPi / 3.0, t = script::frameState(spec, 0).worldAnimTime;
+  const glm::dvec3 mirrored(ring(t) * glm::dvec4(1.2 * std::cos(a), 0.0, 1.2 * std::sin(a), 1.0));
+  const test::TracedAndRaster r = test::traceEveryPixel(members);
+  const test::Pixel p = test::pixelOf(spec, glm::vec3(mirrored));
+  test::expectTracedMatchesRaster(r, p.x, p.y, "the mirrored box");
 }
 
 }  // namespace

@@ -70,10 +70,8 @@ std::vector<DeclaredConstant> declaredConstants(const std::string& s) {
     for (size_t i = at + kKey.size(); i < close; ++i)
       if (std::isdigit(static_cast<unsigned char>(s[i]))) {
         id = 0;
-        for (;
-             i < close && std::isdigit(static_cast<unsigned char>(s[i])) && id < (int64_t(1) << 40);
-             ++i)
-          id = id * 10 + (s[i] - '0');
+        for (; i < close && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
+          id = std::min(id * 10 + (s[i] - '0'), kConstantIdCap);
         break;
       }
     out.push_back({name, *type, id});

@@ -16,8 +16,12 @@ namespace taa::user {
 struct DeclaredConstant {
   std::string name;
   ParamType type = ParamType::Float;
-  int64_t id = -1;  // its constant_id as written, -1 if not a plain number
+  int64_t id = -1;  // its constant_id as written, -1 if not a plain number, kConstantIdCap or more
 };
+
+// Ids are read up to this (2^40) and saturate there: far past any valid one (0 to 99), and a
+// number of any length neither overflows nor reads as a smaller one.
+inline constexpr int64_t kConstantIdCap = int64_t(1) << 40;
 
 // Every `layout(constant_id = N) const T name` (GLSL) and `[[vk::constant_id(N)]] const T name`
 // (HLSL) in `preprocessed`, in order, but for the header's own (taa_*) and those whose type

@@ -39,5 +39,18 @@ TEST(DeclaredConstants, HostileTextStaysBoundedAndLinear) {
   EXPECT_EQ(declaredConstants(many).size(), kMaxDeclaredConstants);
 }
 
+// An id of any length reads as itself up to the cap and as the cap past it: never as a
+// prefix of what was written (1500000000000000 read as 1500000000000 before).
+TEST(DeclaredConstants, AHugeIdSaturatesAtTheCap) {
+  const auto c = declaredConstants(
+      "layout(constant_id = 1099511627775) const float a = 1.0;\n"
+      "layout(constant_id = 1500000000000000) const float b = 1.0;\n"
+      "layout(constant_id = 99999999999999999999999999) const float c = 1.0;\n");
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].id, kConstantIdCap - 1);
+  EXPECT_EQ(c[1].id, kConstantIdCap);
+  EXPECT_EQ(c[2].id, kConstantIdCap);
+}
+
 }  // namespace
 }  // namespace taa::user

@@ -87,5 +87,22 @@ TEST(Coverage, ResolveConstantsComeFromTheRunLogsTrace) {
   EXPECT_TRUE(reaching(rows, "kShaped", "true").empty());
 }
 
+// A run's logs as `coverage --results` reads them: each case with a log kept under its name, a
+// case without one left out, and a trace that is no trace refused naming its case's index.
+TEST(Coverage, RunLogsAreKeptByCaseAndABadTraceNamesItsCase) {
+  const auto kept = cases::checkedRunLogs({{"a", {"taa_resolve spec constants: 0=2"}},
+                                           {"quiet", {}},
+                                           {"b", {"pass tscmaa"}}});
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept.at("a"), std::vector<std::string>{"taa_resolve spec constants: 0=2"});
+  EXPECT_EQ(kept.at("b"), std::vector<std::string>{"pass tscmaa"});
+  try {
+    cases::checkedRunLogs({{"a", {"pass x"}}, {"b", {"taa_resolve spec constants: 0=99999999999"}}});
+    ADD_FAILURE() << "a constant of 11 digits was read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("cases[1].log: ", 0), 0u) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace taa

@@ -60,6 +60,7 @@ class ReportAb : public ::testing::Test {
 TEST_F(ReportAb, AnEmptyPresetReproducesAAndAnotherPresetDiffers) {
   const auto same = run(R"({"ab": "same"})");
   ASSERT_EQ(same.frames.size(), 2u);
+  EXPECT_EQ(same.framesRendered, 2 * 6) << "A and B, six frames each (the run line's count)";
   for (const auto& f : same.frames) {
     ASSERT_FALSE(f.images.ab.empty());
     EXPECT_EQ(f.images.abLabel, "preset same");

@@ -171,6 +171,30 @@ void main() {
   EXPECT_NE(compileError(file).find("version"), std::string::npos);
 }
 
+// A cache entry keeps what the source declares: a shader with its own constant comes from the
+// cache the second time, with the constant's name and type (they tell a removed constant from a
+// mistyped name).
+TEST_F(GlslCompilerTest, ACachedShaderKeepsItsDeclaredConstants) {
+  options_.cacheDir = dir_ / "cache_constants";
+  const auto file = write("constants.comp", R"(#version 450
+#include "taa_user.h"
+layout(constant_id = 3) const float kScale = 0.5;
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * kScale, 1.0));
+}
+)");
+  const auto first = compileComputeShader(file, options_);
+  const auto second = compileComputeShader(file, options_);
+  ASSERT_EQ(first.constants.size(), 1u);
+  EXPECT_FALSE(first.fromCache);
+  EXPECT_TRUE(second.fromCache);
+  ASSERT_EQ(second.constants.size(), 1u);
+  EXPECT_EQ(second.constants[0].name, "kScale");
+  EXPECT_EQ(second.constants[0].type, ParamType::Float);
+}
+
 // taa_user.h is generated from the resolve input table: every row offered to a user's shader
 // is declared by its macro, at its binding, and reflects back as exactly that input.
 TEST_F(GlslCompilerTest, EveryTableInputIsDeclaredByItsMacroAndReflectsAsItself) {

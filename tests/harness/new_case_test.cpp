@@ -99,6 +99,14 @@ TEST_F(HarnessNewCase, NamesAreShortAndPrintable) {
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(root_ / "cases")) files += e.is_regular_file();
   EXPECT_EQ(files, 1u) << "only the case the fixture wrote";
+  // The limit is the longest name taken: 100 characters make a case, 101 do not.
+  const auto at = harness("new-case --scene " + (root_ / "cases/scenes/skinned_quad.gltf").string() +
+                          " --name " + std::string(100, 'b'));
+  EXPECT_EQ(at.exitCode, 0) << at.output;
+  EXPECT_TRUE(fs::is_regular_file(root_ / "cases" / (std::string(100, 'b') + ".json")));
+  const auto over = harness("new-case --scene " + (root_ / "cases/scenes/skinned_quad.gltf").string() +
+                            " --name " + std::string(101, 'c'));
+  EXPECT_EQ(over.exitCode, 2) << over.output;
 }
 
 }  // namespace

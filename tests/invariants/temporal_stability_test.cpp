@@ -96,3 +96,15 @@ TEST(InvariantTemporalStability, InapplicableWithoutHistoryOrPerPixelBuffers) {
   dbg.debug.output = spec::DebugOutput::ClampDistance;
   EXPECT_TRUE(contains(inapplicable("temporal_stability", dbg), "debug.output is clamp_distance"));
 }
+
+// Stereo TSCMAA writes both eyes side by side, so the output is not the render size; one eye is.
+TEST(InvariantTemporalStability, OnlyStereoTscmaaIsRefusedForItsOutputSize) {
+  auto stereo = staticCase();
+  stereo.taa.mode = spec::TaaMode::Tscmaa;
+  stereo.tscmaa.eyes = 2;
+  EXPECT_TRUE(contains(inapplicable("temporal_stability", stereo), "tscmaa.eyes 2"));
+  auto mono = stereo;
+  mono.tscmaa.eyes = 1;
+  EXPECT_FALSE(contains(inapplicable("temporal_stability", mono), "tscmaa.eyes"))
+      << inapplicable("temporal_stability", mono);
+}

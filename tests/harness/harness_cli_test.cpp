@@ -291,6 +291,17 @@ TEST_F(HarnessCli, ValidationLayerReportsNothing) {
   const auto r = run("checked", "--validate");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
+  // TSCMAA binds its two uniform blocks per eye at offsets of one buffer: a range past an
+  // eye's block runs off the buffer's end (VUID-VkDescriptorBufferInfo-range-00342).
+  writeCase("stereo", R"({
+    "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+    "taa": {"mode": "tscmaa"}, "tscmaa": {"eyes": 2},
+    "movers": [{"shape": "sphere", "start": [-2, 0.7, 1.5], "end": [2, 0.7, 1.5], "speed": 2}],
+    "script": {"frames": 4}, "checks": {"golden": false, "invariants": ["finite"]}
+  })");
+  const auto stereo = run("stereo", "--validate");
+  EXPECT_EQ(stereo.exitCode, 0) << stereo.output;
+  EXPECT_EQ(stereo.output.find("validation:"), std::string::npos) << stereo.output;
 }
 
 }  // namespace

@@ -216,6 +216,17 @@ TEST(GltfHostile, TextureSourceAndSamplerOutOfRange) {
                       "textures[0].sampler is 3, but there are no samplers"));
 }
 
+// A primitive's material one past the end (the array's size, the likeliest off-by-one) is
+// refused by the document's index rules, before conversion reads it; the last one loads.
+TEST(GltfHostile, MaterialIndexOnePastTheEnd) {
+  const fs::path dir = scratch();
+  const std::string materials = R"(, "materials": [{"name": "only"}])";
+  Scene ok;
+  EXPECT_NO_THROW(loadGltf(writeTriangle(dir, accessor("3"), kView, materials, "", R"(, "material": 0)"), ok));
+  EXPECT_TRUE(refused(writeTriangle(dir, accessor("3"), kView, materials, "", R"(, "material": 1)"),
+                      "meshes[0].primitives[0].material is 1, but materials has 1 entry"));
+}
+
 TEST(GltfHostile, DeepNodeChainLoadsWithoutRecursion) {
   const fs::path dir = scratch();
   constexpr int kDepth = 100000;

@@ -31,6 +31,16 @@ class ShaderFolderTest : public ::testing::Test {
     std::ofstream(p, std::ios::binary) << text;
     return p;
   }
+  // The message of compiling `file`, which must be refused.
+  std::string compileError(const std::filesystem::path& file) {
+    try {
+      user::compileComputeShader(file, options_);
+    } catch (const user::ShaderCompileError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << file << " compiled";
+    return {};
+  }
   std::filesystem::path dir_;
   user::CompileOptions options_;
 };

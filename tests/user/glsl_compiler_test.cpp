@@ -1,6 +1,6 @@
 // The run-time compiler of users' resolves: good shaders compile, errors name the file and
 // line, #include is resolved beside the includer and in the installed header folder and never
-// outside the shader's folder, and SPIR-V is cached by the content of every file it reads.
+// outside the shader's folder (the SPIR-V cache: spirv_cache_test.cpp).
 #include "user/glsl_compiler.h"
 
 #include <gtest/gtest.h>
@@ -19,18 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class GlslCompilerTest : public test::ShaderFolderTest {
- protected:
-  std::string compileError(const fs::path& file) {
-    try {
-      compileComputeShader(file, options_);
-    } catch (const ShaderCompileError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << file << " compiled";
-    return {};
-  }
-};
+using GlslCompilerTest = test::ShaderFolderTest;
 
 const char* kPassThrough = R"(#version 450
 #include "taa_user.h"
@@ -109,90 +98,6 @@ TEST_F(GlslCompilerTest, ShaderOutsideTheRootIsRefused) {
   std::ofstream(dir_ / "outside.comp") << kPassThrough;
   const std::string msg = compileError(dir_ / "outside.comp");
   EXPECT_NE(msg.find("outside.comp"), std::string::npos) << msg;
-}
-
-TEST_F(GlslCompilerTest, SecondCompileComesFromTheCacheUntilAnIncludeChanges) {
-  write("lib/k.glsl", "const float K = 0.5;\n");
-  const auto file = write("cached.comp", R"(#version 450
-#include "taa_user.h"
-#include "lib/k.glsl"
-void main() {
-  ivec2 p;
-  if (!taa_pixel(p)) return;
-  imageStore(taa_output, p, vec4(taa_color_at(p) * K, 1.0));
-}
-)");
-  // A fresh cache folder of its own: the process remembers what it did per cache key.
-  options_.cacheDir = dir_ / "cache_provenance";
-  const auto first = compileComputeShader(file, options_);
-  const auto second = compileComputeShader(file, options_);
-  EXPECT_FALSE(first.fromCache);
-  EXPECT_TRUE(second.fromCache);
-  EXPECT_EQ(first.provenance, "compiled by glslang: no cache entry");
-  // The second lookup was served by the cache, but this process compiled the shader: the
-  // run log must not claim the cache saved the compile.
-  EXPECT_EQ(second.provenance, first.provenance);
-  EXPECT_EQ(first.spirv, second.spirv);
-  EXPECT_EQ(first.includes, second.includes);
-  // Same main file, edited header: a stale cache entry would keep K = 0.5.
-  write("lib/k.glsl", "const float K = 0.25;\n");
-  const auto third = compileComputeShader(file, options_);
-  EXPECT_FALSE(third.fromCache);
-  EXPECT_NE(third.spirv, first.spirv);
-  EXPECT_NE(third.provenance.find("recompiled by glslang: "), std::string::npos) << third.provenance;
-  EXPECT_NE(third.provenance.find("k.glsl changed since it was cached"), std::string::npos)
-      << third.provenance;
-  // A corrupted entry is recompiled, not used.
-  for (const auto& e : fs::directory_iterator(options_.cacheDir))
-    if (e.path().extension() == ".spv") std::ofstream(e.path(), std::ios::binary) << "garbage!";
-  const auto fourth = compileComputeShader(file, options_);
-  EXPECT_FALSE(fourth.fromCache);
-  EXPECT_EQ(fourth.spirv, third.spirv);
-}
-
-// The cache key's parts are kept apart: a `#define` given as an option and the same line at the
-// top of the source are different programs (GLSL wants #version first), so the second must be
-// compiled, and refused, not served the first one's SPIR-V.
-TEST_F(GlslCompilerTest, ADefineOptionAndTheSameLineInTheSourceAreDifferentEntries) {
-  const std::string body = R"(#version 450
-#include "taa_user.h"
-void main() {
-  ivec2 p;
-  if (!taa_pixel(p)) return;
-  imageStore(taa_output, p, vec4(taa_color_at(p) * SCALE, 1.0));
-}
-)";
-  options_.cacheDir = dir_ / "cache_define_boundary";
-  options_.defines = {"SCALE=0.5"};
-  const auto file = write("boundary.comp", body);
-  EXPECT_FALSE(compileComputeShader(file, options_).fromCache);
-  options_.defines.clear();
-  write("boundary.comp", "#define SCALE 0.5\n" + body);
-  EXPECT_NE(compileError(file).find("version"), std::string::npos);
-}
-
-// A cache entry keeps what the source declares: a shader with its own constant comes from the
-// cache the second time, with the constant's name and type (they tell a removed constant from a
-// mistyped name).
-TEST_F(GlslCompilerTest, ACachedShaderKeepsItsDeclaredConstants) {
-  options_.cacheDir = dir_ / "cache_constants";
-  const auto file = write("constants.comp", R"(#version 450
-#include "taa_user.h"
-layout(constant_id = 3) const float kScale = 0.5;
-void main() {
-  ivec2 p;
-  if (!taa_pixel(p)) return;
-  imageStore(taa_output, p, vec4(taa_color_at(p) * kScale, 1.0));
-}
-)");
-  const auto first = compileComputeShader(file, options_);
-  const auto second = compileComputeShader(file, options_);
-  ASSERT_EQ(first.constants.size(), 1u);
-  EXPECT_FALSE(first.fromCache);
-  EXPECT_TRUE(second.fromCache);
-  ASSERT_EQ(second.constants.size(), 1u);
-  EXPECT_EQ(second.constants[0].name, "kScale");
-  EXPECT_EQ(second.constants[0].type, ParamType::Float);
 }
 
 // taa_user.h is generated from the resolve input table: every row offered to a user's shader

@@ -16,7 +16,7 @@ namespace taa::user {
 struct DeclaredConstant {
   std::string name;
   ParamType type = ParamType::Float;
-  int64_t id = -1;  // its constant_id as written, -1 if not a plain number, kConstantIdCap or more
+  int64_t id = -1;  // its constant_id as written (at most kConstantIdCap), -1 if not a number
 };
 
 // Ids are read up to this (2^40) and saturate there: far past any valid one (0 to 99), and a

@@ -1,5 +1,5 @@
 // The constants a shader's source declares, read from its preprocessed text: both languages'
-// spellings, their types, and nothing the header owns or a longer name merely contains.
+// spellings, their types and ids, and nothing the header owns or a longer name merely contains.
 #include "user/declared_constants.h"
 
 #include <gtest/gtest.h>
@@ -15,8 +15,9 @@ TEST(DeclaredConstants, BothLanguagesSpellingsWithTheirTypes) {
       "[[vk::constant_id(6)]]\nstatic const uint count = 4;\n"
       "layout(constant_id = 0) const uint taa_local_size_x = 8;\n"  // the header's own
       "int my_constant_id = 3;\n"                                   // a longer name
-      "layout(constant_id = 7) const vec3 v = vec3(1);\n");         // no scalar: not one of ours
-  ASSERT_EQ(c.size(), 4u);
+      "layout(constant_id = 7) const vec3 v = vec3(1);\n"          // no scalar: not one of ours
+      "layout(constant_id = ID) const float unnumbered = 1.0;\n");  // an id glslang will refuse
+  ASSERT_EQ(c.size(), 5u);
   EXPECT_EQ(c[0].name, "alpha");
   EXPECT_EQ(c[0].type, ParamType::Float);
   EXPECT_EQ(c[1].name, "taps");
@@ -25,6 +26,9 @@ TEST(DeclaredConstants, BothLanguagesSpellingsWithTheirTypes) {
   EXPECT_EQ(c[2].type, ParamType::Bool);
   EXPECT_EQ(c[3].name, "count");
   EXPECT_EQ(c[3].type, ParamType::Uint);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(c[size_t(i)].id, i + 3) << c[size_t(i)].name;
+  EXPECT_EQ(c[4].name, "unnumbered");
+  EXPECT_EQ(c[4].id, -1);  // the header's "not a number", not an id of its own
 }
 
 TEST(DeclaredConstants, HostileTextStaysBoundedAndLinear) {

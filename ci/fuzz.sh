@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # Fuzzes the case reader, the track readers, the glTF loader, the PNG/OpenEXR readers, a
 # user's HLSL resolve (compile, entry-point rules, spirv-val, interface check), the results-file
-# readers (merge, coverage --results, run --verdict-from, bless --from) the lanes reader and the reference cache's
-# entry reader with
-# libFuzzer under ASan
-# and UBSan (ci/asan-build.sh), each for a bounded time: $TAA_FUZZ_SECONDS (default 60).
+# readers (merge, coverage --results, run --verdict-from, bless --from), the lanes reader, and the
+# entry readers of the reference cache and the SPIR-V cache with libFuzzer under ASan and UBSan
+# (ci/asan-build.sh), each for a bounded time: $TAA_FUZZ_SECONDS (default 60).
 # Seeds: the checked-in corpus tests/fuzz/corpus/TARGET (replayed first: each must pass),
 # cases/, the tracks and the glTF scenes. A crash, a sanitizer report, an input running
 # over 10 s or needing over 2 GiB (one allocation over 512 MiB for the image readers, whose

@@ -31,8 +31,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bumped when what this file passes to glslang changes, so older cache entries are ignored.
-constexpr const char* kCompilerTag = "taa-user 3 glslang 12 vulkan1.2 spv1.5 params19";
+// Bumped when what this file passes to glslang, or what a cache entry holds, changes, so older
+// cache entries are ignored ("entry2": a constant's id is stored).
+constexpr const char* kCompilerTag = "taa-user 3 glslang 12 vulkan1.2 spv1.5 params19 entry2";
 
 fs::path absoluteNormal(const fs::path& p) {
   std::error_code ec;

@@ -42,10 +42,13 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
       spvSha = sha;
     } else if (kind == "cap") {
       capabilities.push_back(sha);
-    } else if (kind == "con") {  // "con TYPE NAME"
+    } else if (kind == "con") {  // "con TYPE ID NAME": the id as declaredConstants read it
       const auto type = paramTypeNamed(sha);
-      if (!type || path.empty()) return false;
-      constants.push_back({path, *type});
+      std::istringstream rest(path);
+      int64_t id = 0;
+      std::string name;
+      if (!type || !(rest >> id >> name) || id < -1 || id > kConstantIdCap) return false;
+      constants.push_back({name, *type, id});
     } else if (kind == "inc") {
       std::error_code ec;
       if (!fs::is_regular_file(path, ec)) {
@@ -92,7 +95,8 @@ void writeSpirvCache(const fs::path& dir, const std::string& key, const Compiled
   for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
   for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
   for (const auto& con : c.constants)
-    deps += std::string("con ") + paramTypeName(con.type) + " " + con.name + "\n";
+    deps += std::string("con ") + paramTypeName(con.type) + " " + std::to_string(con.id) + " " +
+            con.name + "\n";
   writeFileAtomically(dir / (key + ".deps"), deps);
 }
 

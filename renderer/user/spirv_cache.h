@@ -12,10 +12,10 @@ namespace taa::user {
 // $TAA_SHADER_CACHE, else $XDG_CACHE_HOME/taa-harness/spirv, else ~/.cache/taa-harness/spirv.
 std::filesystem::path userShaderCacheDir();
 
-// The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash and
-// the capabilities the shader declares; KEY.spv holds the words. A hit needs every include
-// unchanged and the words intact; on a miss `why` says what changed ("" when there is no
-// entry at all).
+// The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash, and the
+// capabilities and specialization constants (type, id, name) the shader declares; KEY.spv holds
+// the words. A hit needs every include unchanged and the words intact; on a miss `why` says
+// what changed ("" when there is no entry at all).
 bool readSpirvCache(const std::filesystem::path& dir, const std::string& key, CompiledShader& out,
                     std::string& why);
 

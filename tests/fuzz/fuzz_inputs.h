@@ -33,6 +33,7 @@
 #include "script/track_csv.h"
 #include "script/track_json.h"
 #include "user/glsl_compiler.h"
+#include "user/spirv_cache.h"
 #include "user/spirv_check.h"
 #include "user/user_interface.h"
 
@@ -140,6 +141,27 @@ inline void readImageBytes(const std::string& bytes) {
   } catch (const exr::ExrError&) {
   } catch (const png::PngError&) {
   }
+}
+
+// A SPIR-V cache entry (user/spirv_cache.h) as a compile reads it: the input is KEY.deps, beside
+// a fixed KEY.spv (the four bytes of kFuzzSpirvWord). The reader parses every line, checks each
+// include the input names and the words' hash, and gives a whole entry or a miss, never a throw;
+// the corpus's hit names that hash, so the fuzzer starts from lines that reach the end.
+inline constexpr char kFuzzSpirvWord[] = "\x03\x02\x23\x07";
+inline bool readSpirvCacheEntry(const std::string& deps) {
+  static const std::filesystem::path dir = [] {
+    const auto d =
+        std::filesystem::temp_directory_path() / ("taa-fuzz-spirv-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    std::ofstream(d / "k.spv", std::ios::binary | std::ios::trunc) << kFuzzSpirvWord;
+    return d;
+  }();
+  std::ofstream(dir / "k.deps", std::ios::binary | std::ios::trunc) << deps;
+  user::CompiledShader out;
+  std::string why;
+  const bool hit = user::readSpirvCache(dir, "k", out, why);
+  if (hit && (out.spirv.size() != 1 || !out.fromCache)) std::abort();
+  return hit;
 }
 
 // A user's HLSL resolve through the compile (glslang in its sandboxed child, the entry point's

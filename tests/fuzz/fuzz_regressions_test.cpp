@@ -61,6 +61,12 @@ TEST(FuzzRegressions, ReferenceEntryCorpus) {
       test::readFile(fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/reference_entry/valid_2x2_rgba"),
       kFuzzReferenceKey));
 }
+TEST(FuzzRegressions, SpirvCacheCorpus) {
+  replay("spirv_cache", [](const std::string& deps) { (void)readSpirvCacheEntry(deps); });
+  // The corpus's whole entry is a hit: the fuzzer starts from lines that reach the words.
+  EXPECT_TRUE(readSpirvCacheEntry(
+      test::readFile(fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/spirv_cache/whole_entry")));
+}
 
 }  // namespace
 }  // namespace taa::fuzz

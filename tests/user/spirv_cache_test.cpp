@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "support/shader_folder.h"
+#include "support/text.h"
 #include "user/glsl_compiler.h"
 
 namespace taa::user::spirv_cache_test {
@@ -75,8 +76,8 @@ void main() {
 }
 
 // A cache entry keeps what the source declares: a shader with its own constant comes from the
-// cache the second time, with the constant's name and type (they tell a removed constant from a
-// mistyped name).
+// cache the second time, with the constant's name, type and id (name and type tell a removed
+// constant from a mistyped name; the id is the compile's to range-check).
 TEST_F(SpirvCacheTest, ACachedShaderKeepsItsDeclaredConstants) {
   options_.cacheDir = dir_ / "cache_constants";
   const auto file = write("constants.comp", R"(#version 450
@@ -96,6 +97,24 @@ void main() {
   ASSERT_EQ(second.constants.size(), 1u);
   EXPECT_EQ(second.constants[0].name, "kScale");
   EXPECT_EQ(second.constants[0].type, ParamType::Float);
+  EXPECT_EQ(second.constants[0].id, 3);
+  // A forged constant line (an id out of range, a line without a name) is a damaged entry:
+  // compiled again, and the constant read from the source.
+  for (const std::string forged :
+       {"con float -7 kScale\n", "con float 99999999999999999999 kScale\n", "con float 3\n"}) {
+    for (const auto& e : fs::directory_iterator(options_.cacheDir))
+      if (e.path().extension() == ".deps") {
+        std::string deps = test::readFile(e.path());
+        const size_t at = deps.find("con float 3 kScale\n");
+        ASSERT_NE(at, std::string::npos) << deps;
+        std::ofstream(e.path(), std::ios::binary)
+            << deps.replace(at, std::string("con float 3 kScale\n").size(), forged);
+      }
+    const auto again = compileComputeShader(file, options_);
+    EXPECT_FALSE(again.fromCache) << forged;
+    ASSERT_EQ(again.constants.size(), 1u);
+    EXPECT_EQ(again.constants[0].id, 3);
+  }
 }
 
 }  // namespace taa::user::spirv_cache_test

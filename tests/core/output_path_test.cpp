@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/input_file.h"
 #include "core/output_file.h"
 #include "support/text.h"
 
@@ -40,6 +41,27 @@ TEST(OutputPath, ANewPathOrARegularFileIsWritten) {
   EXPECT_EQ(outputRefusal(dir / "old.png"), "");
   writeFileAtomically(dir / "old.png", "new");
   EXPECT_EQ(test::readFile(dir / "old.png"), "new");
+}
+
+// A harness started with its standard input closed (`<&-`, some CI runners and daemons) gets
+// descriptor 0 for the next file it opens: a valid descriptor, for writing and for reading.
+TEST(OutputPath, AFileOpenedOnDescriptorZeroIsWrittenAndRead) {
+  const fs::path dir = outputScratch();
+  const int saved = ::dup(0);
+  ASSERT_GE(saved, 0);
+  ::close(0);
+  std::string failure, read;
+  try {
+    writeFileAtomically(dir / "on_fd0.txt", "written");
+    read = readInputFile(dir / "on_fd0.txt", 100);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  ::dup2(saved, 0);
+  ::close(saved);
+  EXPECT_EQ(failure, "");
+  EXPECT_EQ(read, "written");
+  EXPECT_EQ(test::readFile(dir / "on_fd0.txt"), "written");
 }
 
 TEST(OutputPath, AFifoOrALinkIsRefusedAndSurvives) {

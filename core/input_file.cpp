@@ -63,18 +63,24 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out, LastLink 
   // Back to blocking reads: a regular file never blocks, and O_NONBLOCK has done its job.
   ::fcntl(f.fd, F_SETFL, ::fcntl(f.fd, F_GETFL) & ~O_NONBLOCK);
   out.resize(size_t(st.st_size));
+  out.resize(readFully(reinterpret_cast<char*>(out.data()), out.size(),
+                       [&](char* dst, size_t n) { return ::read(f.fd, dst, n); }, file));
+}
+
+}  // namespace
+
+size_t readFully(char* buf, size_t size, const std::function<ssize_t(char*, size_t)>& readSome,
+                 const fs::path& file) {
   size_t done = 0;
-  while (done < out.size()) {
-    const ssize_t n = ::read(f.fd, reinterpret_cast<char*>(out.data()) + done, out.size() - done);
+  while (done < size) {
+    const ssize_t n = readSome(buf + done, size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) refuse(file, "cannot be read (" + std::string(std::strerror(errno)) + ")");
     if (n == 0) break;  // shrank while being read: keep what was there
     done += size_t(n);
   }
-  out.resize(done);
+  return done;
 }
-
-}  // namespace
 
 fs::path followLinks(fs::path p) {
   std::error_code ec;

@@ -6,8 +6,11 @@
 // quote its content.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,5 +61,11 @@ enum class LastLink { Follow, Refuse };
 std::string readInputFile(const std::filesystem::path& file, uint64_t maxBytes,
                           LastLink last = LastLink::Follow);
 std::vector<uint8_t> readInputBytes(const std::filesystem::path& file, uint64_t maxBytes);
+
+// Fills `buf` (`size` bytes) from `readSome(dst, n)`, a read(2) that may deliver fewer bytes than
+// asked (NFS, FUSE) or fail with EINTR (asked again): the bytes read before the end, fewer than
+// `size` for a file that shrank while being read. A read error is an InputFileError naming `file`.
+size_t readFully(char* buf, size_t size, const std::function<ssize_t(char*, size_t)>& readSome,
+                 const std::filesystem::path& file);
 
 }  // namespace taa

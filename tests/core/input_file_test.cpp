@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -34,6 +37,45 @@ TEST(InputFile, ReadsARegularFileWhole) {
   const fs::path f = scratch() / "a.json";
   std::ofstream(f, std::ios::binary) << std::string("{\"x\": 1}\n\0tail", 14);
   EXPECT_EQ(readInputFile(f, 100), std::string("{\"x\": 1}\n\0tail", 14));
+}
+
+// A read(2) on NFS or FUSE may deliver fewer bytes than asked, or stop with EINTR: each piece
+// lands after the last, whatever the pieces' sizes.
+TEST(InputFile, ShortReadsAndInterruptionsFillTheBufferInOrder) {
+  const std::string source = "0123456789abcdefghijklmnopqrstuvwxyz";
+  for (size_t piece : {1u, 3u, 7u, 64u}) {
+    size_t at = 0;
+    bool interrupted = false;
+    auto readSome = [&](char* dst, size_t n) -> ssize_t {
+      if (!interrupted && at == piece) {  // once, after the first piece
+        interrupted = true;
+        errno = EINTR;
+        return -1;
+      }
+      const size_t k = std::min({n, piece, source.size() - at});
+      std::memcpy(dst, source.data() + at, k);
+      at += k;
+      return ssize_t(k);
+    };
+    std::string buf(source.size(), '.');
+    EXPECT_EQ(readFully(buf.data(), buf.size(), readSome, "f"), source.size()) << piece;
+    EXPECT_EQ(buf, source) << piece;
+  }
+  // A file that shrank: what was there; a read error: refused, naming the file.
+  size_t calls = 0;
+  std::string shrunk(8, '.');
+  EXPECT_EQ(readFully(shrunk.data(), shrunk.size(),
+                      [&](char* dst, size_t) -> ssize_t { return calls++ ? 0 : (*dst = 'a', 1); }, "f"),
+            1u);
+  EXPECT_EQ(shrunk, "a.......");
+  try {
+    readFully(shrunk.data(), shrunk.size(), [](char*, size_t) -> ssize_t { return errno = EIO, -1; },
+              "/data/broken.bin");
+    ADD_FAILURE() << "a read error was not refused";
+  } catch (const InputFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("/data/broken.bin: cannot be read"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(InputFile, RefusesWhatIsNotARegularFileWithoutReadingIt) {

@@ -218,6 +218,7 @@ TEST(AdaptiveSegmentation, EachWeightMarksPixelsByItself) {
 // on every frame alike: the command stream repeats from the third frame on, so a thread-count
 // difference or a validation error shows there as in frame 23, at a fraction of the render
 // (the thread-count check renders six: every frame of both cases traces 9-20% of its pixels).
+// The case cut to `frames` frames (its last two written); a cut case has no goldens of its own.
 std::string shortenedCase(const std::string& caseName, int frames) {
   std::ifstream in(std::string(TAA_SOURCE_DIR) + "/cases/" + caseName + ".json");
   auto j = nlohmann::json::parse(in);
@@ -225,6 +226,7 @@ std::string shortenedCase(const std::string& caseName, int frames) {
     j["script"]["frames"] = frames;
     j["output"]["frames"] = {frames - 2, frames - 1};
   }
+  j["checks"]["golden"] = false;
   const std::string dir = std::string(TAA_TEST_OUT) + "/adaptive-short-" + std::to_string(frames);
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/" + caseName + ".json";
@@ -253,10 +255,12 @@ TEST(AdaptiveDeterminism, OneAndTwoLavapipeThreadsGiveIdenticalFrames) {
   }
 }
 
-TEST(AdaptiveCases, RenderCleanUnderValidation) {
+// `run`, not `render`: adaptive_wires's adaptive_unmarked invariant captures the resolve before
+// the trace, a copy with barriers of its own that `render` leaves out.
+TEST(AdaptiveCases, RunCleanUnderValidation) {
   for (const char* name : {"adaptive_wires", "adaptive_mask_debug"}) {
     const auto r =
-        test::runHarness("render " + shortenedCase(name, 4) + " --out " + TAA_TEST_OUT +
+        test::runHarness("run " + shortenedCase(name, 4) + " --out " + TAA_TEST_OUT +
                          "/adaptive-validate --validate");
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.output;
     EXPECT_EQ(r.output.find("VUID"), std::string::npos) << name << "\n" << r.output;

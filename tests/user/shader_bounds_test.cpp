@@ -92,6 +92,11 @@ TEST_F(ShaderBoundsTest, ExpressionDepthCountsOperatorsAndBracketsPerStatement) 
   std::string call = "f(x";
   for (int i = 0; i < kMaxExpressionDepth * 2; ++i) call += ", x";
   EXPECT_EQ(expressionDepthProblem("y = " + call + ");", "f"), "");
+  // But the deepest of them counts: a group a comma ends keeps its brackets' depth.
+  const std::string deep = std::string(kMaxExpressionDepth + 1, '(') + "x" +
+                           std::string(kMaxExpressionDepth + 1, ')');
+  EXPECT_HAS(expressionDepthProblem("y = f(" + deep + ", x);", "f"), "f:1: a statement nests");
+  EXPECT_HAS(expressionDepthProblem("y = f(x, " + deep + ");", "f"), "f:1: a statement nests");
   // An unterminated statement is still measured.
   EXPECT_NE(expressionDepthProblem("y = " + sumOf(kMaxExpressionDepth + 2), "f"), "");
 }

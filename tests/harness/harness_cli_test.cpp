@@ -36,11 +36,15 @@ TEST_F(HarnessCli, MissingGoldensSkipLocallyThenBlessThenExactPass) {
 }
 
 TEST_F(HarnessCli, ManifestRecordsReasonDriverCommitAndHistory) {
-  ASSERT_EQ(bless("small").exitCode, 0);
-  ASSERT_EQ(harness("bless " + casePath("small") + " --out " + (root_ / "b2").string() +
-                    " --reason 'second'")
-                .exitCode,
-            0);
+  const auto first = bless("small");
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  EXPECT_NE(first.output.find("small frame 5: new golden"), std::string::npos) << first.output;
+  const auto second = harness("bless " + casePath("small") + " --out " + (root_ / "b2").string() +
+                              " --reason 'second'");
+  ASSERT_EQ(second.exitCode, 0) << second.output;
+  // The same pixels again: each frame says so, and no metric of a change is printed.
+  EXPECT_NE(second.output.find("small frame 5: unchanged"), std::string::npos) << second.output;
+  EXPECT_EQ(second.output.find("changed:"), std::string::npos) << second.output;
   std::ifstream in(root_ / "goldens/small/manifest.json");
   const auto m = nlohmann::json::parse(in);
   EXPECT_EQ(m["reason"], "second");

@@ -191,6 +191,15 @@ TEST_F(HarnessCli, MetricModeBoundsDriftInsteadOfBitExactness) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("ABOVE small frame 5 flip_mean"), std::string::npos) << r.output;
   EXPECT_EQ(run("small", "--metric nonsense --above 1").exitCode, 2);
+  // A case the renderer refuses is bad input whatever the bound: it has no frame to measure.
+  fs::create_directories(root_ / "cases/scenes/refused");
+  fs::copy_file(fs::path(TAA_SOURCE_DIR) / "cases/scenes/refused/requires_basisu.gltf",
+                root_ / "cases/scenes/refused/requires_basisu.gltf");
+  writeCase("refused", R"({"scene": {"gltf": "scenes/refused/requires_basisu.gltf"},
+    "render": {"width": 32, "height": 18}, "script": {"frames": 1}})");
+  const auto refused = run("refused", "--metric flip_mean --above 0.5");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("ERROR refused"), std::string::npos) << refused.output;
 }
 
 TEST_F(HarnessCli, ShardsPartitionTheCases) {

@@ -1,7 +1,7 @@
 // Deformed normals are unit vectors: a morph target's normal deltas blend the rest normal
-// toward another direction (their sum is shorter than 1 in between), and a joint may scale;
-// lighting and the G-buffer take them as written. A normal that cancels to
-// zero stays zero rather than becoming NaN.
+// toward another direction (their sum is shorter than 1 in between), and a joint may scale.
+// The raster interpolates vertex normals across a triangle before it normalises, so a shorter
+// one would weigh less. A normal that cancels to zero stays zero rather than becoming NaN.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -99,6 +99,9 @@ std::vector<std::string> tscmaaHashes(const std::string& env) {
   const auto r = test::runHarness(
       std::string("render ") + TAA_SOURCE_DIR + "/cases/tscmaa_fence.json --out " + out, env);
   EXPECT_EQ(r.exitCode, 0) << r.output;
+  // Each list holds one index per pixel of the 320x180 frame after its 16-byte header:
+  // 230,416 bytes, no more (the log reports what the case allocates).
+  EXPECT_NE(r.output.find("buffer tscmaa lists 2x1 (225 KiB each)"), std::string::npos) << r.output;
   std::vector<std::string> found;
   const std::regex line("frame \\d+ sha256 ([0-9a-f]{64})");
   for (std::sregex_iterator it(r.output.begin(), r.output.end(), line), end; it != end; ++it)

@@ -69,6 +69,10 @@ TEST_F(Positives, AnotherLevelGetsItsOwnPositiveFromItsRunFolderAndIsThenExact) 
   ASSERT_EQ(m["other_environments"].size(), 1u);
   EXPECT_EQ(m["other_environments"][0]["environment"]["cpu_features"], "override:sse4.1");
   EXPECT_EQ(m["other_environments"][0]["reason"], "sse4.1 runner");
+  // It records the commit that rendered it: the run's, from the folder's results.json.
+  const std::string runCommit = results()["commit"];
+  EXPECT_GE(runCommit.size(), 40u);
+  EXPECT_EQ(m["other_environments"][0]["renderer_commit"], runCommit);
   EXPECT_EQ(m["reason"], "test bless");  // the primary positive and its images stay
   EXPECT_EQ(exrCount(root_ / "goldens/small"), 2u);
   // Adding it again changes nothing.

@@ -5,6 +5,9 @@
 //   UV on every frame, so last frame's velocity at this pixel's UV equals this frame's; the
 //   render size changes between the frames read (dynamic resolution), so a helper scaling by
 //   this frame's size is off by the ratio of the two sizes.
+// - taa_jitter_uv and taa_prev_jitter_uv are the pixel jitters in UV units of this frame's and
+//   last frame's render area, and the previous jitter is last frame's jitter: under dynamic
+//   resolution a helper dividing by the other frame's size is off by the ratio of the sizes.
 // - The current colour sampled bilinearly (GLSL: taa_color_linear; HLSL: taa_color through
 //   taa_linear_clamp) at the corner of four pixels is their mean; a point sampler returns one
 //   of them, which differs on every checker edge.
@@ -59,6 +62,34 @@ void main(uint3 id : SV_DispatchThreadID) {
   float2 before = taa_prev_velocity_uv(q, TAA_CURRENT_MINUS_PREVIOUS);
   bool ground = taa_depth.Load(int3(r, 0)) > 0.0 && taa_has_history();
   taa_output[p] = float4(now.x, before.x, ground ? 1.0 : 0.0, 0.0);
+}
+)";
+
+// r: how far each jitter's UV form, times its frame's render size, is from its pixel form;
+// g: last frame's jitter (pixels, x); b: this frame's.
+const char* kJitterGlsl = R"(#version 450
+#define TAA_SUPPORTS_DYNAMIC_RESOLUTION
+#define TAA_SUPPORTS_UPSAMPLING
+#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  vec2 off = abs(taa_jitter_uv() * taa_frame.renderSize.xy - taa_jitter_pixels()) +
+             abs(taa_prev_jitter_uv() * taa_frame.prevRenderSize.xy - taa_prev_jitter_pixels());
+  imageStore(taa_output, p, vec4(off.x + off.y, taa_prev_jitter_pixels().x, taa_jitter_pixels().x, 1.0));
+}
+)";
+
+const char* kJitterHlsl = R"(#define TAA_SUPPORTS_DYNAMIC_RESOLUTION
+#define TAA_SUPPORTS_UPSAMPLING
+#include "taa_user.hlsli"
+TAA_NUMTHREADS
+void main(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+  float2 off = abs(taa_jitter_uv() * taa_frame.renderSize.xy - taa_jitter_pixels()) +
+               abs(taa_prev_jitter_uv() * taa_frame.prevRenderSize.xy - taa_prev_jitter_pixels());
+  taa_output[p] = float4(off.x + off.y, taa_prev_jitter_pixels().x, taa_jitter_pixels().x, 1.0);
 }
 )";
 
@@ -135,6 +166,23 @@ void expectPrevVelocityInLastFramesUv(const std::string& shader, const char* tex
   }
 }
 
+// The same render sizes as above; frames 1 to 4, so that each of 2 to 4 has the one before.
+void expectJitterHelpers(const std::string& shader, const char* text) {
+  const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64, "scale_schedule": [
+      {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
+      {"frame": 4, "scale": 0.8}]})",
+                                  {1, 2, 3, 4});
+  ASSERT_EQ(images.size(), 4u) << shader;
+  float moved = 0.0f;
+  for (size_t i = 0; i < images.size(); ++i) {
+    const Image& img = images[i];
+    EXPECT_LT(img.at(3, 3, 0), 2e-3f) << shader << " frame " << i + 1;  // half-float output
+    if (i > 0) EXPECT_EQ(img.at(3, 3, 1), images[i - 1].at(3, 3, 2)) << shader << " frame " << i + 1;
+    moved += std::fabs(img.at(3, 3, 2));
+  }
+  ASSERT_GT(moved, 0.1f) << shader << ": no jitter to measure";
+}
+
 void expectBilinearColour(const std::string& shader, const char* text) {
   const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64})", {3});
   ASSERT_EQ(images.size(), 1u) << shader;
@@ -154,6 +202,14 @@ TEST(UserHeaderHelpers, GlslPrevVelocityIsInLastFramesRenderUv) {
 
 TEST(UserHeaderHelpers, HlslPrevVelocityIsInLastFramesRenderUv) {
   expectPrevVelocityInLastFramesUv("prev_velocity_probe.hlsl", kPrevVelocityHlsl);
+}
+
+TEST(UserHeaderHelpers, GlslJitterHelpersUseTheirOwnFramesRenderSize) {
+  expectJitterHelpers("jitter_probe.comp", kJitterGlsl);
+}
+
+TEST(UserHeaderHelpers, HlslJitterHelpersUseTheirOwnFramesRenderSize) {
+  expectJitterHelpers("jitter_probe.hlsl", kJitterHlsl);
 }
 
 TEST(UserHeaderHelpers, GlslColourLinearSamplesBilinearly) {

@@ -129,7 +129,10 @@ std::string TracePass::describe() const {
          " rays per marked pixel, " + std::to_string(staticTriangles_) + " static triangles (" +
          std::to_string(staticNodes_) + " BVH nodes), " + std::to_string(moverTriangles_) +
          " mover triangles rebuilt per frame, texture LOD " +
-         (spec_.adaptive.ray_lod ? "from ray differentials" : "0");
+         (spec_.adaptive.ray_lod ? "from ray differentials" : "0") +
+         "; buffers: BVH " + std::to_string(nodes_.size()) + " B, triangles " +
+         std::to_string(triangles_.size()) + " B, shading " + std::to_string(shading_.size()) +
+         " B, materials " + std::to_string(materials_.size()) + " B";
 }
 
 void TracePass::record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,

@@ -8,6 +8,8 @@
 // - taa_jitter_uv and taa_prev_jitter_uv are the pixel jitters in UV units of this frame's and
 //   last frame's render area, and the previous jitter is last frame's jitter: under dynamic
 //   resolution a helper dividing by the other frame's size is off by the ratio of the sizes.
+// - taa_render_pixel maps an output pixel to the render pixel under it in this frame's render
+//   area: its centre lies within half a render pixel of the output pixel's, in UV.
 // - The current colour sampled bilinearly (GLSL: taa_color_linear; HLSL: taa_color through
 //   taa_linear_clamp) at the corner of four pixels is their mean; a point sampler returns one
 //   of them, which differs on every checker edge.
@@ -90,6 +92,31 @@ void main(uint3 id : SV_DispatchThreadID) {
   float2 off = abs(taa_jitter_uv() * taa_frame.renderSize.xy - taa_jitter_pixels()) +
                abs(taa_prev_jitter_uv() * taa_frame.prevRenderSize.xy - taa_prev_jitter_pixels());
   taa_output[p] = float4(off.x + off.y, taa_prev_jitter_pixels().x, taa_jitter_pixels().x, 1.0);
+}
+)";
+
+// The render pixel under each output pixel, and this frame's render size.
+const char* kRenderPixelGlsl = R"(#version 450
+#define TAA_SUPPORTS_DYNAMIC_RESOLUTION
+#define TAA_SUPPORTS_UPSAMPLING
+#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  ivec2 r = taa_render_pixel(p);
+  imageStore(taa_output, p, vec4(r, taa_frame.renderSize.xy));
+}
+)";
+
+const char* kRenderPixelHlsl = R"(#define TAA_SUPPORTS_DYNAMIC_RESOLUTION
+#define TAA_SUPPORTS_UPSAMPLING
+#include "taa_user.hlsli"
+TAA_NUMTHREADS
+void main(uint3 id : SV_DispatchThreadID) {
+  int2 p;
+  if (!taa_pixel(id, p)) return;
+  int2 r = taa_render_pixel(p);
+  taa_output[p] = float4(r, taa_frame.renderSize.xy);
 }
 )";
 
@@ -183,6 +210,28 @@ void expectJitterHelpers(const std::string& shader, const char* text) {
   ASSERT_GT(moved, 0.1f) << shader << ": no jitter to measure";
 }
 
+// Frames 2 and 4 follow a frame of another render size, where last frame's size is the wrong one.
+void expectRenderPixelUnderEachOutputPixel(const std::string& shader, const char* text) {
+  const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64, "scale_schedule": [
+      {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
+      {"frame": 4, "scale": 0.8}]})",
+                                  {2, 4});
+  ASSERT_EQ(images.size(), 2u) << shader;
+  for (const Image& img : images) {
+    ASSERT_EQ(img.channels, 4) << shader;
+    const float rw = img.at(0, 0, 2), rh = img.at(0, 0, 3);
+    ASSERT_LT(rw, 90.0f) << shader << ": the frame is not scaled";
+    int far = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const float u = (float(x) + 0.5f) / float(img.width), v = (float(y) + 0.5f) / float(img.height);
+        far += std::fabs((img.at(x, y, 0) + 0.5f) / rw - u) > 0.5f / rw ||
+               std::fabs((img.at(x, y, 1) + 0.5f) / rh - v) > 0.5f / rh;
+      }
+    EXPECT_EQ(far, 0) << shader;
+  }
+}
+
 void expectBilinearColour(const std::string& shader, const char* text) {
   const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64})", {3});
   ASSERT_EQ(images.size(), 1u) << shader;
@@ -210,6 +259,14 @@ TEST(UserHeaderHelpers, GlslJitterHelpersUseTheirOwnFramesRenderSize) {
 
 TEST(UserHeaderHelpers, HlslJitterHelpersUseTheirOwnFramesRenderSize) {
   expectJitterHelpers("jitter_probe.hlsl", kJitterHlsl);
+}
+
+TEST(UserHeaderHelpers, GlslRenderPixelIsUnderTheOutputPixelInThisFramesRenderArea) {
+  expectRenderPixelUnderEachOutputPixel("render_pixel_probe.comp", kRenderPixelGlsl);
+}
+
+TEST(UserHeaderHelpers, HlslRenderPixelIsUnderTheOutputPixelInThisFramesRenderArea) {
+  expectRenderPixelUnderEachOutputPixel("render_pixel_probe.hlsl", kRenderPixelHlsl);
 }
 
 TEST(UserHeaderHelpers, GlslColourLinearSamplesBilinearly) {

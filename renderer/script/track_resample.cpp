@@ -23,8 +23,8 @@ TrackSample interpolateSamples(const TrackSample& a, const TrackSample& b, doubl
   out.where = a.where + " .. " + b.where;
   out.position = a.position + (b.position - a.position) * s;
   out.scale = a.scale + (b.scale - a.scale) * s;
-  // The shorter arc: q and -q are the same orientation, and glm::slerp alone may take
-  // the long way round between them.
+  // The shorter arc: q and -q are the same orientation. GLM's slerp (0.9.9) also negates one
+  // when their dot is negative; doing it here keeps the arc ours whatever GLM does.
   const glm::dquat qa = glm::normalize(a.orientation);
   glm::dquat qb = glm::normalize(b.orientation);
   if (glm::dot(qa, qb) < 0.0) qb = -qb;

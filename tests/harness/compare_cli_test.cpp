@@ -154,6 +154,22 @@ TEST_F(CompareCli, BadInputIsExitTwoWithTheReason) {
   expectBad(a + " " + path("small.png"), "same size");
 }
 
+// An engine's capture often carries alpha where the harness's frames may not: the colour is
+// compared, in either order, and alpha is not.
+TEST_F(CompareCli, AnRgbAndAnRgbaFileCompareOnTheirColour) {
+  const Image rgb = picture(64, 40, 1, 0.0f);  // a.png's
+  Image rgba(rgb.width, rgb.height, 4, 0.5f);
+  for (int y = 0; y < rgb.height; ++y)
+    for (int x = 0; x < rgb.width; ++x)
+      for (int c = 0; c < 3; ++c) rgba.at(x, y, c) = rgb.at(x, y, c);
+  writePng(path("a_rgba.png"), rgba);
+  for (const std::string pair : {path("a.png") + " " + path("a_rgba.png"),
+                                 path("a_rgba.png") + " " + path("a.png")}) {
+    const auto r = compare(pair + " --max max_abs=0,flip_mean=0");
+    EXPECT_EQ(r.exitCode, 0) << pair << "\n" << r.output;
+  }
+}
+
 TEST_F(CompareCli, FilesAreToldApartByContentAndExrChannelsByName) {
   const fs::path corpus = fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/image";
   const std::string bgr = (corpus / "exr_bgr.exr").string();

@@ -115,6 +115,8 @@ TEST(JitterStep, LockPinsOneStepModuloTheLength) {
   for (int f = 0; f < 6; ++f) expectOffset(j, f, -0.25f, 0.25f);
   j.lock = 5;  // 5 mod 4
   for (int f = 0; f < 6; ++f) EXPECT_EQ(jitterStep(j, f), 1);
+  j.lock = 0;  // the first step is a step like any other; -1 (the default) is no lock
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(jitterStep(j, f), 0) << f;
 }
 
 TEST(JitterTransform, RotateTurnsXTowardsYAboutThePixelCentre) {

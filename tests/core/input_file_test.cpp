@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
+#include <vector>
 
 #include "core/json_guard.h"
 
@@ -151,8 +153,16 @@ TEST(JsonGuard, BoundsNestingWithoutRecursion) {
 }
 
 TEST(JsonGuard, MalformedTextEndsTheScanWithoutAProblem) {
-  for (const char* text : {"{\"a", "{\"a\\", "\"\\u12", "}}]]", "{\"a\": 1,,, \"a\"", ""})
+  for (const char* text : {"{\"a", "{\"a\\", "\"\\u12", "}}]]", "{\"a\": 1,,, \"a\"", ""}) {
     EXPECT_NO_THROW(jsonStructureProblem(text)) << text;
+    // The text ending exactly where its allocation ends (no terminating zero after it, as a
+    // file's bytes or a fuzzer's input): under ASan a read past the end is a report.
+    const std::string_view view(text);
+    const std::vector<char> exact(view.begin(), view.end());
+    EXPECT_EQ(jsonStructureProblem(std::string_view(exact.data(), exact.size())),
+              jsonStructureProblem(text))
+        << text;
+  }
 }
 
 }  // namespace

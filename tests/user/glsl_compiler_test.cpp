@@ -435,6 +435,20 @@ void main() {
                          "local_size_y = 32) in;\n" + body),
       options_);
   EXPECT_THROW(reflectUserInterface(huge.spirv, "huge.comp"), std::runtime_error);
+  // A size a specialization constant sets is refused on any axis, constant id 0 included.
+  for (const std::string axis : {"x", "y"}) {
+    const auto spec = compileComputeShader(
+        write("spec_" + axis + ".comp", "#version 450\n#define TAA_OWN_WORKGROUP\nlayout(local_size_" +
+                                            axis + "_id = 0) in;\n" + body),
+        options_);
+    try {
+      reflectUserInterface(spec.spirv, "spec.comp");
+      ADD_FAILURE() << axis << ": a specialized workgroup size was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("set by specialization constants"), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace

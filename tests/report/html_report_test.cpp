@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -119,6 +120,24 @@ TEST_F(ReportHtml, CaseWithoutFramesOrImagesStillRenders) {
   EXPECT_NE(html_.find("golden frame 0: no image"), std::string::npos);
   EXPECT_EQ(count(html_, "<section class=\"case "), 4u);
   EXPECT_EQ(count(html_, "<svg "), 4u);  // error and frame-time curves of the two full cases
+}
+
+// The frame-time curve has a point for every frame the case rendered, the first included.
+TEST_F(ReportHtml, FrameTimeCurvesHaveAPointPerFrame) {
+  std::vector<size_t> points;
+  const std::string group = "<g class=\"series\" data-name=\"frame time\">";
+  for (size_t at = html_.find(group); at != std::string::npos; at = html_.find(group, at + 1)) {
+    const size_t from = html_.find("<polyline points=\"", at);
+    ASSERT_NE(from, std::string::npos);
+    const size_t begin = from + std::string("<polyline points=\"").size();
+    const std::string list = html_.substr(begin, html_.find('"', begin) - begin);
+    points.push_back(size_t(std::count(list.begin(), list.end(), ',')));
+  }
+  std::vector<size_t> frames;
+  for (const auto& c : results_.cases)
+    if (!c.frameMs.empty()) frames.push_back(c.frameMs.size());
+  EXPECT_EQ(points, frames);
+  EXPECT_EQ(frames, (std::vector<size_t>{16, 12}));
 }
 
 // report.ab: B is a second replay's output. When it is missing the view must say so, not link

@@ -246,6 +246,17 @@ TEST(GoldenStore, AnotherEnvironmentsPositiveOfTheSameFramesIsStoredOnce) {
   EXPECT_THROW(Manifest::fromJson(twice, "m.json"), GoldenError);
 }
 
+// Three equal frames in a row or more are stored once with their count; two stay as they are.
+TEST(GoldenStore, RunsOfThreeOrMoreEqualFramesAreStoredOnce) {
+  Manifest m = manifestFor("runs", {}, 0.25f);
+  const std::string x(64, 'c'), y(64, 'd'), z(64, 'e');
+  m.sequence = {x, x, x, y, y, z, z, z, z};
+  const auto list = m.toJson()["frame_sha256"];
+  EXPECT_EQ(list, (nlohmann::json{{{"repeat", x}, {"frames", 3}}, y, y,
+                                  {{"repeat", z}, {"frames", 4}}}));
+  EXPECT_EQ(Manifest::fromJson(m.toJson(), "m.json").sequence, m.sequence);
+}
+
 TEST(GoldenStore, AHostileRepeatCountIsRefusedByName) {
   auto j = manifestFor("runs", {7}, 0.25f).toJson();
   for (const auto& frames : {nlohmann::json(0), nlohmann::json(uint64_t(1) << 40), nlohmann::json(-3)}) {

@@ -163,7 +163,7 @@ TEST_F(CompareCli, AnRgbAndAnRgbaFileCompareOnTheirColour) {
     for (int x = 0; x < rgb.width; ++x)
       for (int c = 0; c < 3; ++c) rgba.at(x, y, c) = rgb.at(x, y, c);
   writePng(path("a_rgba.png"), rgba);
-  for (const std::string pair : {path("a.png") + " " + path("a_rgba.png"),
+  for (const std::string& pair : {path("a.png") + " " + path("a_rgba.png"),
                                  path("a_rgba.png") + " " + path("a.png")}) {
     const auto r = compare(pair + " --max max_abs=0,flip_mean=0");
     EXPECT_EQ(r.exitCode, 0) << pair << "\n" << r.output;

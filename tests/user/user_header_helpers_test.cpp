@@ -204,7 +204,9 @@ void expectJitterHelpers(const std::string& shader, const char* text) {
   for (size_t i = 0; i < images.size(); ++i) {
     const Image& img = images[i];
     EXPECT_LT(img.at(3, 3, 0), 2e-3f) << shader << " frame " << i + 1;  // half-float output
-    if (i > 0) EXPECT_EQ(img.at(3, 3, 1), images[i - 1].at(3, 3, 2)) << shader << " frame " << i + 1;
+    if (i > 0) {
+      EXPECT_EQ(img.at(3, 3, 1), images[i - 1].at(3, 3, 2)) << shader << " frame " << i + 1;
+    }
     moved += std::fabs(img.at(3, 3, 2));
   }
   ASSERT_GT(moved, 0.1f) << shader << ": no jitter to measure";

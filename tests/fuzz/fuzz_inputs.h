@@ -70,14 +70,18 @@ inline void readResults(const std::string& text) {
   }
 }
 
+// A folder of this process's own under the temp folder: readers that take a path get their
+// input there, and two fuzzers (or a fuzzer and its replay) never share one.
+inline std::filesystem::path privateFuzzDir(const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() /
+                 ("taa-fuzz-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(d);
+  return d;
+}
+
 // A lanes file (score --lanes): read from a private folder, as the loader reads a file.
 inline void readLanes(const std::string& bytes) {
-  static const std::filesystem::path file = [] {
-    const auto d =
-        std::filesystem::temp_directory_path() / ("taa-fuzz-lanes-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d / "lanes.json";
-  }();
+  static const std::filesystem::path file = privateFuzzDir("lanes") / "lanes.json";
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
   try {
     (void)score::loadLanes(file);
@@ -100,12 +104,7 @@ inline void readTrack(const std::string& text) {
 // The glTF loader (.glb when the input has the GLB magic), posed at t = 0.5 s. The loader
 // reads files, so the input goes to a private folder first.
 inline void readGltf(const std::string& bytes) {
-  static const std::filesystem::path dir = [] {
-    const auto d =
-        std::filesystem::temp_directory_path() / ("taa-fuzz-gltf-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
+  static const std::filesystem::path dir = privateFuzzDir("gltf");
   const bool glb = bytes.rfind("glTF", 0) == 0;
   const std::filesystem::path file = dir / (glb ? "in.glb" : "in.gltf");
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
@@ -150,9 +149,7 @@ inline void readImageBytes(const std::string& bytes) {
 inline constexpr char kFuzzSpirvWord[] = "\x03\x02\x23\x07";
 inline bool readSpirvCacheEntry(const std::string& deps) {
   static const std::filesystem::path dir = [] {
-    const auto d =
-        std::filesystem::temp_directory_path() / ("taa-fuzz-spirv-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
+    const auto d = privateFuzzDir("spirv");
     std::ofstream(d / "k.spv", std::ios::binary | std::ios::trunc) << kFuzzSpirvWord;
     return d;
   }();
@@ -170,8 +167,7 @@ inline bool readSpirvCacheEntry(const std::string& deps) {
 // its own, and the SPIR-V cache is private to the process.
 inline void compileHlsl(const std::string& text) {
   static const std::filesystem::path dir = [] {
-    const auto d =
-        std::filesystem::temp_directory_path() / ("taa-fuzz-shader-" + std::to_string(::getpid()));
+    const auto d = privateFuzzDir("shader");
     std::filesystem::create_directories(d / "src");
     return d;
   }();

@@ -169,12 +169,15 @@ std::vector<Image> renderProbe(const std::string& shader, const char* text,
   return out;
 }
 
-// Frames 2 and 4 each follow a frame of another render size (1.0 -> 0.6, 0.6 -> 0.8).
+// The render size changes before frames 2 (1.0 -> 0.6) and 4 (0.6 -> 0.8): there, last frame's
+// size and this frame's differ, and a helper that takes one for the other is wrong.
+constexpr const char* kResizingRender = R"({"width": 96, "height": 64, "scale_schedule": [
+    {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
+    {"frame": 4, "scale": 0.8}]})";
+
+// Frames 2 and 4 each follow a frame of another render size.
 void expectPrevVelocityInLastFramesUv(const std::string& shader, const char* text) {
-  const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64, "scale_schedule": [
-      {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
-      {"frame": 4, "scale": 0.8}]})",
-                                  {2, 4});
+  const auto images = renderProbe(shader, text, kResizingRender, {2, 4});
   ASSERT_EQ(images.size(), 2u) << shader;
   for (const Image& img : images) {
     double speed = 0.0, error = 0.0;
@@ -195,10 +198,7 @@ void expectPrevVelocityInLastFramesUv(const std::string& shader, const char* tex
 
 // The same render sizes as above; frames 1 to 4, so that each of 2 to 4 has the one before.
 void expectJitterHelpers(const std::string& shader, const char* text) {
-  const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64, "scale_schedule": [
-      {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
-      {"frame": 4, "scale": 0.8}]})",
-                                  {1, 2, 3, 4});
+  const auto images = renderProbe(shader, text, kResizingRender, {1, 2, 3, 4});
   ASSERT_EQ(images.size(), 4u) << shader;
   float moved = 0.0f;
   for (size_t i = 0; i < images.size(); ++i) {
@@ -214,10 +214,7 @@ void expectJitterHelpers(const std::string& shader, const char* text) {
 
 // Frames 2 and 4 follow a frame of another render size, where last frame's size is the wrong one.
 void expectRenderPixelUnderEachOutputPixel(const std::string& shader, const char* text) {
-  const auto images = renderProbe(shader, text, R"({"width": 96, "height": 64, "scale_schedule": [
-      {"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.6}, {"frame": 3, "scale": 0.6},
-      {"frame": 4, "scale": 0.8}]})",
-                                  {2, 4});
+  const auto images = renderProbe(shader, text, kResizingRender, {2, 4});
   ASSERT_EQ(images.size(), 2u) << shader;
   for (const Image& img : images) {
     ASSERT_EQ(img.channels, 4) << shader;

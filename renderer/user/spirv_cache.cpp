@@ -46,8 +46,9 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
       const auto type = paramTypeNamed(sha);
       std::istringstream rest(path);
       int64_t id = 0;
-      std::string name;
+      std::string name, extra;
       if (!type || !(rest >> id >> name) || id < -1 || id > kConstantIdCap) return false;
+      if (rest >> extra) return false;  // our writer puts nothing after the name
       constants.push_back({name, *type, id});
     } else if (kind == "inc") {
       std::error_code ec;

@@ -98,10 +98,10 @@ void main() {
   EXPECT_EQ(second.constants[0].name, "kScale");
   EXPECT_EQ(second.constants[0].type, ParamType::Float);
   EXPECT_EQ(second.constants[0].id, 3);
-  // A forged constant line (an id out of range, a line without a name) is a damaged entry:
-  // compiled again, and the constant read from the source.
-  for (const std::string forged :
-       {"con float -7 kScale\n", "con float 99999999999999999999 kScale\n", "con float 3\n"}) {
+  // A forged constant line (an id out of range, a line without a name or with words after it)
+  // is a damaged entry: compiled again, and the constant read from the source.
+  for (const std::string forged : {"con float -7 kScale\n", "con float 99999999999999999999 kScale\n",
+                                   "con float 3\n", "con float 3 kScale extra\n"}) {
     for (const auto& e : fs::directory_iterator(options_.cacheDir))
       if (e.path().extension() == ".deps") {
         std::string deps = test::readFile(e.path());

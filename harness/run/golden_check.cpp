@@ -322,8 +322,10 @@ CaseStatus GoldenCheck::verdictWithGoldens(const std::string& caseSha, CaseResul
   if (missingPositive) notes.push_back(requireExactNote());
   for (const auto& n : notes) result.message += (result.message.empty() ? "" : "; ") + n;
   // Frames within tolerance on a machine without its positive: what is missing is the positive,
-  // not a new image, so the hint adds this environment rather than replacing the set.
-  if (missingPositive && !anyFailed)
+  // not a new image, so the hint adds this environment; a plain bless here would replace the set
+  // and drop the machine that blessed it. (A stale case needs the plain bless: --add-environment
+  // refuses a case changed since its bless.)
+  if (!ownPositive_ && !anyFailed && !stale)
     result.blessCommand = "taa-harness bless --add-environment " + spec_.file.string() +
                           " --reason \"<which machine this is>\"";
   if (!anyFailed && !missingPositive) return CaseStatus::Pass;

@@ -140,6 +140,11 @@ TEST_F(Positives, ALevelWithoutAPositiveTakesTheTolerancePathAndSaysSo) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("NOTE small: tolerance: no positive for"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("1 by tolerance (no positive for"), std::string::npos) << r.output;
+  // The way out adds this machine's positive; a plain bless would replace the primary's set.
+  EXPECT_NE(r.output.find("; refresh with taa-harness bless --add-environment " + casePath("small") +
+                          " --reason \"<which machine this is>\""),
+            std::string::npos)
+      << r.output;
   const auto c = results()["cases"][0];
   EXPECT_EQ(c["golden_mode"], "tolerance");
   const std::string xml = test::readFile(root_ / "out/junit.xml");

@@ -1,6 +1,7 @@
 #include "vk/spirv_reflect.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -10,7 +11,7 @@ namespace {
 
 // The few SPIR-V enumerants reflection reads (SPIR-V 1.x specification, section 3).
 namespace op {
-constexpr uint32_t EntryPoint = 15, ExecutionMode = 16, TypeBool = 20, TypeInt = 21, TypeFloat = 22,
+constexpr uint32_t Name = 5, EntryPoint = 15, ExecutionMode = 16, TypeBool = 20, TypeInt = 21, TypeFloat = 22,
                    TypeVector = 23, TypeMatrix = 24, TypeImage = 25, TypeSampler = 26,
                    TypeSampledImage = 27, TypeArray = 28, TypeRuntimeArray = 29, TypeStruct = 30,
                    TypePointer = 32, Constant = 43, ConstantComposite = 44, SpecConstant = 50,
@@ -46,6 +47,7 @@ struct Module {
   std::unordered_map<uint32_t, std::vector<uint32_t>> memberOffsets;  // struct -> per member
   std::unordered_map<uint32_t, std::vector<uint32_t>> memberMatrixStrides;
   std::vector<std::array<uint32_t, 3>> variables;  // pointer type, id, storage class
+  std::unordered_map<uint32_t, std::string> names;   // OpName, where the compiler kept them
 
   [[noreturn]] void fail(const std::string& what) const {
     throw ShaderInterfaceError("SPIR-V of " + name + ": " + what);
@@ -199,6 +201,24 @@ void readWorkgroupBuiltIn(const Module& m, uint32_t compositeId, ShaderInterface
   }
 }
 
+// A nul-terminated literal string from operand `from` on, four bytes a word.
+std::string literalString(const std::vector<uint32_t>& ops, size_t from) {
+  std::string out;
+  for (size_t w = from; w < ops.size(); ++w)
+    for (int b = 0; b < 4; ++b) {
+      const char c = char((ops[w] >> (8 * b)) & 0xffu);
+      if (c == 0) return out;
+      out += c;
+    }
+  return out;
+}
+
+// A variable as a message names it: its source name where the module kept one.
+std::string variableName(const Module& m, uint32_t id) {
+  const auto it = m.names.find(id);
+  return it != m.names.end() && !it->second.empty() ? it->second : "variable " + std::to_string(id);
+}
+
 }  // namespace
 
 const ReflectedBinding* ShaderInterface::find(uint32_t set, uint32_t binding) const {
@@ -225,17 +245,10 @@ ShaderInterface reflectSpirv(const std::vector<uint32_t>& words, const std::stri
       case op::EntryPoint:
         ++entryPoints;
         out.stages = stageOf(m, m.operand(in, 0));
-        // The name: a nul-terminated literal from the third operand on, four bytes a word.
-        out.entryPoint.clear();
-        for (size_t w = 2; w < ops.size(); ++w) {
-          bool end = false;
-          for (int b = 0; b < 4 && !end; ++b) {
-            const char c = char((ops[w] >> (8 * b)) & 0xffu);
-            end = c == 0;
-            if (!end) out.entryPoint += c;
-          }
-          if (end) break;
-        }
+        out.entryPoint = literalString(ops, 2);
+        break;
+      case op::Name:
+        m.names[m.operand(in, 0)] = literalString(ops, 1);
         break;
       case op::ExecutionMode:
         if (m.operand(in, 1) == kModeLocalSize)
@@ -283,6 +296,7 @@ ShaderInterface reflectSpirv(const std::vector<uint32_t>& words, const std::stri
   if (entryPoints != 1)
     m.fail(std::to_string(entryPoints) + " entry points; the layer builds one per module");
 
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> slots;  // (set, binding) -> variable
   for (const auto& [pointerType, id, storage] : m.variables) {
     const Instruction& pointer = m.def(pointerType);
     const uint32_t pointee = m.operand(pointer, 2);
@@ -300,9 +314,12 @@ ShaderInterface reflectSpirv(const std::vector<uint32_t>& words, const std::stri
     b.set = uint32_t(std::max<int64_t>(d->second.set, 0));
     b.binding = uint32_t(d->second.binding);
     b.stages = out.stages;
-    if (out.find(b.set, b.binding))
+    const auto [first, fresh] = slots.emplace(std::pair{b.set, b.binding}, id);
+    if (!fresh)
       m.fail("set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) +
-             " is declared twice");
+             " is declared twice, by " + variableName(m, first->second) + " and by " +
+             variableName(m, id) +
+             " (one declared without a binding or register takes one the compiler picks)");
     out.bindings.push_back(b);
   }
   for (const auto& [id, d] : m.decorations)

@@ -228,6 +228,17 @@ TEST_F(ShaderBoundsTest, EverythingOutsideTaaUserHIsRefusedAtLoad) {
   }
 }
 
+// A resource on a binding the header already uses: the message names both, so that a port's
+// texture left without a binding (the compiler's pick) reads as what it is.
+TEST_F(ShaderBoundsTest, TwoResourcesOnOneBindingAreNamed) {
+  const std::string msg = refusal(resolve(
+      "twice.comp", "layout(set = 0, binding = 1) uniform sampler2D _MainTex;",
+      "texelFetch(_MainTex, p, 0).rgb + taa_color_at(p)"));
+  EXPECT_HAS(msg, "set 0 binding 1 is declared twice, by ");
+  EXPECT_HAS(msg, "_MainTex");
+  EXPECT_HAS(msg, "taa_color");
+}
+
 // Without the header: the declarations clash with what the harness binds.
 TEST_F(ShaderBoundsTest, TypeClashesWithTheHeadersBindingsAreRefused) {
   const std::string top = "#version 450\nlayout(local_size_x = 8, local_size_y = 8) in;\n";

@@ -71,7 +71,9 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
   if (!out.empty()) return out;
   try {
     const LoadedUserShader shader(spec);
-    for (const auto& p : shader.paramProblems(t)) {
+    auto problems = shader.paramProblems(t);
+    for (auto& p : shader.defineProblems(t)) problems.push_back(std::move(p));
+    for (const auto& p : problems) {
       const auto colon = p.find(": ");
       out.emplace_back(p.substr(0, colon), p.substr(colon + 2));
     }

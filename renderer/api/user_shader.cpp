@@ -1,5 +1,6 @@
 #include "api/user_shader.h"
 
+#include "user/define_use.h"
 #include "user/shader_bounds.h"
 #include "user/user_capabilities.h"
 #include "user/user_resolve.h"
@@ -28,6 +29,12 @@ std::vector<std::string> LoadedUserShader::missingCapabilities(const spec::CaseS
 
 std::vector<std::string> LoadedUserShader::paramProblems(const spec::TaaSpec& taa) const {
   return userParamProblems(taa, shader_->interface);
+}
+
+std::vector<std::string> LoadedUserShader::defineProblems(const spec::TaaSpec& taa) const {
+  std::vector<std::filesystem::path> files{shader_->file};
+  files.insert(files.end(), shader_->includes.begin(), shader_->includes.end());
+  return user::unusedDefineProblems(taa.shader_defines, files, taa.shader);
 }
 
 std::vector<UserParamValue> LoadedUserShader::paramValues(const spec::TaaSpec& taa) const {

@@ -56,6 +56,8 @@ class LoadedUserShader {
   std::vector<std::string> missingCapabilities(const spec::CaseSpec& spec) const;
   // taa.shader_params checked against its constants: one "KEY: problem" each (userParamProblems).
   std::vector<std::string> paramProblems(const spec::TaaSpec& taa) const;
+  // taa.shader_defines that no file of the compile names (user/define_use.h).
+  std::vector<std::string> defineProblems(const spec::TaaSpec& taa) const;
   std::vector<UserParamValue> paramValues(const spec::TaaSpec& taa) const;
   // Its loose uniforms with the values taa.shader_params gives, and those left zero
   // (user::describeUserUniforms); "" when it has none.

@@ -165,8 +165,10 @@ std::vector<std::string> userParamProblems(const spec::TaaSpec& taa, const user:
     const user::DeclaredConstant* unread = p || uniform ? nullptr : u.unreadParam(sp.name);
     if (!p && !unread && !uniform) {
       const std::string guess = closestMatch(sp.name, names);
-      out.push_back(key + ".name: '" + sp.name + "' is not a specialization constant of " +
-                    taa.shader + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+      // Both kinds are set here; naming only constants misled a port that set a uniform.
+      out.push_back(key + ".name: '" + sp.name +
+                    "' is not a specialization constant or loose uniform of " + taa.shader +
+                    (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
                     "; it declares: " + declared);
       continue;
     }
@@ -257,13 +259,26 @@ std::string describeUserDefines(const spec::TaaSpec& taa) {
   return out.empty() ? "" : ", defines" + out;
 }
 
+namespace {
+
+// Everything shader_params sets: the constants, then the loose uniforms. A port whose values
+// are all uniforms read "params: none" beside them before.
+std::string describeAllParams(const spec::TaaSpec& taa, const user::UserInterface& u) {
+  const auto values = userParamValues(taa, u);
+  const std::string uniforms = user::describeUserUniforms(taa, u);
+  if (values.empty() && !uniforms.empty()) return uniforms;
+  return describeUserParams(values) + (uniforms.empty() ? "" : "; " + uniforms);
+}
+
+}  // namespace
+
 std::string describeUserShader(const spec::CaseSpec& spec) {
   if (spec.taa.shader.empty()) return "";
   const UserShader shader = loadUserShader(spec);
   const bool hlsl = shader.language == user::ShaderLanguage::Hlsl;
   return "user shader " + spec.taa.shader + " (" + user::languageName(shader.language) +
          (hlsl ? ", entry " + spec.taa.shader_entry : "") + describeUserDefines(spec.taa) +
-         "), params: " + describeUserParams(userParamValues(spec.taa, shader.interface));
+         "), params: " + describeAllParams(spec.taa, shader.interface);
 }
 
 GBufferNeeds userNeeds(const user::UserInterface& u) {
@@ -337,11 +352,9 @@ std::vector<std::string> UserResolvePass::describe() const {
                 user::languageName(s.shader.language) + describeUserDefines(s.spec.taa) +
                 ", SPIR-V " + s.shader.provenance + ") workgroup " +
                 std::to_string(ui.workgroup[0]) + "x" + std::to_string(ui.workgroup[1]) +
-                " params: " + describeUserParams(userParamValues(s.spec.taa, ui)));
+                " params: " + describeAllParams(s.spec.taa, ui));
   for (const auto& note : userParamNotes(userParamValues(s.spec.taa, ui)))
     out.push_back("user shader note: " + note);
-  if (const std::string line = user::describeUserUniforms(s.spec.taa, ui); !line.empty())
-    out.push_back("user shader " + line);
   out.push_back("buffer user output 2x " + dims + " rgba16f");
   for (int k = 0; k < 2; ++k)
     if (const auto f = s.shader.interface.history[k])

@@ -12,6 +12,7 @@
 #include <string>
 #include <nlohmann/json.hpp>
 
+#include "api/user_shader.h"
 #include "case/case_loader.h"
 #include "support/case_problems.h"
 #include "support/gpu.h"
@@ -173,11 +174,25 @@ TEST_F(UserUniformsTest, ATypeOrSizeMismatchIsRefusedNamingTheMember) {
   EXPECT_NE(p[0].find("give a number, not true or false, for a float"), std::string::npos) << p[0];
   p = problems(R"([{"name": "_Sharpnes", "value": 1}])");
   ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("'_Sharpnes' is not a specialization constant or loose uniform of "),
+            std::string::npos)
+      << p[0];
   EXPECT_NE(p[0].find("did you mean '_Sharpness'?"), std::string::npos) << p[0];
   EXPECT_NE(p[0].find("_ColorMatrix (float4x4 uniform)"), std::string::npos) << p[0];
   p = problems(R"([{"name": "_Sharpness", "value": [1, "x"]}])");
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("a list of 1 to 16 finite numbers"), std::string::npos) << p[0];
+}
+
+// The report's case header and the run log's pass line list the uniforms' values: a port whose
+// values are all loose uniforms read "params: none" there.
+TEST_F(UserUniformsTest, TheReportHeaderNamesTheUniformsValues) {
+  const std::string line = describeUserShader(load("loose.hlsl", kParams).spec);
+  EXPECT_NE(line.find("params: loose uniforms $Global (96 bytes): _FinalBlendParameters=[0.25, 0, "
+                      "0.5, 1] (float4), _Sharpness=0.75 (float)"),
+            std::string::npos)
+      << line;
+  EXPECT_EQ(line.find("none"), std::string::npos) << line;
 }
 
 // The port runs unedited and renders what the same values written into the code render.

@@ -72,6 +72,25 @@ TEST(LodValidation, Lod0RefusesWhatItOverrides) {
   EXPECT_NE(p[0].find("adaptive.ray_lod: render.lod0"), std::string::npos) << p[0];
 }
 
+// The adaptive passes trace and segment at output size, pixel for pixel against the G-buffer:
+// a render at another size (upsampled, or a dynamic resolution) would pair other pixels.
+TEST(AdaptiveValidation, ARenderAtAnotherSizeThanTheOutputIsRefused) {
+  for (const char* render :
+       {R"({"upsample": 2})",
+        R"({"scale_schedule": [{"frame": 0, "scale": 1.0}, {"frame": 2, "scale": 0.5}]})"}) {
+    SCOPED_TRACE(render);
+    const auto p =
+        lightingProblems(std::string(R"({"taa": {"mode": "adaptive"}, "render": )") + render + "}");
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_NE(p[0].find("taa.mode: adaptive traces and segments at output size against the "
+                        "G-buffer; remove render.upsample and render.scale_schedule"),
+              std::string::npos)
+        << p[0];
+  }
+  EXPECT_TRUE(
+      lightingProblems(R"({"taa": {"mode": "adaptive"}, "render": {"upsample": 1}})").empty());
+}
+
 TEST(LodValidation, AnisoNeedsTheRayDifferentialLod) {
   auto p = lightingProblems(
       R"({"taa": {"mode": "adaptive"}, "adaptive": {"ray_lod": false, "aniso": 4}})");

@@ -38,5 +38,19 @@ TEST_F(HarnessCli, RenderWritesTheReferenceBesideEachFrameOnlyWhenAsked) {
   EXPECT_EQ(frames, 2);  // the case's two output frames
 }
 
+// `render --validate` fails (exit 1) when the validation layer spoke, counting its messages. The
+// renderer gives none, so the layer's best-practices checks (lavapipe's small allocations) speak.
+TEST_F(HarnessCli, RenderValidateFailsWhenTheLayerReportsAMessage) {
+  const std::string render = "render " + casePath("small") + " --validate --out ";
+  auto r = harness(render + (root_ / "quiet").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("validation message(s)"), std::string::npos) << r.output;
+  r = harness(render + (root_ / "loud").string(),
+              "VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("small: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" validation message(s)\n"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace taa::render_cli_test

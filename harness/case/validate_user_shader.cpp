@@ -21,7 +21,13 @@ std::vector<std::pair<std::string, std::string>> userShaderProblems(
     return out;
   }
   if (const std::string why = assetPathProblem(t.shader); !why.empty()) {
-    out.emplace_back("taa.shader", why);
+    // A lane's or preset's shader resolves beside the file that names it, not beside the case.
+    out.emplace_back("taa.shader",
+                     t.shader_root.empty()
+                         ? why
+                         : "'" + t.shader + "' leaves " + t.shader_root +
+                               ", the folder of the lanes or presets file that names it; give a "
+                               "path under that folder");
     return out;
   }
   if (!spec::modeRule(t.mode).standIn)

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "case/case_error.h"
+#include "case/case_loader.h"
 #include "score/score.h"
 
 namespace taa {
@@ -52,6 +53,24 @@ TEST(LanesFile, NamesAreNonEmptyPrintableAndShort) {
   EXPECT_NE(lanesRefusal(R"({"a)" + std::string(200, 'x') + R"(": {"mode": "off"}})")
                 .find("1 to 100 bytes"),
             std::string::npos);
+}
+
+// A lane's shader is relative to its lanes file: a path that climbs out says which folder it
+// left, not the case's (a port beside the cases read as if the case were wrong).
+TEST(LanesFile, AShaderLeavingTheLanesFolderIsRefusedNamingThatFolder) {
+  cases::LaneParse lane;
+  lane.shaderRoot = fs::path(TAA_TEST_OUT) / "lanes_file" / "ports";
+  try {
+    cases::parseCase(R"({"taa": {"shader": "../cases/x.hlsl"}})", "cases/c.json", lane);
+    ADD_FAILURE() << "accepted";
+  } catch (const cases::CaseError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_NE(e.problems()[0].find("cases/c.json: taa.shader: '../cases/x.hlsl' leaves " +
+                                   fs::absolute(lane.shaderRoot).lexically_normal().string() +
+                                   ", the folder of the lanes or presets file that names it"),
+              std::string::npos)
+        << e.problems()[0];
+  }
 }
 
 TEST(LanesFile, TenThousandLanesAreRefusedBeforeAnyWork) {

@@ -247,15 +247,20 @@ void warmBuiltinsOnce(ShaderLanguage language) {
   });
 }
 
-// glslang's log, less its "ERROR: " prefixes, the trailing "N compilation errors" line and
-// lines containing `drop`, so each line starts with the user's file and line.
+// glslang's log, less its "ERROR: " prefixes, the trailing "N compilation errors" line,
+// lines containing `drop` and the echoes of a #error (it stops the preprocessor, which then
+// reports each #if still open as a "missing #endif"), so each line starts with the user's file
+// and line. (HLSL's "parsing failed" line stays: it names the top file's line of an include.)
 std::string cleanLog(const std::string& log, const std::string& drop = "") {
   std::istringstream in(log);
   std::string line, out;
+  bool stopped = false;  // a #error was reported
   while (std::getline(in, line)) {
     if (line.empty() || line.find("compilation errors.") != std::string::npos) continue;
     if (!drop.empty() && line.find(drop) != std::string::npos) continue;
+    if (stopped && line.find("'' : missing #endif") != std::string::npos) continue;
     if (line.rfind("ERROR: ", 0) == 0) line = line.substr(7);
+    stopped |= line.find("'#error' :") != std::string::npos;
     out += (out.empty() ? "" : "\n") + line;
   }
   return out;

@@ -53,6 +53,25 @@ TEST_F(GlslCompilerTest, SyntaxErrorNamesFileAndLine) {
   EXPECT_NE(msg.find("undeclared_thing"), std::string::npos) << msg;
 }
 
+// A variant a port cannot run says so with #error: that line is the message, without the
+// preprocessor's echoes of it (each #if still open as "missing #endif").
+TEST_F(GlslCompilerTest, AnErrorDirectiveIsTheWholeMessage) {
+  for (const char* name : {"stop.comp", "stop.hlsl"}) {
+    SCOPED_TRACE(name);
+    const bool hlsl = std::string(name).find(".hlsl") != std::string::npos;
+    options_.language = hlsl ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl;
+    const auto file = write(name, std::string(hlsl ? "" : "#version 450\n") +
+                                      "#if 1\n#ifndef NEVER\n#error needs a tile-max pass\n"
+                                      "#endif\n#endif\nvoid main() {}\n");
+    const std::string msg = compileError(file);
+    EXPECT_NE(msg.find(file.string() + ":" + (hlsl ? "3" : "4") + ": '#error' : needs a tile"),
+              std::string::npos)
+        << msg;
+    EXPECT_EQ(msg.find("missing #endif"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("parsing failed"), std::string::npos) << msg;
+  }
+}
+
 TEST_F(GlslCompilerTest, ErrorInsideAnIncludeNamesTheHeader) {
   write("lib/helpers.glsl", "vec3 helper() {\n  return nope;\n}\n");
   const auto file = write(

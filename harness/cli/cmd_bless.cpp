@@ -17,6 +17,7 @@
 #include "compare/metric_table.h"
 #include "core/output_file.h"
 #include "golden/bless.h"
+#include "golden/case_owner.h"
 #include "golden/golden_store.h"
 #include "run/add_environment.h"
 
@@ -113,6 +114,18 @@ int blessOne(const cases::LoadedCase& loaded, const BlessSource& source, const B
   const fs::path root =
       plan.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file) : plan.goldensRoot;
   const golden::GoldensLock lock(root);  // the old manifest stays current until the swap
+  if (const fs::path m = root / loaded.spec.name / "manifest.json"; fs::exists(m)) {
+    std::string other;
+    try {
+      other = golden::otherCaseProblem(golden::readManifest(m), root, loaded.spec.file);
+    } catch (const golden::GoldenError&) {
+      // An unreadable set is the bless's to replace (plain) or refuse (--add-environment).
+    }
+    if (!other.empty()) {
+      std::cout << "REFUSED " << r.name << ": " << other << "\n";
+      return kBadInput;
+    }
+  }
   if (plan.addEnvironment) {
     const auto set = golden::loadGoldens(root, loaded.spec.name);
     if (!set) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/image_io.h"
+#include "golden/case_owner.h"
 
 namespace taa::golden {
 
@@ -48,6 +49,7 @@ Manifest makeManifest(const cases::LoadedCase& loaded, const Environment& env,
   Manifest m;
   m.caseName = loaded.spec.name;
   m.caseSha256 = loaded.sha256;
+  m.caseFile = caseFileLabel(loaded.spec.file);
   m.environment = env;
   m.bless = {todayUtc(), rendererCommit(), reason};
   if (previous) {

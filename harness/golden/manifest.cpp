@@ -8,6 +8,7 @@
 
 #include "core/input_file.h"
 #include "core/json_guard.h"
+#include "golden/case_owner.h"
 
 namespace taa::golden {
 
@@ -126,6 +127,7 @@ nlohmann::json Manifest::toJson() const {
                       {"frames", nlohmann::json::array()},
                       {"frame_sha256", runLengthJson(sequence)},
                       {"frame_signatures", runLengthJson(signatures)}};
+  if (!caseFile.empty()) j["case_file"] = caseFile;
   for (const auto& h : history) j["history"].push_back(blessJson(h));
   if (!others.empty()) {
     j["other_environments"] = nlohmann::json::array();
@@ -145,6 +147,13 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
   try {
     m.caseName = j.at("case").get<std::string>();
     m.caseSha256 = j.at("case_sha256").get<std::string>();
+    if (j.contains("case_file")) {
+      m.caseFile = j.at("case_file").get<std::string>();
+      if (!validCaseFileLabel(m.caseFile))
+        throw GoldenError(where.string() + ": case_file is not a case's folder and file name (" +
+                          std::to_string(m.caseFile.size()) + " bytes); " +
+                          restoreHint(where.parent_path()));
+    }
     m.environment = Environment::fromJson(j.at("environment"));
     m.bless = {j.at("date").get<std::string>(), j.at("renderer_commit").get<std::string>(),
                j.at("reason").get<std::string>()};

@@ -58,6 +58,9 @@ struct Positive {
 struct Manifest {
   std::string caseName;
   std::string caseSha256;  // of the case file's bytes when blessed
+  // "case_file": the case's folder and file name (golden/case_owner.h); empty in manifests
+  // blessed before it was recorded.
+  std::string caseFile;
   Environment environment;
   BlessRecord bless;
   std::vector<BlessRecord> history;  // earlier blesses, newest first

@@ -6,6 +6,7 @@
 #include "compare/heatmap.h"
 #include "compare/tolerance.h"
 #include "core/image_io.h"
+#include "golden/case_owner.h"
 #include "golden/signature.h"
 
 namespace taa::run {
@@ -133,12 +134,13 @@ GoldenCheck::GoldenCheck(const spec::CheckedCase& spec, const golden::Environmen
   dir_ = root / spec.name;
   try {
     goldens_ = golden::loadGoldens(root, spec.name);
+    if (goldens_) problem_ = golden::otherCaseProblem(goldens_->manifest, root, spec.file);
   } catch (const golden::GoldenError& e) {
     problem_ = e.what();
   }
   // Hashes are comparable only where lavapipe reproduces a positive's bytes; elsewhere every
   // frame's signature is compared within tolerances.
-  if (!goldens_) return;
+  if (!goldens_ || !problem_.empty()) return;
   const auto all = goldens_->manifest.positives();
   if (const auto own = goldens_->manifest.positiveFor(environment_)) {
     positive_ = *own;

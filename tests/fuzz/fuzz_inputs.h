@@ -23,6 +23,7 @@
 #include "core/image_io.h"
 #include "core/json_guard.h"
 #include "core/png_codec.h"
+#include "golden/manifest.h"
 #include "run/merge.h"
 #include "run/run_folder.h"
 #include "scene/gltf_loader.h"
@@ -77,6 +78,23 @@ inline std::filesystem::path privateFuzzDir(const std::string& name) {
                  ("taa-fuzz-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::create_directories(d);
   return d;
+}
+
+// A golden manifest as run and bless read it: goldens come in pull requests and copies, so its
+// text is as untrusted as a run folder's (case_file is read as a name, never as a path).
+inline void readGoldenManifest(const std::string& text) {
+  static const std::filesystem::path file = privateFuzzDir("manifest") / "manifest.json";
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+  try {
+    (void)golden::readManifest(file);
+  } catch (const golden::GoldenError&) {
+  }
+}
+
+// The JSON a run or goldens folder holds: the same bytes through both readers.
+inline void readFolderJson(const std::string& text) {
+  readResults(text);
+  readGoldenManifest(text);
 }
 
 // A lanes file (score --lanes): read from a private folder, as the loader reads a file.

@@ -49,7 +49,7 @@ TEST(FuzzRegressions, ImageCorpus) {
   replay("image", &readImageBytes);
 }
 TEST(FuzzRegressions, ResultsCorpus) {
-  replay("results", &readResults);
+  replay("results", &readFolderJson);
 }
 TEST(FuzzRegressions, LanesCorpus) {
   replay("lanes", &readLanes);

@@ -1,4 +1,5 @@
-// libFuzzer target for the results-file readers (merge, coverage --results, run --verdict-from);
+// libFuzzer target for the results-file readers (merge, coverage --results, run --verdict-from)
+// and the golden manifest reader, on the same bytes;
 // see fuzz_inputs.h and ci/fuzz.sh.
 #include <cstddef>
 #include <cstdint>
@@ -7,6 +8,6 @@
 #include "fuzz_inputs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  taa::fuzz::readResults(std::string(reinterpret_cast<const char*>(data), size));
+  taa::fuzz::readFolderJson(std::string(reinterpret_cast<const char*>(data), size));
   return 0;
 }

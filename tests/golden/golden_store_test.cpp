@@ -153,6 +153,21 @@ TEST(GoldenStore, MalformedManifestNamesTheFile) {
   }
 }
 
+// case_file is a folder and a file name (golden/case_owner.h), never a path: the fuzz corpus's
+// two manifests, one well formed and one naming ../../etc/passwd, read and are refused.
+TEST(GoldenStore, AManifestsCaseFileIsANameNotAPath) {
+  const fs::path corpus = fs::path(TAA_SOURCE_DIR) / "tests/fuzz/corpus/results";
+  EXPECT_EQ(readManifest(corpus / "manifest_with_case_file.json").caseFile, "cases/x.json");
+  try {
+    readManifest(corpus / "manifest_forged_case_file.json");
+    FAIL() << "expected an error";
+  } catch (const GoldenError& e) {
+    EXPECT_NE(std::string(e.what()).find("case_file is not a case's folder and file name"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // What `loadGoldens` must refuse before anything is compared with the set.
 std::string loadError(const fs::path& root) {
   try {

@@ -352,6 +352,12 @@ const char* const kReportJs = R"JS(
     body.setAttribute('data-images-broken',
                       broken.map(function (i) { return i.getAttribute('src'); }).join(' '));
     runFragmentHook();
+    // A status badge is one line of its own text: a taller one (a wrapped label, a loose line
+    // height) stretches every table row it sits in.
+    var tall = Array.prototype.filter.call(document.querySelectorAll('.badge'), function (b) {
+      return b.getBoundingClientRect().height > 1.75 * parseFloat(getComputedStyle(b).fontSize);
+    });
+    body.setAttribute('data-badges-tall', String(tall.length));
     var cases = document.querySelectorAll('section.case').length;
     var ok = cases === Number(body.getAttribute('data-case-count')) &&
              document.querySelector('header.run') !== null && !body.hasAttribute('data-js-error');

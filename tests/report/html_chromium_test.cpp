@@ -114,6 +114,7 @@ TEST(ReportChromium, RendersLoadsEveryImageAndMovesTheDivider) {
   EXPECT_EQ(body["data-images-loaded"], std::to_string(images) + "/" + std::to_string(images))
       << "broken: " << body["data-images-broken"];
   EXPECT_EQ(body.count("data-js-error"), 0u) << body["data-js-error"];
+  EXPECT_EQ(body["data-badges-tall"], "0");
   EXPECT_NE(dom.find("<h2>Error versus run time</h2>"), std::string::npos);
   // 2x zoom of the 48 px wide test frame; a press at a quarter of its width; two arrow keys move
   // the divider one image pixel each.

@@ -97,6 +97,23 @@ std::string error(const std::string& body) {
   return errorOf<TrackError>([&] { parseJsonTrack(body, "t.json"); });
 }
 
+// Any positive rate is a rate: a time-lapse track at half a frame a second spaces its frames
+// two seconds apart; zero, a negative rate and a string are refused.
+TEST(TrackJson, AnyPositiveFrameRateTimesTheFrames) {
+  const std::string camera = R"("camera": {"frames": [
+      {"position": [0, 0, 0], "orientation": [0, 0, 0, 1]},
+      {"position": [1, 0, 0], "orientation": [0, 0, 0, 1]}]}})";
+  const std::string head = R"({"format": "taa-track", "version": 1, "fps": )";
+  const TrackFile f = parseJsonTrack(head + "0.5, " + camera, "t.json");
+  EXPECT_EQ(f.fps, 0.5);
+  ASSERT_EQ(f.camera->samples.size(), 2u);
+  EXPECT_EQ(f.camera->samples[1].time, 2.0);
+  for (const char* bad : {"0", "-30", "\"30\""})
+    EXPECT_TRUE(
+        contains(error(head + bad + ", " + camera), "t.json: fps: expected a positive frame rate"))
+        << bad;
+}
+
 TEST(TrackJson, ErrorsNameTheKeyPath) {
   EXPECT_TRUE(contains(error(R"({"camera": {}})"), "t.json: not a track file"));
   const std::string head = R"({"format": "taa-track", "version": 1, )";

@@ -69,6 +69,11 @@ void printCase(std::ostream& out, const CaseResult& c) {
   }
   for (const auto& inv : c.invariants)
     out << (inv.passed ? "PASS " : "FAIL ") << c.name << " invariant " << inv.name << ": " << inv.detail << "\n";
+  // What the run did not do as the input asked (an extension a glTF uses and the loader
+  // ignores, a constant the shader never reads) reaches the console, not only the run log.
+  for (const auto& line : c.log)
+    if (line.rfind("scene note: ", 0) == 0 || line.rfind("user shader note: ", 0) == 0)
+      out << "NOTE " << c.name << ": " << line << "\n";
   switch (c.status) {
     case CaseStatus::Pass:
       if (!c.message.empty()) out << "NOTE " << c.name << ": " << c.message << "; refresh with " << c.blessCommand << "\n";

@@ -221,7 +221,10 @@ int Converter::mesh(int index) {
       for (size_t i = 0; i < count; ++i) idx[i] = uint32_t(i);
     }
     for (uint32_t i : idx)
-      if (i >= count) fail(what + " has an index past its vertex count; the file is corrupt");
+      if (i >= count)
+        fail(what + " has index " + std::to_string(i) +
+             (prim.indices >= 0 ? " (accessor " + std::to_string(prim.indices) + ")" : "") +
+             ", past its " + std::to_string(count) + " vertices; the file is corrupt");
     idx = triangleList(prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode, std::move(idx));
     auto vertexAt = [&](uint32_t i) {
       Vertex v{};

@@ -16,7 +16,8 @@ uint32_t be16(const unsigned char* p) {
 ImageHeader sized(uint32_t w, uint32_t h, uint64_t bytesPerChannel) {
   ImageHeader out;
   if (w == 0 || h == 0)
-    out.problem = "its header gives a size of " + std::to_string(w) + " x " + std::to_string(h);
+    out.problem = "has a header that gives a size of " + std::to_string(w) + " x " +
+                  std::to_string(h) + "; the image is corrupt, re-export it";
   else if (w > uint32_t(kMaxTextureSide) || h > uint32_t(kMaxTextureSide))
     out.problem = "is " + std::to_string(w) + " x " + std::to_string(h) + ", over the limit of " +
                   std::to_string(kMaxTextureSide) + " per side; scale it down";

@@ -88,10 +88,16 @@ std::vector<uint8_t> readFile(const fs::path& file) {
   }
 }
 
+// tinygltf's message on one line, at most kMaxMessageBytes: it quotes a failing data URI whole,
+// which made a 200 KB buffer a 267 KB error line.
+constexpr size_t kMaxMessageBytes = 1000;
 std::string trimmed(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   for (auto& c : s)
     if (c == '\n') c = ' ';
+  if (s.size() > kMaxMessageBytes)
+    s = s.substr(0, kMaxMessageBytes) + "... (" + std::to_string(s.size() - kMaxMessageBytes) +
+        " more bytes)";
   return s;
 }
 

@@ -128,7 +128,44 @@ std::vector<std::string> gltfFileUris(const nlohmann::json& doc) {
   return out;
 }
 
+namespace {
+
+// tinygltf reads an embedded buffer only when its data URI is base64 of exactly byteLength
+// bytes, and says "File not found" or "Failed to decode" with the whole URI (hundreds of KB):
+// both are named here, with the numbers, before it runs.
+void checkDataBuffers(const std::filesystem::path& file, const nlohmann::json& doc) {
+  const auto list = doc.find("buffers");
+  if (list == doc.end() || !list->is_array()) return;
+  for (size_t i = 0; i < list->size(); ++i) {
+    const auto& entry = (*list)[i];
+    if (!entry.is_object()) continue;
+    const auto uri = entry.find("uri");
+    if (uri == entry.end() || !uri->is_string()) continue;
+    const std::string& value = uri->get_ref<const std::string&>();
+    if (!startsWithNoCase(value, "data:")) continue;
+    const std::string key = "buffers[" + std::to_string(i) + "]";
+    const size_t comma = value.find(',');
+    const size_t marker = value.find(";base64,");
+    if (comma == std::string::npos || marker == std::string::npos || marker + 7 != comma)
+      throw SceneError(file, key + ".uri is a data URI that is not base64; glTF embeds a buffer "
+                                   "as data:application/octet-stream;base64,...; re-export it");
+    const size_t chars = value.size() - comma - 1;
+    size_t padding = 0;
+    while (padding < 2 && padding < chars && value[value.size() - 1 - padding] == '=') ++padding;
+    const auto length = entry.find("byteLength");
+    if (chars % 4 != 0 || length == entry.end() || !length->is_number_unsigned()) continue;
+    const uint64_t holds = chars / 4 * 3 - padding, declared = length->get<uint64_t>();
+    if (holds != declared)
+      throw SceneError(file, key + ".byteLength is " + std::to_string(declared) +
+                                 ", but its data URI holds " + std::to_string(holds) +
+                                 " bytes; make them agree or re-export the file");
+  }
+}
+
+}  // namespace
+
 void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc) {
+  checkDataBuffers(file, doc);
   for (const char* key : {"buffers", "images"}) {
     const auto list = doc.find(key);
     if (list == doc.end() || !list->is_array()) continue;

@@ -58,5 +58,20 @@ TEST(ConsoleTest, AFailedInvariantNeverHintsAtABlessThatRefuses) {
   EXPECT_NE(ciOut.find("HINT mine: if the change is intended"), std::string::npos) << ciOut;
 }
 
+// A scene's or user shader's note (an extension the loader ignores, a constant no code reads)
+// is a console line too; the rest of the run log stays in results.json and the report.
+TEST(ConsoleTest, SceneAndShaderNotesOfTheRunLogArePrinted) {
+  CaseResult c = missingGoldens(true);
+  c.log = {"scene: 12 vertices", "scene note: a.gltf: extensionsUsed lists KHR_x",
+           "user shader note: `gain` is not read by the shader's code", "pass raster"};
+  const std::string out = printed(c);
+  EXPECT_NE(out.find("NOTE mine: scene note: a.gltf: extensionsUsed lists KHR_x\n"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("NOTE mine: user shader note: `gain` is not read"), std::string::npos) << out;
+  EXPECT_EQ(out.find("pass raster"), std::string::npos) << out;
+  EXPECT_EQ(out.find("12 vertices"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace taa::run

@@ -241,6 +241,57 @@ TEST(GltfRefuse, UriRules) {
   EXPECT_THROW(check("{not json"), SceneError);
 }
 
+// An embedded buffer tinygltf would refuse as "File not found" (not base64) or with the whole
+// URI quoted (a byteLength its data does not give): named here, with the numbers, in one line.
+TEST(GltfRefuse, ADataUriBufferSaysWhatIsWrongWithIt) {
+  const std::filesystem::path f = "x.gltf";
+  auto error = [&](const std::string& uri, const std::string& length) {
+    try {
+      checkGltfUris(f, parseGltfJson(f, R"({"buffers":[{"uri":")" + uri + R"(","byteLength":)" +
+                                            length + "}]}"));
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("data:application/octet-stream;base64,AAAA", "3"), "");
+  EXPECT_EQ(error("data:application/gltf-buffer;base64,AAA=", "2"), "");
+  EXPECT_NE(error("data:application/gltf-buffer,1111", "4")
+                .find("buffers[0].uri is a data URI that is not base64"),
+            std::string::npos);
+  const std::string big = "data:application/octet-stream;base64," + std::string(266664, 'A');
+  const std::string msg = error(big, "4400");
+  EXPECT_NE(msg.find("buffers[0].byteLength is 4400, but its data URI holds 199998 bytes"),
+            std::string::npos)
+      << msg.substr(0, 300);
+  EXPECT_LT(msg.size(), 300u);
+}
+
+// A corrupt index names itself, its accessor and the vertex count it passed.
+TEST(GltfRefuse, AnIndexPastTheVerticesIsNamed) {
+  const std::filesystem::path dir = std::filesystem::path(TAA_TEST_OUT) / "gltf_bad_index";
+  std::filesystem::create_directories(dir);
+  // Three vertices (36 bytes), then the indices 0, 1, 5 as uint16 and two bytes of padding.
+  std::ofstream(dir / "t.gltf") << R"({"asset": {"version": "2.0"}, "scene": 0,
+    "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+    "buffers": [{"byteLength": 44, "uri":
+      "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAUAAAA="}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                   "min": [0, 0, 0], "max": [1, 1, 0]},
+                  {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+  Scene s;
+  try {
+    loadGltf(dir / "t.gltf", s);
+    ADD_FAILURE() << "loaded";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("has index 5 (accessor 1), past its 3 vertices"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(GltfRefuse, SymlinkOutOfTheFolderIsRefusedByTheFileJail) {
   // The uri is a harmless relative name, but it is a symlink leading outside: only the
   // file-system callbacks can catch that.

@@ -87,6 +87,11 @@ TEST(ResultsFormat, MissingAndUnknownKeysAreRefusedByPath) {
   EXPECT_NE(refusal(j).find("cases[0].frames[0].images.zoom_golden_png: unknown key"),
             std::string::npos)
       << refusal(j);
+  // At the top level too: a key of a newer format (or a typo) is not silently dropped.
+  j = run::toJson(everyField());
+  j["verdict_cache"] = true;
+  EXPECT_NE(refusal(j).find("verdict_cache: unknown key (not in this format)"), std::string::npos)
+      << refusal(j);
   j = run::toJson(everyField());
   j["cases"][0]["frames"][0]["metrics"].erase("rmse");
   EXPECT_NE(refusal(j).find("cases[0].frames[0].metrics.rmse: missing"), std::string::npos)

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <nlohmann/json.hpp>
 
@@ -155,6 +156,30 @@ void main() {
   EXPECT_NE(user::uniformValueProblem(u.uniforms[1], {2.5, false, {}})
                 .find("an int takes a whole number"),
             std::string::npos);
+}
+
+// The bits a number becomes, for constants and uniforms alike, at each type's edges: every
+// value the type holds is taken (0 for a uint, INT_MIN for an int), the next one out refused.
+TEST(ScalarBits, EachTypeTakesItsWholeRangeAndNothingPast) {
+  auto bits = [](user::ParamType t, double n) -> std::optional<uint32_t> {
+    uint32_t b = 0;
+    if (!user::scalarBits(t, {n, false, {}}, b).empty()) return std::nullopt;
+    return b;
+  };
+  using T = user::ParamType;
+  EXPECT_EQ(bits(T::Uint, 0.0), 0u);
+  EXPECT_EQ(bits(T::Uint, 4294967295.0), 0xffffffffu);
+  EXPECT_FALSE(bits(T::Uint, -1.0));
+  EXPECT_FALSE(bits(T::Uint, 4294967296.0));
+  EXPECT_FALSE(bits(T::Uint, 0.5));
+  EXPECT_EQ(bits(T::Int, -2147483648.0), 0x80000000u);
+  EXPECT_EQ(bits(T::Int, -1.0), 0xffffffffu);
+  EXPECT_FALSE(bits(T::Int, 2147483648.0));
+  EXPECT_EQ(bits(T::Bool, 0.0), 0u);
+  EXPECT_EQ(bits(T::Bool, 1.0), 1u);
+  EXPECT_FALSE(bits(T::Bool, 2.0));
+  EXPECT_EQ(bits(T::Float, 1.0), 0x3f800000u);
+  EXPECT_FALSE(bits(T::Float, 1e39));
 }
 
 TEST_F(UserUniformsTest, ATypeOrSizeMismatchIsRefusedNamingTheMember) {

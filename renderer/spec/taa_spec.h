@@ -183,7 +183,9 @@ void fields(V& v, TaaSpec& s) {
   v.field("shader_defines", s.shader_defines,
           Meta{"preprocessor defines for the shader, each \"NAME\" (defined as 1) or "
                "\"NAME=VALUE\", as a compiler's -D: an engine's keywords chosen per case, lane "
-               "or preset",
+               "or preset; a NAME that no file of the compile (the shader, its includes, the "
+               "harness's header) names is refused, with the nearest name those files hold (a "
+               "typo would select nothing)",
                "renderer/api/shader_defines.cpp", "", "taa.shader is set"});
   v.field(
       "shader_clamps", s.shader_clamps,

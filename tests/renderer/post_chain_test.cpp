@@ -3,6 +3,8 @@
 // deterministic; the case validator refuses settings the passes would ignore.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -151,6 +153,25 @@ TEST(PostChain, RunsWithoutAResolveAndUnderUpsamplingAtTheRightSizes) {
   EXPECT_TRUE(logged(up, "buffer sharpen 160x90"));
   EXPECT_EQ(up.last.color.width, 160);
   EXPECT_EQ(up.last.color.height, 90);
+}
+
+// The smallest frames a case may ask for, one pixel wide or high, go through every post pass
+// (each filter checks that its region fits its image, at least 1x1).
+TEST(PostChain, OnePixelWideAndHighFramesPassEveryFilter) {
+  for (const char* size : {R"("width": 1, "height": 1)", R"("width": 1, "height": 9)",
+                           R"("width": 9, "height": 1)"}) {
+    SCOPED_TRACE(size);
+    const Rendered r = render(test::caseFromJson(
+        std::string(R"({"scene": {"builtin": "checkerboard"}, "render": {)") + size +
+            R"(}, "camera": {"strafe": {"speed": 3.0}}, "script": {"frames": 2},
+            "post": {"motion_blur": true, "fxaa": true, "sharpen": "cas"}})",
+        "post_tiny"));
+    EXPECT_TRUE(logged(r, "buffer fxaa"));
+    EXPECT_TRUE(logged(r, "buffer cas"));
+    EXPECT_TRUE(logged(r, "buffer motion_blur"));
+    ASSERT_FALSE(r.last.color.data.empty());
+    for (const float v : r.last.color.data) EXPECT_TRUE(std::isfinite(v));
+  }
 }
 
 TEST(PostChain, SpeedInAlphaDrivesTheColourOnlyBlend) {

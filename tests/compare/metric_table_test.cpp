@@ -76,6 +76,10 @@ TEST(MetricTable, AViolationLineIsRecognisedAsItsOwnMetricOnly) {
   const MetricInfo* rmse = findMetric("rmse");
   ASSERT_NE(rmse, nullptr);
   EXPECT_FALSE(isViolationOf(*rmse, "rmse"));
+  // A line that is the name alone is none, wherever its text sits: here a view that ends where
+  // a longer line goes on with a space (reading past the view's end would see that space).
+  const std::string longer = "rmse 2 > 1";
+  EXPECT_FALSE(isViolationOf(*rmse, std::string_view(longer).substr(0, 4)));
   EXPECT_FALSE(isViolationOf(*rmse, "rmsex 2 > 1"));
   EXPECT_FALSE(isViolationOf(*rmse, "size 64x36 differs"));
 }

@@ -400,6 +400,17 @@ TEST_F(Merge, RefusesForgedPathsLinksFifosAndForeignShards) {
     j["cases"][0]["frames"][0]["images"]["actual"] = caseName + "/../../../../etc/passwd";
   });
   refused("is not inside the case's folder");
+  // The first differing frame's image is a path of the results too.
+  std::ofstream(results1) << original;
+  editResults(1, [](auto& j) {
+    j["cases"][0]["first_difference"] = {{"frame", 1},
+                                         {"detail", "forged"},
+                                         {"actual_sha256", ""},
+                                         {"golden_sha256", ""},
+                                         {"actual", "../../../etc/passwd"},
+                                         {"golden_neighbours", nlohmann::json::array()}};
+  });
+  refused("is not inside the case's folder");
   std::ofstream(results1) << original;
   const fs::path caseDir = fs::path(shard(1)) / caseName;
   fs::create_symlink("/etc/passwd", caseDir / "extra.png");

@@ -88,6 +88,26 @@ TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
   }
 }
 
+// Alpha is no colour: a huge or NaN alpha neither widens the tolerance of a pixel outside the
+// box nor puts a pixel inside it out.
+TEST(InvariantHistoryBounded, TheOutputsAlphaPlaysNoPart) {
+  auto seq = boundedSequence(4);
+  const Image& cur = seq[2].current;
+  float hi[3] = {0, 0, 0};
+  for (int j = 3; j <= 5; ++j)
+    for (int i = 4; i <= 6; ++i)
+      for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
+  setRgb(seq[2].output, 5, 4, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+  seq[2].output.at(5, 4, 3) = 1e6f;
+  seq[2].output.at(1, 1, 3) = std::nanf("");
+  for (auto s : {staticCase(), rgbCase()}) {
+    const auto o = runAll("history_bounded", s, seq);
+    EXPECT_FALSE(o.passed) << o.detail;
+    EXPECT_EQ(valueOf(o, "pixels_over"), 1.0) << o.detail;
+    EXPECT_EQ(valueOf(o, "x"), 5.0);
+  }
+}
+
 // The image's first and last rows and columns are checked too (their boxes are clamped 2x3 or
 // 3x2 neighbourhoods).
 TEST(InvariantHistoryBounded, APixelOnEachEdgeIsChecked) {

@@ -21,7 +21,11 @@ bool validCaseFileLabel(const std::string& label) {
 
 std::string otherCaseProblem(const Manifest& m, const fs::path& root, const fs::path& caseFile) {
   if (m.caseFile.empty() || m.caseFile == caseFileLabel(caseFile)) return "";
-  const fs::path owner = fs::absolute(root).lexically_normal().parent_path() / m.caseFile;
+  // Only goldens beside the case's own folder can be a sibling's by accident; a folder given
+  // elsewhere (--goldens, another checkout's goldens) was chosen for this case.
+  const fs::path base = fs::absolute(root).lexically_normal().parent_path();
+  if (fs::absolute(caseFile).lexically_normal().parent_path().parent_path() != base) return "";
+  const fs::path owner = base / m.caseFile;
   std::error_code ec;
   if (!fs::is_regular_file(owner, ec) || fs::equivalent(owner, caseFile, ec)) return "";
   return (root / m.caseName).string() + " holds the goldens of " + owner.string() +

@@ -19,9 +19,10 @@ std::string caseFileLabel(const std::filesystem::path& caseFile);
 // "." or "..", no NUL, at most 512 bytes (a forged manifest must not name any other path).
 bool validCaseFileLabel(const std::string& label);
 
-// Empty, or why `caseFile` must not use the set under `root` that `m` describes: the manifest
-// names another case file, and that file still exists beside `root` (one that is gone was
-// moved or renamed, and its set passes to the case now using it).
+// Empty, or why `caseFile` must not use the set under `root` that `m` describes: `root` lies
+// beside the case's folder (the default goldens folder), the manifest names another case file,
+// and that file still exists there (one that is gone was moved or renamed, and its set passes
+// to the case now using it). Goldens given from elsewhere are not checked.
 std::string otherCaseProblem(const Manifest& m, const std::filesystem::path& root,
                              const std::filesystem::path& caseFile);
 

@@ -41,8 +41,14 @@ TEST_F(HarnessCli, ASecondCaseOfTheSameNameCannotTakeTheFirstsGoldens) {
     EXPECT_NE(r.output.find("REFUSED same: "), std::string::npos) << r.output;
     EXPECT_EQ(test::readFile(manifest), blessed);
   }
-  // a's own run is unaffected; once a is gone (moved away), b may take the folder.
+  // a's own run is unaffected, and so is a's twin in another checkout given these goldens.
   EXPECT_EQ(harness("run " + a + " --out " + (root_ / "out-a").string()).exitCode, 0);
+  fs::create_directories(root_ / "checkout2/cases");
+  fs::copy_file(root_ / "a/same.json", root_ / "checkout2/cases/same.json");
+  r = harness("run " + (root_ / "checkout2/cases/same.json").string() + " --goldens " +
+              (root_ / "goldens").string() + " --out " + (root_ / "out-2").string());
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  // Once a is gone (moved away), b may take the folder.
   fs::rename(root_ / "a/same.json", root_ / "a/renamed.json");
   ASSERT_EQ(harness("bless " + b + " --reason 'a moved'").exitCode, 0);
   EXPECT_EQ(golden::readManifest(manifest).caseFile, "b/same.json");

@@ -131,8 +131,10 @@ SweepResult runSweep(Device& device, const fs::path& caseFile, const cases::Pres
     p.flicker = l.flicker.mean();
     p.referenceFlicker = referenceFlicker.mean();
     p.notApplicable = l.notApplicable;
-    p.taaMs = run::percentile(runner.cost(i).taaMs, 50.0);
-    p.frameMs = run::percentile(runner.cost(i).frameMs, 50.0);
+    p.taaMsPerFrame = runner.cost(i).taaMs;
+    p.frameMsPerFrame = runner.cost(i).frameMs;
+    p.taaMs = run::percentile(p.taaMsPerFrame, 50.0);
+    p.frameMs = run::percentile(p.frameMsPerFrame, 50.0);
     for (const auto& line : runner.log(i))
       if (line.rfind("pass ", 0) == 0) p.passes.push_back(line.substr(5));
   }

@@ -22,6 +22,7 @@ struct PresetResult {
   double referenceFlicker = 0.0;
   double taaMs = 0.0;         // median per frame of run/timing.h's TAA ms and frame ms
   double frameMs = 0.0;
+  std::vector<double> taaMsPerFrame, frameMsPerFrame;  // the measured frames', as rmsePerFrame
   std::vector<double> rmsePerFrame;
   std::vector<double> flipPerFrame;
   std::vector<std::string> passes;  // what ran, from the renderer log

@@ -112,12 +112,18 @@ void writeSweep(const fs::path& dir, const SweepResult& r) {
            patch + "\"\n";
   }
   writeText(dir / "sweep.csv", csv);
-  std::string frames = "preset,frame,rmse,flip_mean\n";
+  // Each measured frame's error beside what it cost (GPU ms, run/timing.h).
+  std::string frames = "preset,frame,rmse,flip_mean,taa_ms,frame_ms\n";
   for (const auto& p : r.presets)
-    for (size_t k = 0; k < p.rmsePerFrame.size(); ++k)
+    for (size_t k = 0; k < p.rmsePerFrame.size(); ++k) {
+      const auto ms = [k](const std::vector<double>& v) {
+        return k < v.size() ? report::formatFixed(v[k], 4) : std::string();
+      };
       frames += p.name + "," + std::to_string(r.fromFrame + int(k)) + "," +
                 report::formatNumber(p.rmsePerFrame[k], 6) + "," +
-                report::formatNumber(p.flipPerFrame[k], 6) + "\n";
+                report::formatNumber(p.flipPerFrame[k], 6) + "," + ms(p.taaMsPerFrame) + "," +
+                ms(p.frameMsPerFrame) + "\n";
+    }
   writeText(dir / "frames.csv", frames);
   writeText(dir / "sweep.md", markdownTable(r));
   writeText(dir / "sweep.svg", plot(r, true));

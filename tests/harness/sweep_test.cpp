@@ -11,6 +11,7 @@
 #include "case/case_error.h"
 #include "case/case_loader.h"
 #include "invariants/flicker_meter.h"
+#include "run/timing.h"
 #include "support/gpu.h"
 #include "support/text.h"
 
@@ -46,11 +47,20 @@ TEST(Sweep, BasicGhostsMoreThanTheFullResolveAndEverythingIsWritten) {
                                                         << r.presets[0].rmse;
   EXPECT_GT(r.presets[1].flipMean, r.presets[0].flipMean);
   EXPECT_GT(r.presets[0].frameMs, 0.0);
+  // The cost columns are each lane's median frame: nearest rank over the 6 measured frames.
+  for (const auto& p : r.presets) {
+    ASSERT_EQ(p.frameMsPerFrame.size(), 6u) << p.name;
+    EXPECT_EQ(p.frameMs, run::percentile(p.frameMsPerFrame, 50.0)) << p.name;
+    EXPECT_EQ(p.taaMs, run::percentile(p.taaMsPerFrame, 50.0)) << p.name;
+  }
   EXPECT_GT(r.presets[0].referenceFlicker, 0.0);
   const fs::path out = file.parent_path().parent_path() / "out";
   sweep::writeSweep(out, r);
   for (const char* f : {"sweep.csv", "frames.csv", "sweep.md", "sweep.svg", "report.html"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  const std::string frames = test::readFile(out / "frames.csv");
+  EXPECT_EQ(frames.rfind("preset,frame,rmse,flip_mean,taa_ms,frame_ms\n", 0), 0u) << frames;
+  EXPECT_NE(frames.find("\ndefault,4,"), std::string::npos) << frames;
   const std::string svg = test::readFile(out / "sweep.svg");
   // The static plot names the points of the Pareto front, as many as the table marks.
   EXPECT_NE(svg.find(">default</text>"), std::string::npos) << svg;

@@ -58,7 +58,9 @@ CameraRay cameraRay(vec2 pixel) {
 // ray_differentials.cpp mirrors it (anisotropicGradients).
 void anisotropicGradients(inout vec2 dx, inout vec2 dy, vec2 texels) {
   float lx = length(dx * texels), ly = length(dy * texels);
-  float ratio = min(max(lx, ly) / max(min(lx, ly), 1e-30), kAniso);
+  // At least 1: a zero footprint (a triangle of one UV) has nothing to shorten, where 0 / 0
+  // made NaN gradients.
+  float ratio = max(min(max(lx, ly) / max(min(lx, ly), 1e-30), kAniso), 1.0);
   if (lx >= ly)
     dx /= ratio;
   else

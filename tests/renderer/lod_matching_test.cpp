@@ -85,6 +85,11 @@ TEST(LodMatching, AnisotropicGradientsShortenTheLongerAxisUpToTheFactor) {
   anisotropicGradients(ax, ay, size, 2.0f);
   EXPECT_NEAR(glm::length(ay * size), 2.0f, 1e-5f);
   EXPECT_NEAR(glm::length(ax * size), 1.0f, 1e-5f);
+  // A zero footprint (a triangle whose vertices share one UV) stays zero, never NaN.
+  ax = ay = glm::vec2(0.0f);
+  anisotropicGradients(ax, ay, size, 8.0f);
+  EXPECT_EQ(ax, glm::vec2(0.0f));
+  EXPECT_EQ(ay, glm::vec2(0.0f));
 }
 
 TEST(LodMatching, AnisoSharpensTheTracedFloorAtGrazingAngles) {

@@ -56,7 +56,9 @@ float textureLod(glm::vec2 dUvDx, glm::vec2 dUvDy, glm::vec2 size) {
 
 void anisotropicGradients(glm::vec2& dUvDx, glm::vec2& dUvDy, glm::vec2 size, float aniso) {
   const float lx = glm::length(dUvDx * size), ly = glm::length(dUvDy * size);
-  const float ratio = std::min(std::max(lx, ly) / std::max(std::min(lx, ly), 1e-30f), aniso);
+  // At least 1: a zero footprint (a triangle of one UV) has nothing to shorten (0 / 0 was NaN).
+  const float ratio =
+      std::max(std::min(std::max(lx, ly) / std::max(std::min(lx, ly), 1e-30f), aniso), 1.0f);
   if (lx >= ly)
     dUvDx /= ratio;
   else

@@ -27,9 +27,9 @@ float injectShaderValue(spec::InjectValue v) {
 }
 }  // namespace
 
-void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
+gpu::InjectPush makeInjectPush(const spec::InjectSpec& inject) {
   gpu::InjectPush push{};
-  const auto& pixels = spec_.inject.pixels;
+  const auto& pixels = inject.pixels;
   for (size_t i = 0; i < pixels.size(); ++i) {
     glm::vec4& pair = push.pixels[i / 2];
     if (i % 2 == 0) {
@@ -40,7 +40,13 @@ void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
       pair.w = pixels[i].y;
     }
   }
-  push.params = glm::vec4(float(pixels.size()), injectShaderValue(spec_.inject.value), 0.0f, 0.0f);
+  push.params = glm::vec4(float(pixels.size()), injectShaderValue(inject.value), 0.0f, 0.0f);
+  return push;
+}
+
+void InjectPass::record(VkCommandBuffer cmd, vk::Image& color) {
+  const gpu::InjectPush push = makeInjectPush(spec_.inject);
+  const auto& pixels = spec_.inject.pixels;
   // One invocation per listed pixel (at least one group, as the shader checks the count).
   const auto invocations = uint32_t(std::max<size_t>(pixels.size(), 1));
   vk::Dispatch(pipeline_).store(0, color).constants(push).record(ctx_, cmd, invocations, 1);

@@ -16,6 +16,14 @@ TEST(CaseLoader, EmptyObjectGivesDefaults) {
   EXPECT_EQ(loaded.spec.output.frames[0], 15);  // the last frame by default
 }
 
+// Listed frames are the checked frames, sorted: the last frame is only the default, never
+// added to a list that leaves it out.
+TEST(CaseLoader, OutputFramesAreTheListedOnesSorted) {
+  const auto loaded =
+      parseCase(R"({"script": {"frames": 10}, "output": {"frames": [6, 2]}})", "cases/o.json");
+  EXPECT_EQ(loaded.spec.output.frames, (std::vector<int>{2, 6}));
+}
+
 TEST(CaseLoader, UnknownKeySuggestsNearMiss) {
   const auto p = caseProblems(R"({"render": {"widht": 64}})");
   ASSERT_EQ(p.size(), 1u);

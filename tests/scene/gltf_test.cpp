@@ -233,12 +233,15 @@ TEST(GltfRefuse, UriRules) {
   EXPECT_NO_THROW(check(R"({"buffers":[{"uri":"data:application/octet-stream;base64,AAAA"}]})"));
   EXPECT_NO_THROW(check(R"({"images":[{"uri":"textures/a%20b.png"}],"buffers":[{}]})"));
   for (const char* bad : {"HTTPS://x/y.bin", "ftp:x", "C:/x.bin", "..\\\\x.bin", "a/../../b.bin",
-                          "%2e%2e/b.bin", "\\\\\\\\server\\\\share\\\\b.bin", "a.bin%00.png",
+                          "%2e%2e/b.bin", "%2E%2E/b.bin", "\\\\\\\\server\\\\share\\\\b.bin", "a.bin%00.png",
                           "a%0a.bin"}) {
     const std::string json = std::string(R"({"images":[{"uri":")") + bad + R"("}]})";
     EXPECT_THROW(check(json), SceneError) << bad;
   }
   EXPECT_THROW(check("{not json"), SceneError);
+  // Escapes decode in either case: %5F and %5f are both '_'.
+  EXPECT_EQ(gltfFileUris(parseGltfJson(f, R"({"images":[{"uri":"a%5Fb%5fc.png"}]})")),
+            std::vector<std::string>{"a_b_c.png"});
 }
 
 // An embedded buffer tinygltf would refuse as "File not found" (not base64) or with the whole

@@ -2,6 +2,7 @@
 // second line of defence (file-system callbacks) lives in gltf_loader.cpp.
 #include <cctype>
 #include <cstring>
+#include <string_view>
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_loader.h"
@@ -85,6 +86,46 @@ std::string uriProblem(const std::string& uri) {
   return "";
 }
 
+// Every buffer's and image's string "uri", in file order: f(key, index, entry, uri).
+template <class F>
+void forEachUri(const nlohmann::json& doc, F&& f) {
+  if (!doc.is_object()) return;
+  for (const char* key : {"buffers", "images"}) {
+    const auto list = doc.find(key);
+    if (list == doc.end() || !list->is_array()) continue;
+    for (size_t i = 0; i < list->size(); ++i) {
+      const auto& entry = (*list)[i];
+      if (!entry.is_object()) continue;
+      const auto uri = entry.find("uri");
+      if (uri == entry.end() || !uri->is_string()) continue;
+      f(key, i, entry, uri->get_ref<const std::string&>());
+    }
+  }
+}
+
+// tinygltf reads an embedded buffer only when its data URI is base64 of exactly byteLength
+// bytes, and says "File not found" or "Failed to decode" with the whole URI (hundreds of KB):
+// both are named here, with the numbers, before it runs.
+void checkDataBuffer(const std::filesystem::path& file, size_t i, const nlohmann::json& entry,
+                     const std::string& value) {
+  const std::string key = "buffers[" + std::to_string(i) + "]";
+  const size_t comma = value.find(',');
+  const size_t marker = value.find(";base64,");
+  if (comma == std::string::npos || marker == std::string::npos || marker + 7 != comma)
+    throw SceneError(file, key + ".uri is a data URI that is not base64; glTF embeds a buffer "
+                                 "as data:application/octet-stream;base64,...; re-export it");
+  const size_t chars = value.size() - comma - 1;
+  size_t padding = 0;
+  while (padding < 2 && padding < chars && value[value.size() - 1 - padding] == '=') ++padding;
+  const auto length = entry.find("byteLength");
+  if (chars % 4 != 0 || length == entry.end() || !length->is_number_unsigned()) return;
+  const uint64_t holds = chars / 4 * 3 - padding, declared = length->get<uint64_t>();
+  if (holds != declared)
+    throw SceneError(file, key + ".byteLength is " + std::to_string(declared) +
+                               ", but its data URI holds " + std::to_string(holds) +
+                               " bytes; make them agree or re-export the file");
+}
+
 }  // namespace
 
 std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<uint8_t>& bytes) {
@@ -111,79 +152,27 @@ std::string glbJsonChunk(const std::filesystem::path& file, const std::vector<ui
 
 std::vector<std::string> gltfFileUris(const nlohmann::json& doc) {
   std::vector<std::string> out;
-  if (!doc.is_object()) return out;
-  for (const char* key : {"buffers", "images"}) {
-    const auto list = doc.find(key);
-    if (list == doc.end() || !list->is_array()) continue;
-    for (const auto& entry : *list) {
-      if (!entry.is_object()) continue;
-      const auto uri = entry.find("uri");
-      if (uri == entry.end() || !uri->is_string()) continue;
-      const std::string value = uri->get<std::string>();
-      // A refused uri is reported by loading; it names no file that could be read.
-      if (startsWithNoCase(value, "data:") || !uriProblem(value).empty()) continue;
+  forEachUri(doc, [&](const char*, size_t, const nlohmann::json&, const std::string& value) {
+    // A refused uri is reported by loading; it names no file that could be read.
+    if (!startsWithNoCase(value, "data:") && uriProblem(value).empty())
       out.push_back(percentDecode(value));
-    }
-  }
+  });
   return out;
 }
 
-namespace {
-
-// tinygltf reads an embedded buffer only when its data URI is base64 of exactly byteLength
-// bytes, and says "File not found" or "Failed to decode" with the whole URI (hundreds of KB):
-// both are named here, with the numbers, before it runs.
-void checkDataBuffers(const std::filesystem::path& file, const nlohmann::json& doc) {
-  const auto list = doc.find("buffers");
-  if (list == doc.end() || !list->is_array()) return;
-  for (size_t i = 0; i < list->size(); ++i) {
-    const auto& entry = (*list)[i];
-    if (!entry.is_object()) continue;
-    const auto uri = entry.find("uri");
-    if (uri == entry.end() || !uri->is_string()) continue;
-    const std::string& value = uri->get_ref<const std::string&>();
-    if (!startsWithNoCase(value, "data:")) continue;
-    const std::string key = "buffers[" + std::to_string(i) + "]";
-    const size_t comma = value.find(',');
-    const size_t marker = value.find(";base64,");
-    if (comma == std::string::npos || marker == std::string::npos || marker + 7 != comma)
-      throw SceneError(file, key + ".uri is a data URI that is not base64; glTF embeds a buffer "
-                                   "as data:application/octet-stream;base64,...; re-export it");
-    const size_t chars = value.size() - comma - 1;
-    size_t padding = 0;
-    while (padding < 2 && padding < chars && value[value.size() - 1 - padding] == '=') ++padding;
-    const auto length = entry.find("byteLength");
-    if (chars % 4 != 0 || length == entry.end() || !length->is_number_unsigned()) continue;
-    const uint64_t holds = chars / 4 * 3 - padding, declared = length->get<uint64_t>();
-    if (holds != declared)
-      throw SceneError(file, key + ".byteLength is " + std::to_string(declared) +
-                                 ", but its data URI holds " + std::to_string(holds) +
-                                 " bytes; make them agree or re-export the file");
-  }
-}
-
-}  // namespace
-
 void checkGltfUris(const std::filesystem::path& file, const nlohmann::json& doc) {
-  checkDataBuffers(file, doc);
-  for (const char* key : {"buffers", "images"}) {
-    const auto list = doc.find(key);
-    if (list == doc.end() || !list->is_array()) continue;
-    for (size_t i = 0; i < list->size(); ++i) {
-      const auto& entry = (*list)[i];
-      if (!entry.is_object()) continue;
-      const auto uri = entry.find("uri");
-      if (uri == entry.end() || !uri->is_string()) continue;
-      const std::string value = uri->get<std::string>();
-      const std::string problem = uriProblem(value);
-      if (!problem.empty())
-        throw SceneError(
-            file, std::string(key) + "[" + std::to_string(i) + "].uri " +
-                      nlohmann::json(value.size() > 200 ? value.substr(0, 200) + "..." : value)
-                          .dump(-1, ' ', true) +
-                      " " + problem);
-    }
-  }
+  forEachUri(doc, [&](const char* key, size_t i, const nlohmann::json& entry,
+                      const std::string& value) {
+    if (std::string_view(key) == "buffers" && startsWithNoCase(value, "data:"))
+      checkDataBuffer(file, i, entry, value);
+    const std::string problem = uriProblem(value);
+    if (!problem.empty())
+      throw SceneError(
+          file, std::string(key) + "[" + std::to_string(i) + "].uri " +
+                    nlohmann::json(value.size() > 200 ? value.substr(0, 200) + "..." : value)
+                        .dump(-1, ' ', true) +
+                    " " + problem);
+  });
 }
 
 }  // namespace taa::scene

@@ -50,6 +50,16 @@ std::vector<Frame> boundedSequence(int frames) {
   return seq;
 }
 
+// Makes output pixel (x, y) brighter than every tap of its (edge-clamped) 3x3 box in every
+// channel: outside the box in RGB and, through Y, in YCoCg.
+void brightenPastTheBox(Frame& f, int x, int y) {
+  float hi[3] = {0, 0, 0};
+  for (int j = std::max(y - 1, 0); j <= std::min(y + 1, kH - 1); ++j)
+    for (int i = std::max(x - 1, 0); i <= std::min(x + 1, kW - 1); ++i)
+      for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], f.current.at(i, j, c));
+  setRgb(f.output, x, y, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+}
+
 spec::CheckedCase rgbCase() {
   auto s = staticCase();
   s.taa.color_space = spec::ColorSpace::Rgb;
@@ -70,13 +80,7 @@ TEST(InvariantHistoryBounded, ConvexBlendPassesInBothSpaces) {
 
 TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
   auto seq = boundedSequence(4);
-  // Brighter than every tap in every channel: outside in RGB and, through Y, in YCoCg.
-  Image& cur = seq[2].current;
-  float hi[3] = {0, 0, 0};
-  for (int j = 3; j <= 5; ++j)
-    for (int i = 4; i <= 6; ++i)
-      for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
-  setRgb(seq[2].output, 5, 4, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+  brightenPastTheBox(seq[2], 5, 4);
   for (auto s : {staticCase(), rgbCase()}) {
     const auto o = runAll("history_bounded", s, seq);
     EXPECT_FALSE(o.passed);
@@ -92,12 +96,7 @@ TEST(InvariantHistoryBounded, PixelOutsideTheBoxFailsWithItsLocation) {
 // box nor puts a pixel inside it out.
 TEST(InvariantHistoryBounded, TheOutputsAlphaPlaysNoPart) {
   auto seq = boundedSequence(4);
-  const Image& cur = seq[2].current;
-  float hi[3] = {0, 0, 0};
-  for (int j = 3; j <= 5; ++j)
-    for (int i = 4; i <= 6; ++i)
-      for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
-  setRgb(seq[2].output, 5, 4, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+  brightenPastTheBox(seq[2], 5, 4);
   seq[2].output.at(5, 4, 3) = 1e6f;
   seq[2].output.at(1, 1, 3) = std::nanf("");
   for (auto s : {staticCase(), rgbCase()}) {
@@ -113,12 +112,7 @@ TEST(InvariantHistoryBounded, TheOutputsAlphaPlaysNoPart) {
 TEST(InvariantHistoryBounded, APixelOnEachEdgeIsChecked) {
   for (const auto& [x, y] : {std::pair{0, 4}, {kW - 1, 4}, {5, 0}, {5, kH - 1}}) {
     auto seq = boundedSequence(3);
-    const Image& cur = seq[1].current;
-    float hi[3] = {0, 0, 0};
-    for (int j = std::max(y - 1, 0); j <= std::min(y + 1, kH - 1); ++j)
-      for (int i = std::max(x - 1, 0); i <= std::min(x + 1, kW - 1); ++i)
-        for (int c = 0; c < 3; ++c) hi[c] = std::max(hi[c], cur.at(i, j, c));
-    setRgb(seq[1].output, x, y, hi[0] + 0.1f, hi[1] + 0.1f, hi[2] + 0.1f);
+    brightenPastTheBox(seq[1], x, y);
     const auto o = runAll("history_bounded", rgbCase(), seq);
     EXPECT_FALSE(o.passed) << x << ", " << y;
     EXPECT_EQ(valueOf(o, "x"), double(x));

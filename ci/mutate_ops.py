@@ -180,7 +180,7 @@ class _Names:
     WINDOW = 60
 
     def __init__(self, text, header_text):
-        self.members, self.header, self.lines = set(), set(), []
+        self.members, self.header, self.lines, self._near = set(), set(), [], {}
         for source, is_header in ((text, False), (header_text, True)):
             in_block = False
             for raw in source.split("\n"):
@@ -195,7 +195,9 @@ class _Names:
     def fits(self, number, is_member):
         if is_member:
             return lambda o: o in self.members
-        near = set().union(*self.lines[max(0, number - self.WINDOW):number])
+        near = self._near.get(number)
+        if near is None:  # a line with several identifiers asks for its window once
+            near = self._near[number] = set().union(*self.lines[max(0, number - self.WINDOW):number])
         return lambda o: o in self.header or o in near
 
 
@@ -275,14 +277,27 @@ def _deletable(code, prev_code):
     return bool(_ASSIGN.match(code) or _CALL.match(code))
 
 
+_scanned = {}
+
+
 def file_mutants(root, rel, kind):
     """Every site of every operator, WHOLE_TREE_OPS included (all_mutants filters them):
     adding those never renumbers another operator's ids."""
     text = (root / rel).read_text()
-    lines = text.split("\n")
     # A member renamed to its previous-frame twin is often declared in the header beside.
     header = (root / rel).with_suffix(".h")
-    names = _Names(text, header.read_text() if header.is_file() else "")
+    header_text = header.read_text() if header.is_file() else ""
+    # A process that lists twice (the selftest, --whole-tree beside the default) scans a file
+    # once for the same bytes; an edited file is scanned again.
+    key = (rel, kind, text, header_text)
+    if key not in _scanned:
+        _scanned[key] = _scan(rel, kind, text, header_text)
+    return list(_scanned[key])
+
+
+def _scan(rel, kind, text, header_text):
+    lines = text.split("\n")
+    names = _Names(text, header_text)
     # prev_code: the last code line the older operators looked at (lines with a string left
     # out, as they always were, so their ids stay); prev_any: the last code line at all.
     counters, mutants, in_block, prev_code, prev_any = {}, [], False, "", ""

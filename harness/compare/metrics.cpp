@@ -84,4 +84,14 @@ Metrics computeMetrics(const Image& a, const Image& b, const MetricOptions& opti
   return m;
 }
 
+Metrics metricsOfIdentical(const Image& image, const MetricOptions& options) {
+  checkPair(image, image);
+  Metrics m;
+  m.channelsCompared = comparedChannels(image, options);
+  m.psnr = kInf;
+  if (0.0 > options.threshold) m.pixelsOverThreshold = image.pixelCount();
+  m.shareOverThreshold = double(m.pixelsOverThreshold) / double(image.pixelCount());
+  return m;
+}
+
 }  // namespace taa::compare

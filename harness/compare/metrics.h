@@ -42,6 +42,9 @@ struct Metrics {
 
 // Throws std::invalid_argument when the images differ in shape or are empty.
 Metrics computeMetrics(const Image& a, const Image& b, const MetricOptions& options = {});
+// computeMetrics(image, image, options) without reading a pixel: every sample error of an image
+// against its own bytes is 0, NaN against NaN and an infinity against itself included.
+Metrics metricsOfIdentical(const Image& image, const MetricOptions& options = {});
 
 // One channel per pixel: the largest per-sample error over the compared channels (the quantity
 // the threshold is applied to); +Inf where the rules above say so.

@@ -8,6 +8,8 @@
 #include <limits>
 
 #include "compare/flip.h"
+#include "compare/metric_table.h"
+#include "compare/metrics.h"
 #include "core/image_io.h"
 
 namespace taa::compare {
@@ -61,6 +63,48 @@ TEST(DisplayedPng, FlipInTheMetricsIsFlipOfThePngs) {
                    flipLdr(displayedPng(golden), displayedPng(actual)).mean);
   // The unrounded tonemapped images give another figure: the two are not the same measurement.
   EXPECT_NE(measured.metrics.flipMean, flipLdrFromHdr(golden, actual).mean);
+}
+
+// A frame equal to its golden skips the metrics and FLIP (most frames of a run): what it
+// reports must be what the computation gives, for every kind of value a frame holds.
+TEST(IdenticalFrames, MeasureAsTheFullComputationDoes) {
+  std::vector<Image> frames = {awkwardFrame()};
+  for (int channels : {1, 2, 3}) {
+    Image img(9, 5, channels);
+    for (size_t i = 0; i < img.data.size(); ++i) img.data[i] = i % 4 == 0 ? -2.0f : float(i) / 7.0f;
+    frames.push_back(img);
+  }
+  for (const Image& frame : frames) {
+    for (float threshold : {0.0f, 1.0f / 255.0f, -1.0f}) {
+      for (bool alpha : {false, true}) {
+        MetricOptions options;
+        options.threshold = threshold;
+        options.includeAlpha = alpha;
+        const Metrics full = computeMetrics(frame, frame, options);
+        const Metrics skipped = metricsOfIdentical(frame, options);
+        EXPECT_EQ(skipped.maxAbsError, full.maxAbsError);
+        EXPECT_EQ(skipped.meanAbsError, full.meanAbsError);
+        EXPECT_EQ(skipped.rmse, full.rmse);
+        EXPECT_EQ(skipped.psnr, full.psnr);
+        EXPECT_EQ(skipped.pixelsOverThreshold, full.pixelsOverThreshold) << threshold;
+        EXPECT_EQ(skipped.shareOverThreshold, full.shareOverThreshold) << threshold;
+        EXPECT_EQ(skipped.nonFinitePixels, full.nonFinitePixels);
+        EXPECT_EQ(skipped.channelsCompared, full.channelsCompared) << frame.channels << alpha;
+      }
+    }
+    const FlipResult flip = flipLdr(displayedPng(frame), displayedPng(frame));
+    const Image copy = frame;  // another buffer with the same bytes: the shortcut's case
+    const float threshold = 1.0f / 255.0f;
+    const Measured measured = measureAgainstGolden(frame, copy, threshold);
+    MetricOptions options;
+    options.threshold = threshold;
+    const Metrics full = computeMetrics(frame, frame, options);
+    for (const auto* row : goldenMetrics())
+      EXPECT_EQ(measured.metrics.*row->golden, row->value(full, flip)) << row->name;
+    ASSERT_TRUE(measured.errorMap.sameShape(flip.errorMap));
+    EXPECT_TRUE(measured.errorMap.data == flip.errorMap.data) << "FLIP of a frame against itself";
+    EXPECT_EQ(measured.metrics.psnr, std::numeric_limits<double>::infinity());
+  }
 }
 
 }  // namespace

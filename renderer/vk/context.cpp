@@ -8,6 +8,7 @@
 
 #include "core/cpu_cores.h"
 #include "vk/check.h"
+#include "vk/driver_manifests.h"
 #include "vk/pipeline_cache.h"
 
 namespace taa::vk {
@@ -75,8 +76,20 @@ Context::Context(const ContextOptions& options) {
   std::string wanted = options.device;
   if (wanted.empty())
     if (const char* env = std::getenv("TAA_DEVICE")) wanted = env;
-  createInstance(options.validate);
-  pickDevice(wanted);
+  // lavapipe wanted: its driver alone is loaded (vk/driver_manifests.h). A manifest that names
+  // lavapipe but gives no device (a broken or other-architecture install) falls back to every
+  // driver the loader finds, so the choice never loses a device the user has.
+  const std::string onlyLavapipe = wanted.empty() ? lavapipeOnlyDriverFiles(std::getenv) : "";
+  if (!onlyLavapipe.empty()) {
+    setenv("VK_DRIVER_FILES", onlyLavapipe.c_str(), 1);
+    const bool found = createInstance(options.validate, false) && pickDevice(wanted, false);
+    unsetenv("VK_DRIVER_FILES");
+    if (!found) destroyInstance();
+  }
+  if (!instance_) {
+    createInstance(options.validate, true);
+    pickDevice(wanted, true);
+  }
   createDevice();
   pipelines_ = std::make_unique<PipelineCache>();
 }
@@ -89,15 +102,22 @@ Context::~Context() {
     vkDestroyCommandPool(device_, pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
+  destroyInstance();
+}
+
+void Context::destroyInstance() {
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
     if (destroy) destroy(instance_, messenger_, nullptr);
   }
   if (instance_) vkDestroyInstance(instance_, nullptr);
+  messenger_ = VK_NULL_HANDLE;
+  instance_ = VK_NULL_HANDLE;
+  physical_ = VK_NULL_HANDLE;
 }
 
-void Context::createInstance(bool validate) {
+bool Context::createInstance(bool validate, bool mustSucceed) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "taa-harness";
   app.apiVersion = VK_API_VERSION_1_3;
@@ -117,6 +137,10 @@ void Context::createInstance(bool validate) {
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+  if ((r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED) && !mustSucceed) {
+    instance_ = VK_NULL_HANDLE;
+    return false;
+  }
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
     throw EnvironmentError(std::string("no Vulkan 1.3 driver found (") + resultName(r) + "); " + kNoDeviceFix);
   VK_CHECK(r);
@@ -132,13 +156,17 @@ void Context::createInstance(bool validate) {
         vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
     VK_CHECK(create(instance_, &m, nullptr, &messenger_));
   }
+  return true;
 }
 
-void Context::pickDevice(const std::string& wanted) {
+bool Context::pickDevice(const std::string& wanted, bool mustSucceed) {
   uint32_t count = 0;
-  VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  const VkResult listed = vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+  if (listed != VK_SUCCESS && !mustSucceed) return false;
+  VK_CHECK(listed);
   std::vector<VkPhysicalDevice> devices(count);
   VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, devices.data()));
+  if (devices.empty() && !mustSucceed) return false;
   if (devices.empty()) throw EnvironmentError(std::string("no Vulkan device found; ") + kNoDeviceFix);
 
   std::string names;
@@ -150,6 +178,7 @@ void Context::pickDevice(const std::string& wanted) {
     const bool match = wanted.empty() ? isCpu : lower(p.deviceName).find(lower(wanted)) != std::string::npos;
     if (match && VK_API_VERSION_MINOR(p.apiVersion) >= 3 && !physical_) physical_ = d;
   }
+  if (!physical_ && !mustSucceed) return false;
   if (!physical_) {
     if (wanted.empty())
       throw EnvironmentError("no lavapipe (llvmpipe) Vulkan 1.3 device among: " + names +
@@ -170,6 +199,7 @@ void Context::pickDevice(const std::string& wanted) {
   info_.deviceId = props.properties.deviceID;
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   info_.timestampPeriodNs = props.properties.limits.timestampPeriod;
+  return true;
 }
 
 void Context::createDevice() {

@@ -66,8 +66,10 @@ class Context {
   PipelineCache& pipelines() { return *pipelines_; }
 
  private:
-  void createInstance(bool validate);
-  void pickDevice(const std::string& wanted);
+  // Each returns false where it would throw, unless `mustSucceed` (the last try).
+  bool createInstance(bool validate, bool mustSucceed);
+  bool pickDevice(const std::string& wanted, bool mustSucceed);
+  void destroyInstance();
   void createDevice();
 
   VkInstance instance_ = VK_NULL_HANDLE;

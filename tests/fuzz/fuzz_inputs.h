@@ -36,6 +36,7 @@
 #include "user/glsl_compiler.h"
 #include "user/spirv_cache.h"
 #include "user/spirv_check.h"
+#include "vk/driver_manifests.h"
 #include "user/user_interface.h"
 
 namespace taa::fuzz {
@@ -95,6 +96,7 @@ inline void readGoldenManifest(const std::string& text) {
 inline void readFolderJson(const std::string& text) {
   readResults(text);
   readGoldenManifest(text);
+  (void)vk::isLavapipeManifest(text);  // a Vulkan driver manifest (vk/driver_manifests.h)
 }
 
 // A lanes file (score --lanes): read from a private folder, as the loader reads a file.

@@ -1,5 +1,5 @@
 // libFuzzer target for the results-file readers (merge, coverage --results, run --verdict-from)
-// and the golden manifest reader, on the same bytes;
+// the golden manifest reader and the Vulkan driver manifest check, on the same bytes;
 // see fuzz_inputs.h and ci/fuzz.sh.
 #include <cstddef>
 #include <cstdint>

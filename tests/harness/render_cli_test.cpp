@@ -2,7 +2,10 @@
 // truth beside each of them (EXR in float and a PNG view), opaque and the frame's size.
 #include "harness/cli_fixture.h"
 
+#include <nlohmann/json.hpp>
+
 #include "core/image_io.h"
+#include "vk/driver_manifests.h"
 
 namespace taa::render_cli_test {
 namespace {
@@ -50,6 +53,34 @@ TEST_F(HarnessCli, RenderValidateFailsWhenTheLayerReportsAMessage) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("small: "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find(" validation message(s)\n"), std::string::npos) << r.output;
+}
+
+// A manifest that names lavapipe's library but gives no driver (a broken install, another
+// architecture's) must not cost a user their device: the harness, which loads lavapipe's
+// manifests alone (vk/driver_manifests.h), then takes every driver the loader finds, here a
+// manifest naming lavapipe under another file name.
+TEST_F(HarnessCli, ALavapipeManifestThatGivesNoDeviceFallsBackToEveryDriver) {
+  const std::string system = vk::lavapipeOnlyDriverFiles(std::getenv);
+  if (system.empty()) GTEST_SKIP() << "drivers chosen in the environment, or no lavapipe manifest";
+  const auto manifest = nlohmann::json::parse(readFile(system.substr(0, system.find(':'))));
+  const fs::path library = manifest["ICD"]["library_path"].get<std::string>();
+  if (!library.is_absolute()) GTEST_SKIP() << "lavapipe's manifest names no folder: " << library;
+  const fs::path config = root_ / "config" / "vulkan" / "icd.d", data = root_ / "data" / "vulkan" / "icd.d";
+  fs::create_directories(config);
+  fs::create_directories(data);
+  fs::create_directories(root_ / "lib");
+  fs::create_symlink(library, root_ / "lib" / "libcpu_renamed.so");
+  std::ofstream(config / "lvp_icd.json") << R"({"file_format_version": "1.0.0", "ICD":
+    {"library_path": "/nonexistent/libvulkan_lvp.so", "api_version": "1.3.0"}})";
+  nlohmann::json renamed = manifest;
+  renamed["ICD"]["library_path"] = (root_ / "lib" / "libcpu_renamed.so").string();
+  std::ofstream(data / "cpu_icd.json") << renamed.dump();
+  const std::string env = "XDG_CONFIG_HOME=" + (root_ / "config").string() +
+                          " XDG_CONFIG_DIRS=/nonexistent XDG_DATA_HOME=/nonexistent XDG_DATA_DIRS=" +
+                          (root_ / "data").string();
+  const auto r = harness("render " + casePath("small") + " --out " + (root_ / "out").string(), env);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
 }
 
 }  // namespace

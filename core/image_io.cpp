@@ -100,7 +100,8 @@ std::string pixelSha256(const Image& image) {
   return sha256OfHalves(image.data.size(), [&v] { return floatToHalfBits(*v++); });
 }
 
-std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes, size_t rows) {
+std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes,
+                            size_t rows) {
   Sha256 hash;
   std::array<uint16_t, 4096> chunk;
   for (size_t y = 0; y < rows; ++y) {

@@ -112,6 +112,7 @@ std::string pixelSha256(const Image& image);
 // pixelSha256 of the image decoded from these halves (`rows` rows of `rowHalves` little-endian
 // halves, `strideBytes` apart), without decoding: the halves as they are, less the quiet bit a
 // signalling NaN gains in the round trip through float. Frames read back in halves are hashed so.
-std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes, size_t rows);
+std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes,
+                            size_t rows);
 
 }  // namespace taa

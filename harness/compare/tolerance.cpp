@@ -44,8 +44,10 @@ Measured measureAgainstGolden(const Image& golden, const Image& actual, float pi
   MetricOptions options;
   options.threshold = pixelThreshold;
   const bool same = sameBytes(golden, actual);
-  const Metrics lin = same ? metricsOfIdentical(actual, options) : computeMetrics(golden, actual, options);
-  const FlipResult flip = same ? flipOfIdentical(actual) : flipLdr(displayedPng(golden), displayedPng(actual));
+  const Metrics lin =
+      same ? metricsOfIdentical(actual, options) : computeMetrics(golden, actual, options);
+  const FlipResult flip =
+      same ? flipOfIdentical(actual) : flipLdr(displayedPng(golden), displayedPng(actual));
   Measured out;
   for (const auto* row : goldenMetrics()) out.metrics.*row->golden = row->value(lin, flip);
   out.errorMap = flip.errorMap;

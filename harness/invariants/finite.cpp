@@ -21,7 +21,8 @@ class Finite : public Invariant {
     // Nearly every frame is finite throughout: one branch-free pass over the bits says so, and
     // only a frame that is not is walked pixel by pixel.
     uint32_t nonFinite = 0;
-    for (const float v : img.data) nonFinite |= uint32_t((std::bit_cast<uint32_t>(v) & 0x7f800000u) == 0x7f800000u);
+    for (const float v : img.data)
+      nonFinite |= uint32_t((std::bit_cast<uint32_t>(v) & 0x7f800000u) == 0x7f800000u);
     if (nonFinite == 0) return;
     long long here = 0;
     for (int y = 0; y < img.height; ++y)

@@ -32,11 +32,13 @@ void addEach(std::vector<fs::path>& out, const std::string& list) {
 std::vector<fs::path> driverManifestFolders(const EnvLookup& env) {
   const std::string home = envOr(env, "HOME", "");
   std::vector<fs::path> out;
-  const std::string configHome = envOr(env, "XDG_CONFIG_HOME", home.empty() ? "" : home + "/.config");
+  const std::string configHome =
+      envOr(env, "XDG_CONFIG_HOME", home.empty() ? "" : home + "/.config");
   if (!configHome.empty()) addEach(out, configHome);
   addEach(out, envOr(env, "XDG_CONFIG_DIRS", "/etc/xdg"));
   addEach(out, "/etc");
-  const std::string dataHome = envOr(env, "XDG_DATA_HOME", home.empty() ? "" : home + "/.local/share");
+  const std::string dataHome =
+      envOr(env, "XDG_DATA_HOME", home.empty() ? "" : home + "/.local/share");
   if (!dataHome.empty()) addEach(out, dataHome);
   addEach(out, envOr(env, "XDG_DATA_DIRS", "/usr/local/share:/usr/share"));
   return out;

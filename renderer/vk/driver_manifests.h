@@ -7,6 +7,7 @@
 // the loader finds them as it always does.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/image_io.h"
+#include "support/text.h"
 #include "vk/driver_manifests.h"
 
 namespace taa::render_cli_test {
@@ -62,7 +63,7 @@ TEST_F(HarnessCli, RenderValidateFailsWhenTheLayerReportsAMessage) {
 TEST_F(HarnessCli, ALavapipeManifestThatGivesNoDeviceFallsBackToEveryDriver) {
   const std::string system = vk::lavapipeOnlyDriverFiles(std::getenv);
   if (system.empty()) GTEST_SKIP() << "drivers chosen in the environment, or no lavapipe manifest";
-  const auto manifest = nlohmann::json::parse(readFile(system.substr(0, system.find(':'))));
+  const auto manifest = nlohmann::json::parse(test::readFile(system.substr(0, system.find(':'))));
   const fs::path library = manifest["ICD"]["library_path"].get<std::string>();
   if (!library.is_absolute()) GTEST_SKIP() << "lavapipe's manifest names no folder: " << library;
   const fs::path config = root_ / "config" / "vulkan" / "icd.d", data = root_ / "data" / "vulkan" / "icd.d";

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/gpu.h"
 
@@ -39,27 +41,32 @@ TEST(DriverManifests, TheFoldersAreTheLoadersInItsOrder) {
   auto folders = driverManifestFolders(envOf({{"HOME", "/home/u"}}));
   std::vector<std::string> got;
   for (const auto& f : folders) got.push_back(f.string());
-  EXPECT_EQ(got, (std::vector<std::string>{
-                     "/home/u/.config/vulkan/icd.d", "/etc/xdg/vulkan/icd.d", "/etc/vulkan/icd.d",
-                     "/home/u/.local/share/vulkan/icd.d", "/usr/local/share/vulkan/icd.d",
-                     "/usr/share/vulkan/icd.d"}));
-  folders = driverManifestFolders(envOf({{"XDG_CONFIG_HOME", "/c"}, {"XDG_CONFIG_DIRS", "/x::/y"},
-                                         {"XDG_DATA_HOME", "/d"}, {"XDG_DATA_DIRS", "/s"}}));
+  EXPECT_EQ(got,
+            (std::vector<std::string>{"/home/u/.config/vulkan/icd.d", "/etc/xdg/vulkan/icd.d",
+                                      "/etc/vulkan/icd.d", "/home/u/.local/share/vulkan/icd.d",
+                                      "/usr/local/share/vulkan/icd.d", "/usr/share/vulkan/icd.d"}));
+  folders = driverManifestFolders(envOf({{"XDG_CONFIG_HOME", "/c"},
+                                         {"XDG_CONFIG_DIRS", "/x::/y"},
+                                         {"XDG_DATA_HOME", "/d"},
+                                         {"XDG_DATA_DIRS", "/s"}}));
   got.clear();
   for (const auto& f : folders) got.push_back(f.string());
-  EXPECT_EQ(got, (std::vector<std::string>{"/c/vulkan/icd.d", "/x/vulkan/icd.d", "/y/vulkan/icd.d",
-                                           "/etc/vulkan/icd.d", "/d/vulkan/icd.d", "/s/vulkan/icd.d"}));
+  EXPECT_EQ(got,
+            (std::vector<std::string>{"/c/vulkan/icd.d", "/x/vulkan/icd.d", "/y/vulkan/icd.d",
+                                      "/etc/vulkan/icd.d", "/d/vulkan/icd.d", "/s/vulkan/icd.d"}));
 }
 
 TEST(DriverManifests, OnlyAManifestOfLavapipesLibraryIsLavapipes) {
   EXPECT_TRUE(isLavapipeManifest(kLavapipe));
   EXPECT_TRUE(isLavapipeManifest(R"({"ICD": {"library_path": "/opt/mesa/lib/libvulkan_lvp.so"}})"));
   EXPECT_FALSE(isLavapipeManifest(kRadeon));
-  EXPECT_FALSE(isLavapipeManifest(R"({"ICD": {"library_path": "/opt/libvulkan_lvp.so/libvulkan_intel.so"}})"));
-  for (const char* forged : {"", "[]", "{", R"({"ICD": 3})", R"({"ICD": {"library_path": 7}})",
-                             R"({"ICD": {"library_path": ["libvulkan_lvp.so"]}})",
-                             R"({"layer": {"library_path": "libvulkan_lvp.so"}})",
-                             R"({"ICD": {"library_path": "libvulkan_lvp.so"}, "ICD": {"library_path": "x.so"}})"})
+  EXPECT_FALSE(isLavapipeManifest(
+      R"({"ICD": {"library_path": "/opt/libvulkan_lvp.so/libvulkan_intel.so"}})"));
+  for (const char* forged :
+       {"", "[]", "{", R"({"ICD": 3})", R"({"ICD": {"library_path": 7}})",
+        R"({"ICD": {"library_path": ["libvulkan_lvp.so"]}})",
+        R"({"layer": {"library_path": "libvulkan_lvp.so"}})",
+        R"({"ICD": {"library_path": "libvulkan_lvp.so"}, "ICD": {"library_path": "x.so"}})"})
     EXPECT_FALSE(isLavapipeManifest(forged)) << forged;
   EXPECT_FALSE(isLavapipeManifest(std::string(100000, '[') + std::string(100000, ']')));
 }
@@ -67,7 +74,8 @@ TEST(DriverManifests, OnlyAManifestOfLavapipesLibraryIsLavapipes) {
 TEST(DriverManifests, LavapipesManifestsAloneAreNamedAndHostileEntriesSkipped) {
   const fs::path root = fs::path(TAA_TEST_OUT) / "driver-manifests";
   fs::remove_all(root);
-  const fs::path config = root / "config" / "vulkan" / "icd.d", data = root / "data" / "vulkan" / "icd.d";
+  const fs::path config = root / "config" / "vulkan" / "icd.d",
+                 data = root / "data" / "vulkan" / "icd.d";
   write(config / "radeon_icd.x86_64.json", kRadeon);
   write(config / "lvp_icd.x86_64.json", kLavapipe);
   write(config / "broken.json", "{\"ICD\": ");
@@ -78,20 +86,25 @@ TEST(DriverManifests, LavapipesManifestsAloneAreNamedAndHostileEntriesSkipped) {
   write(root / "outside" / "mine.json", kLavapipe);  // a link to a manifest is the loader's way too
   fs::create_symlink(root / "outside" / "mine.json", config / "linked.json");
   fs::create_symlink(root / "nowhere.json", config / "dangling.json");
-  write(data / "lvp_icd.i686.json", R"({"ICD": {"library_path": "/usr/lib/i386-linux-gnu/libvulkan_lvp.so"}})");
-  const auto env = envOf({{"XDG_CONFIG_HOME", (root / "config").string()}, {"XDG_CONFIG_DIRS", "/nonexistent"},
-                          {"XDG_DATA_HOME", "/nonexistent"}, {"XDG_DATA_DIRS", (root / "data").string()}});
-  EXPECT_EQ(lavapipeOnlyDriverFiles(env),
-            (config / "linked.json").string() + ":" + (config / "lvp_icd.x86_64.json").string() + ":" +
-                (data / "lvp_icd.i686.json").string());
+  write(data / "lvp_icd.i686.json",
+        R"({"ICD": {"library_path": "/usr/lib/i386-linux-gnu/libvulkan_lvp.so"}})");
+  const auto env = envOf({{"XDG_CONFIG_HOME", (root / "config").string()},
+                          {"XDG_CONFIG_DIRS", "/nonexistent"},
+                          {"XDG_DATA_HOME", "/nonexistent"},
+                          {"XDG_DATA_DIRS", (root / "data").string()}});
+  EXPECT_EQ(lavapipeOnlyDriverFiles(env), (config / "linked.json").string() + ":" +
+                                              (config / "lvp_icd.x86_64.json").string() + ":" +
+                                              (data / "lvp_icd.i686.json").string());
   // Drivers the user chose stay the user's.
   for (const char* chosen : {"VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES"}) {
     auto vars = std::map<std::string, std::string>{{"XDG_CONFIG_HOME", (root / "config").string()},
                                                    {chosen, "/some/driver.json"}};
     EXPECT_EQ(lavapipeOnlyDriverFiles(envOf(vars)), "") << chosen;
   }
-  EXPECT_EQ(lavapipeOnlyDriverFiles(envOf({{"XDG_CONFIG_HOME", "/nonexistent"}, {"XDG_CONFIG_DIRS", "/nonexistent"},
-                                          {"XDG_DATA_HOME", "/nonexistent"}, {"XDG_DATA_DIRS", "/nonexistent"}})),
+  EXPECT_EQ(lavapipeOnlyDriverFiles(envOf({{"XDG_CONFIG_HOME", "/nonexistent"},
+                                           {"XDG_CONFIG_DIRS", "/nonexistent"},
+                                           {"XDG_DATA_HOME", "/nonexistent"},
+                                           {"XDG_DATA_DIRS", "/nonexistent"}})),
             "");
 }
 
@@ -112,7 +125,8 @@ std::vector<std::string> mappedDrivers() {
 
 TEST(DriverManifests, TheTestDeviceLoadedLavapipeAlone) {
   const std::string only = lavapipeOnlyDriverFiles(std::getenv);
-  if (only.empty()) GTEST_SKIP() << "drivers chosen in the environment, or no lavapipe manifest found";
+  if (only.empty())
+    GTEST_SKIP() << "drivers chosen in the environment, or no lavapipe manifest found";
   (void)test::gpu();
   EXPECT_EQ(mappedDrivers(), std::vector<std::string>{"libvulkan_lvp.so"});
   EXPECT_EQ(std::getenv("VK_DRIVER_FILES"), nullptr) << "the choice must not reach child processes";

@@ -28,7 +28,8 @@ std::vector<uint8_t> everyHalfPadded() {
 
 TEST(ReadbackDecode, EveryHalfDecodesAsHalfBitsToFloat) {
   const auto bytes = everyHalfPadded();
-  const Image img = decodeTarget(bytes, VK_FORMAT_R16G16B16A16_SFLOAT, kRowStride, kRowPixels, kRows);
+  const Image img =
+      decodeTarget(bytes, VK_FORMAT_R16G16B16A16_SFLOAT, kRowStride, kRowPixels, kRows);
   ASSERT_EQ(img.channels, 4);
   for (int y = 0; y < kRows; ++y)
     for (int i = 0; i < kRowPixels * 4; ++i) {
@@ -44,7 +45,8 @@ TEST(ReadbackDecode, EveryHalfDecodesAsHalfBitsToFloat) {
 TEST(ReadbackDecode, HashOfTheHalvesIsTheHashOfTheDecodedImage) {
   auto bytes = everyHalfPadded();
   const auto hashBoth = [&] {
-    const Image img = decodeTarget(bytes, VK_FORMAT_R16G16B16A16_SFLOAT, kRowStride, kRowPixels, kRows);
+    const Image img =
+        decodeTarget(bytes, VK_FORMAT_R16G16B16A16_SFLOAT, kRowStride, kRowPixels, kRows);
     return std::pair(halfPixelSha256(bytes.data(), kRowPixels * 4, kRowStride * 4 * 2, kRows),
                      pixelSha256(img));
   };

@@ -15,7 +15,7 @@
 
 #include "support/gpu.h"
 
-namespace taa::vk {
+namespace taa::vk::driver_manifests_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -133,4 +133,4 @@ TEST(DriverManifests, TheTestDeviceLoadedLavapipeAlone) {
 }
 
 }  // namespace
-}  // namespace taa::vk
+}  // namespace taa::vk::driver_manifests_test

@@ -10,7 +10,7 @@
 #include "core/image_io.h"
 #include "frame/readback.h"
 
-namespace taa {
+namespace taa::readback_decode_test {
 namespace {
 
 constexpr int kRowPixels = 128, kRowStride = 131, kRows = 128;  // 128 x 128 x 4 = every half once
@@ -62,4 +62,4 @@ TEST(ReadbackDecode, HashOfTheHalvesIsTheHashOfTheDecodedImage) {
 }
 
 }  // namespace
-}  // namespace taa
+}  // namespace taa::readback_decode_test

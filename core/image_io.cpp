@@ -71,53 +71,21 @@ float halfRound(float value) {
   return halfBitsToFloat(floatToHalfBits(value));
 }
 
-namespace {
-
-// SHA-256 of the halves `next()` gives, `count` of them, little-endian; chunked so a 4K frame
-// does not need a second full-size buffer.
-template <class Next>
-std::string sha256OfHalves(size_t count, Next next) {
+std::string pixelSha256(const Image& image) {
   Sha256 hash;
+  // Chunked so a 4K frame does not need a second full-size buffer.
   std::array<uint8_t, 8192> chunk;
-  for (size_t left = count; left > 0;) {
+  const float* v = image.data.data();
+  for (size_t left = image.data.size(); left > 0;) {
     const size_t n = std::min(left, chunk.size() / 2);
     for (size_t i = 0; i < n; ++i) {
-      const uint16_t h = next();
+      const uint16_t h = floatToHalfBits(v[i]);
       chunk[2 * i] = uint8_t(h & 0xffu);
       chunk[2 * i + 1] = uint8_t(h >> 8);
     }
     hash.update(chunk.data(), 2 * n);
+    v += n;
     left -= n;
-  }
-  const auto digest = hash.finish();
-  return toHex(digest.data(), digest.size());
-}
-
-}  // namespace
-
-std::string pixelSha256(const Image& image) {
-  const float* v = image.data.data();
-  return sha256OfHalves(image.data.size(), [&v] { return floatToHalfBits(*v++); });
-}
-
-std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes,
-                            size_t rows) {
-  Sha256 hash;
-  std::array<uint16_t, 4096> chunk;
-  for (size_t y = 0; y < rows; ++y) {
-    for (size_t done = 0; done < rowHalves;) {
-      const size_t n = std::min(rowHalves - done, chunk.size());
-      std::memcpy(chunk.data(), bytes + y * strideBytes + 2 * done, 2 * n);
-      // floatToHalfBits(halfBitsToFloat(h)) is h but for a NaN without its quiet bit.
-      for (size_t i = 0; i < n; ++i) {
-        const uint16_t h = chunk[i];
-        const bool nan = (h & 0x7c00u) == 0x7c00u && (h & 0x3ffu) != 0;
-        chunk[i] = uint16_t(nan ? h | 0x200u : h);
-      }
-      static_assert(std::endian::native == std::endian::little, "halves are hashed little-endian");
-      hash.update(reinterpret_cast<const uint8_t*>(chunk.data()), 2 * n);
-      done += n;
-    }
   }
   const auto digest = hash.finish();
   return toHex(digest.data(), digest.size());

@@ -109,10 +109,5 @@ float halfRound(float value);
 
 // See the definition at the top of this file.
 std::string pixelSha256(const Image& image);
-// pixelSha256 of the image decoded from these halves (`rows` rows of `rowHalves` little-endian
-// halves, `strideBytes` apart), without decoding: the halves as they are, less the quiet bit a
-// signalling NaN gains in the round trip through float. Frames read back in halves are hashed so.
-std::string halfPixelSha256(const uint8_t* bytes, size_t rowHalves, size_t strideBytes,
-                            size_t rows);
 
 }  // namespace taa

@@ -137,11 +137,12 @@ bool Context::createInstance(bool validate, bool mustSucceed) {
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
-  if ((r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED) && !mustSucceed) {
+  const bool noDriver = r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED;
+  if (noDriver && !mustSucceed) {
     instance_ = VK_NULL_HANDLE;
     return false;
   }
-  if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
+  if (noDriver)
     throw EnvironmentError(std::string("no Vulkan 1.3 driver found (") + resultName(r) + "); " + kNoDeviceFix);
   VK_CHECK(r);
 

@@ -1,6 +1,5 @@
-// Frames come back from the device as halves: decodeTarget's table and the hash taken from the
-// halves themselves (halfPixelSha256) must give, for every one of the 65536 half patterns,
-// what halfBitsToFloat and pixelSha256 of the decoded image give, in rows with padding.
+// Frames come back from the device as halves: decodeTarget's table must give, for every one of
+// the 65536 half patterns, what halfBitsToFloat gives, in rows with padding.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -40,25 +39,6 @@ TEST(ReadbackDecode, EveryHalfDecodesAsHalfBitsToFloat) {
                 std::bit_cast<uint32_t>(want))
           << "half 0x" << std::hex << bits;
     }
-}
-
-TEST(ReadbackDecode, HashOfTheHalvesIsTheHashOfTheDecodedImage) {
-  auto bytes = everyHalfPadded();
-  const auto hashBoth = [&] {
-    const Image img =
-        decodeTarget(bytes, VK_FORMAT_R16G16B16A16_SFLOAT, kRowStride, kRowPixels, kRows);
-    return std::pair(halfPixelSha256(bytes.data(), kRowPixels * 4, kRowStride * 4 * 2, kRows),
-                     pixelSha256(img));
-  };
-  const auto [fromHalves, fromImage] = hashBoth();
-  EXPECT_EQ(fromHalves, fromImage);  // signalling NaNs among the patterns included
-  // The padding is not hashed; one changed half is.
-  bytes[kRowPixels * 4 * 2] ^= 0x5a;
-  EXPECT_EQ(hashBoth().first, fromHalves);
-  bytes[2] ^= 0x01;
-  const auto [changed, changedImage] = hashBoth();
-  EXPECT_NE(changed, fromHalves);
-  EXPECT_EQ(changed, changedImage);
 }
 
 }  // namespace

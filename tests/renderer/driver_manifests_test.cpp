@@ -86,6 +86,7 @@ TEST(DriverManifests, LavapipesManifestsAloneAreNamedAndHostileEntriesSkipped) {
   write(root / "outside" / "mine.json", kLavapipe);  // a link to a manifest is the loader's way too
   fs::create_symlink(root / "outside" / "mine.json", config / "linked.json");
   fs::create_symlink(root / "nowhere.json", config / "dangling.json");
+  fs::create_symlink("/dev/zero", config / "device.json");  // endless bytes, were it read
   write(data / "lvp_icd.i686.json",
         R"({"ICD": {"library_path": "/usr/lib/i386-linux-gnu/libvulkan_lvp.so"}})");
   const auto env = envOf({{"XDG_CONFIG_HOME", (root / "config").string()},

@@ -259,6 +259,7 @@ TAA_BLOCK(AdaptiveCounts) {
 #define TRACE_SPEC_RAY_LOD 1
 #define TRACE_SPEC_ANISO 2       // adaptive.aniso (float)
 #define TRACE_SPEC_LOD0_ALPHA 3  // render.lod0_alpha_test
+#define TRACE_SPEC_TEXTURE_SLOTS 4  // the slots the scene's materials use (1..TRACE_MAX_TEXTURES)
 
 // Inner nodes: count 0, children at first and first + 1. Leaves: triangles
 // [first, first + count). (A uint after a vec3 shares its 16 bytes in std430 and C++.)

@@ -1,5 +1,6 @@
 #include "passes/adaptive/trace.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -79,6 +80,9 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
   }
   if (views_.size() > TRACE_MAX_TEXTURES)
     throw std::logic_error("adaptive trace: more texture slots than the case check allows");
+  // Every material has a base colour slot (the white texture when it has none), so a scene
+  // with materials uses at least one; the shader compiles out the slots past these.
+  textureSlots_ = uint32_t(std::max<size_t>(views_.size(), 1));
   std::vector<gpu::TraceMaterial> materials;
   for (size_t m = 0; m < cpu.materials.size(); ++m) {
     const scene::Material& src = cpu.materials[m];
@@ -120,7 +124,8 @@ TracePass::TracePass(vk::Context& ctx, const spec::CaseSpec& spec, const GpuScen
   c.set(TRACE_SPEC_SAMPLES, spec.adaptive.samples)
       .set(TRACE_SPEC_RAY_LOD, spec.adaptive.ray_lod && !spec.render.lod0)
       .setFloat(TRACE_SPEC_ANISO, spec.adaptive.aniso)
-      .set(TRACE_SPEC_LOD0_ALPHA, spec.render.lod0_alpha_test);
+      .set(TRACE_SPEC_LOD0_ALPHA, spec.render.lod0_alpha_test)
+      .set(TRACE_SPEC_TEXTURE_SLOTS, textureSlots_);
   pipeline_ = vk::createComputePipeline(ctx, "adaptive_trace.comp", c);
 }
 
@@ -128,7 +133,8 @@ std::string TracePass::describe() const {
   return "pass adaptive_trace: " + std::to_string(spec_.adaptive.samples) +
          " rays per marked pixel, " + std::to_string(staticTriangles_) + " static triangles (" +
          std::to_string(staticNodes_) + " BVH nodes), " + std::to_string(moverTriangles_) +
-         " mover triangles rebuilt per frame, texture LOD " +
+         " mover triangles rebuilt per frame, " + std::to_string(textureSlots_) +
+         " texture slots, texture LOD " +
          (spec_.adaptive.ray_lod ? "from ray differentials" : "0") +
          "; buffers: BVH " + std::to_string(nodes_.size()) + " B, triangles " +
          std::to_string(triangles_.size()) + " B, shading " + std::to_string(shading_.size()) +

@@ -45,6 +45,7 @@ class TracePass {
   const GpuScene& scene_;
   vk::Pipeline pipeline_;
   uint32_t staticNodes_ = 0, staticTriangles_ = 0, moverTriangles_ = 0;
+  uint32_t textureSlots_ = 1;  // the spec constant TRACE_SPEC_TEXTURE_SLOTS
   vk::Buffer nodes_, triangles_, shading_, materials_, uniforms_;
   std::vector<VkImageView> views_;
   std::vector<VkSampler> samplers_;

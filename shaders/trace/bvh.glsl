@@ -51,17 +51,22 @@ vec3 safeInverse(vec3 d) {
   return 1.0 / mix(d, tiny, lessThan(abs(d), vec3(kTiny)));
 }
 
+// A child's box is tested where its parent is popped, and only a box the ray enters is pushed
+// (the farther one first): under llvmpipe's lanes every pop costs each lane of the group, so a
+// pop that tests a missed box and ends was the loop's commonest iteration. Which boxes are
+// entered moves with best.t, never the result: a box holding the closest hit always passes.
 void traverse(uint root, vec3 o, vec3 d, float tMax, float afterT, uint afterTri, inout Hit best) {
   if (root == TRACE_NO_ROOT) return;
   vec3 inv = safeInverse(d);
   float tMin = max(afterT, 0.0);
+  if (!hitsBox(o, inv, nodes[root], tMin, min(best.t, tMax))) return;
   uint stack[64];
   int top = 0;
   stack[top++] = root;
   while (top > 0) {
     BvhNode n = nodes[stack[--top]];
-    if (!hitsBox(o, inv, n, tMin, min(best.t, tMax))) continue;
     if (n.count > 0u) {
+      if (!hitsBox(o, inv, n, tMin, min(best.t, tMax))) continue;
       for (uint i = n.first; i < n.first + n.count; ++i) {
         float t, u, v;
         if (!intersectTriangle(o, d, triangles[i], t, u, v)) continue;
@@ -71,9 +76,12 @@ void traverse(uint root, vec3 o, vec3 d, float tMax, float afterT, uint afterTri
       continue;
     }
     BvhNode l = nodes[n.first], r = nodes[n.first + 1u];
+    float far = min(best.t, tMax);
+    bool hitL = hitsBox(o, inv, l, tMin, far), hitR = hitsBox(o, inv, r, tMin, far);
     bool leftFirst = dot((l.lo + l.hi) - (r.lo + r.hi), d) < 0.0;
-    stack[top++] = leftFirst ? n.first + 1u : n.first;
-    stack[top++] = leftFirst ? n.first : n.first + 1u;
+    uint first = leftFirst ? n.first : n.first + 1u, second = leftFirst ? n.first + 1u : n.first;
+    if (leftFirst ? hitR : hitL) stack[top++] = second;
+    if (leftFirst ? hitL : hitR) stack[top++] = first;
   }
 }
 

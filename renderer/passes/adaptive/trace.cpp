@@ -135,10 +135,10 @@ std::string TracePass::describe() const {
          std::to_string(staticNodes_) + " BVH nodes), " + std::to_string(moverTriangles_) +
          " mover triangles rebuilt per frame, " + std::to_string(textureSlots_) +
          " texture slots, texture LOD " +
-         (spec_.adaptive.ray_lod ? "from ray differentials" : "0") +
-         "; buffers: BVH " + std::to_string(nodes_.size()) + " B, triangles " +
-         std::to_string(triangles_.size()) + " B, shading " + std::to_string(shading_.size()) +
-         " B, materials " + std::to_string(materials_.size()) + " B";
+         (spec_.adaptive.ray_lod ? "from ray differentials" : "0") + "; buffers: BVH " +
+         std::to_string(nodes_.size()) + " B, triangles " + std::to_string(triangles_.size()) +
+         " B, shading " + std::to_string(shading_.size()) + " B, materials " +
+         std::to_string(materials_.size()) + " B";
 }
 
 void TracePass::record(VkCommandBuffer cmd, const script::FrameState& state, const DrawList& draws,

@@ -66,6 +66,8 @@ void traverse(uint root, vec3 o, vec3 d, float tMax, float afterT, uint afterTri
   while (top > 0) {
     BvhNode n = nodes[stack[--top]];
     if (n.count > 0u) {
+      // Tested again: best.t may have shrunk since the parent pushed it, and a leaf's
+      // triangles cost more than its box.
       if (!hitsBox(o, inv, n, tMin, min(best.t, tMax))) continue;
       for (uint i = n.first; i < n.first + n.count; ++i) {
         float t, u, v;

@@ -36,8 +36,8 @@
 #include "user/glsl_compiler.h"
 #include "user/spirv_cache.h"
 #include "user/spirv_check.h"
-#include "vk/driver_manifests.h"
 #include "user/user_interface.h"
+#include "vk/driver_manifests.h"
 
 namespace taa::fuzz {
 

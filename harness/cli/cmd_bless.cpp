@@ -114,14 +114,14 @@ int blessOne(const cases::LoadedCase& loaded, const BlessSource& source, const B
   const fs::path root =
       plan.goldensRoot.empty() ? run::defaultGoldensRoot(loaded.spec.file) : plan.goldensRoot;
   const golden::GoldensLock lock(root);  // the old manifest stays current until the swap
+  // The set's record, read once: a bless continues its history and keeps the positives that
+  // render these frames, so an unreadable one is refused (GoldenError, naming how to restore it
+  // or start over), as for --add-environment. Images that fail verification are replaced.
+  std::optional<golden::Manifest> previous;
   if (const fs::path m = root / loaded.spec.name / "manifest.json"; fs::exists(m)) {
-    std::string other;
-    try {
-      other = golden::otherCaseProblem(golden::readManifest(m), root, loaded.spec.file);
-    } catch (const golden::GoldenError&) {
-      // An unreadable set is the bless's to replace (plain) or refuse (--add-environment).
-    }
-    if (!other.empty()) {
+    previous = golden::readManifest(m);
+    if (const std::string other = golden::otherCaseProblem(*previous, root, loaded.spec.file);
+        !other.empty()) {
       std::cout << "REFUSED " << r.name << ": " << other << "\n";
       return kBadInput;
     }
@@ -158,11 +158,6 @@ int blessOne(const cases::LoadedCase& loaded, const BlessSource& source, const B
   }
   if (!r.message.empty()) std::cout << "NOTE " << r.name << ": " << r.message << "\n";
   printChanges(r);
-  // The previous record only (its history continues); a bless replaces the images anyway,
-  // so a set whose EXRs fail verification can be re-blessed, but not one whose manifest is lost.
-  std::optional<golden::Manifest> previous;
-  if (fs::exists(root / loaded.spec.name / "manifest.json"))
-    previous = golden::readManifest(root / loaded.spec.name / "manifest.json");
   auto manifest = golden::makeManifest(loaded, source.environment, source.stored, source.digests,
                                        plan.reason, previous ? &*previous : nullptr);
   manifest.bless.commit = source.commit;

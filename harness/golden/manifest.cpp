@@ -12,12 +12,25 @@
 
 namespace taa::golden {
 
-std::string restoreHint(const std::filesystem::path& dir) {
+namespace {
+std::string shownFolder(const std::filesystem::path& dir) {
   std::error_code ec;
   const auto rel = std::filesystem::relative(dir, std::filesystem::current_path(ec), ec);
   const bool below = !ec && !rel.empty() && *rel.begin() != "..";
-  return "restore it with `git checkout -- " + (below ? rel : dir).string() +
+  return (below ? rel : dir).string();
+}
+}  // namespace
+
+std::string restoreHint(const std::filesystem::path& dir) {
+  return "restore it with `git checkout -- " + shownFolder(dir) +
          "` (or re-bless the case with a reason)";
+}
+
+std::string manifestRestoreHint(const std::filesystem::path& dir) {
+  const std::string shown = shownFolder(dir);
+  return "restore it with `git checkout -- " + shown + "` (a bless continues its history, so it " +
+         "needs it readable; to start the case's history over, delete " + shown +
+         " and bless the case with a reason)";
 }
 
 std::string frameBase(int frame) {
@@ -152,7 +165,7 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
       if (!validCaseFileLabel(m.caseFile))
         throw GoldenError(where.string() + ": case_file is not a case's folder and file name (" +
                           std::to_string(m.caseFile.size()) + " bytes); " +
-                          restoreHint(where.parent_path()));
+                          manifestRestoreHint(where.parent_path()));
     }
     m.environment = Environment::fromJson(j.at("environment"));
     m.bless = {j.at("date").get<std::string>(), j.at("renderer_commit").get<std::string>(),
@@ -172,26 +185,28 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
       m.others.push_back(positiveFrom(o, m));
   } catch (const nlohmann::json::exception& e) {
     throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
-                      restoreHint(where.parent_path()));
+                      manifestRestoreHint(where.parent_path()));
   } catch (const std::out_of_range& e) {
     throw GoldenError(where.string() + ": malformed golden manifest (" + e.what() + "); " +
-                      restoreHint(where.parent_path()));
+                      manifestRestoreHint(where.parent_path()));
   }
   if (!m.signatures.empty() && m.signatures.size() != m.sequence.size())
     throw GoldenError(where.string() + ": frame_signatures lists " +
                       std::to_string(m.signatures.size()) + " frames, frame_sha256 " +
-                      std::to_string(m.sequence.size()) + "; " + restoreHint(where.parent_path()));
+                      std::to_string(m.sequence.size()) + "; " +
+                      manifestRestoreHint(where.parent_path()));
   std::set<std::string> fingerprints;
   for (const auto& p : m.positives())
     if (!fingerprints.insert(p.environment.fingerprint()).second)
       throw GoldenError(where.string() + ": two positives for the environment '" +
-                        p.environment.fingerprint() + "'; " + restoreHint(where.parent_path()));
+                        p.environment.fingerprint() + "'; " +
+                        manifestRestoreHint(where.parent_path()));
   for (const auto& f : m.frames)
     if (!m.sequence.empty() && (f.frame < 0 || size_t(f.frame) >= m.sequence.size() ||
                                 m.sequence[size_t(f.frame)] != f.sha256))
       throw GoldenError(where.string() + ": frame " + std::to_string(f.frame) +
                         "'s sha256 disagrees with frame_sha256 (the list of every frame's hash); " +
-                        restoreHint(where.parent_path()));
+                        manifestRestoreHint(where.parent_path()));
   return m;
 }
 
@@ -202,7 +217,7 @@ const GoldenFrame* Manifest::find(int frame) const {
 }
 
 Manifest readManifest(const std::filesystem::path& file) {
-  const std::string hint = restoreHint(file.parent_path());
+  const std::string hint = manifestRestoreHint(file.parent_path());
   std::string text;
   try {
     text = readInputFile(file, kMaxCaseFileBytes);

@@ -23,8 +23,11 @@ class GoldenError : public InputError {
 };
 
 // "git checkout -- goldens/NAME": how to restore a case's golden folder `dir` from git (the
-// path relative to the working directory when it lies below it).
+// path relative to the working directory when it lies below it), or re-bless it.
 std::string restoreHint(const std::filesystem::path& dir);
+// The same for a damaged manifest.json, which a bless does not replace (it continues the
+// manifest's history): restore it, or remove the folder to start the case's history over.
+std::string manifestRestoreHint(const std::filesystem::path& dir);
 
 // "frame_0015": a frame's file name less its extension, in a golden folder and in a run's
 // folder alike (bless --from finds a run's frames by it).

@@ -10,6 +10,7 @@
 
 #include "core/image_io.h"
 #include "harness/cli_fixture.h"
+#include "support/text.h"
 
 namespace taa {
 namespace {
@@ -250,10 +251,20 @@ TEST_F(Verdicts, AMissingGoldenExrOrABrokenManifestIsAFailureNamingTheFile) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("manifest.json: not valid JSON"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("git checkout -- "), std::string::npos) << r.output;
-  // A bless needs the previous record to continue its history: it refuses, naming the fix.
+  // A bless needs the previous record to continue its history: it refuses, naming both fixes,
+  // and does not suggest the re-bless it refuses.
   r = bless("small");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("git checkout -- "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("to start the case's history over, delete "), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("or re-bless"), std::string::npos) << r.output;
+  EXPECT_EQ(test::readFile(root_ / "goldens/small/manifest.json"), "{");  // left as it was
+  // The second fix works: without the folder the bless starts a new history.
+  fs::remove_all(root_ / "goldens/small");
+  r = bless("small");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(run("small").exitCode, 0);
 }
 
 TEST_F(Verdicts, AManifestWithoutFrameHashesFailsWithTheReblessCommand) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace taa {
@@ -27,6 +28,20 @@ struct Image {
     return width == o.width && height == o.height && channels == o.channels;
   }
 };
+
+// Bit for bit, as goldens compare: == would call -0 and +0 equal and a NaN unequal to itself.
+inline bool sameBits(float a, float b) {
+  return std::memcmp(&a, &b, sizeof(float)) == 0;
+}
+inline bool sameBits(const Image& a, const Image& b) {
+  return a.sameShape(b) &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+// The first three channels of pixel (x, y).
+inline bool sameRgbBits(const Image& a, const Image& b, int x, int y) {
+  return sameBits(a.at(x, y, 0), b.at(x, y, 0)) && sameBits(a.at(x, y, 1), b.at(x, y, 1)) &&
+         sameBits(a.at(x, y, 2), b.at(x, y, 2));
+}
 
 // Rec. 709 luminance of an RGB(A) pixel.
 inline float luminance(const Image& img, int x, int y) {

@@ -1,7 +1,6 @@
 #include "compare/tolerance.h"
 
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include "compare/flip.h"
@@ -33,17 +32,12 @@ FlipResult flipOfIdentical(const Image& image) {
   return flip;
 }
 
-bool sameBytes(const Image& a, const Image& b) {
-  return a.sameShape(b) && a.pixelCount() > 0 &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 Measured measureAgainstGolden(const Image& golden, const Image& actual, float pixelThreshold) {
   MetricOptions options;
   options.threshold = pixelThreshold;
-  const bool same = sameBytes(golden, actual);
+  const bool same = actual.pixelCount() > 0 && sameBits(golden, actual);
   const Metrics lin =
       same ? metricsOfIdentical(actual, options) : computeMetrics(golden, actual, options);
   const FlipResult flip =

@@ -2,7 +2,6 @@
 // marks. Every frame, each pixel the mask leaves unmarked (mask::kAdaptiveNone) must
 // equal the full resolve's output for that frame bit for bit: neither the trace nor
 // the masked FXAA may touch it. Traced and FXAA'd pixels are counted for the report.
-#include <cstring>
 
 #include "invariants/invariant_support.h"
 #include "spec/taa_modes.h"
@@ -30,12 +29,7 @@ class AdaptiveUnmarked : public Invariant {
           ++(mark == mask::kAdaptiveFxaa ? fxaa_ : traced_);
           continue;
         }
-        bool same = true;
-        for (int c = 0; c < 3; ++c) {
-          const float a = f.output->at(x, y, c), b = resolved.at(x, y, c);
-          same = same && std::memcmp(&a, &b, sizeof(float)) == 0;
-        }
-        if (!same && differing_++ == 0)
+        if (!sameRgbBits(*f.output, resolved, x, y) && differing_++ == 0)
           where_ = "frame " + std::to_string(f.frame) + " pixel (" + std::to_string(x) + ", " +
                    std::to_string(y) + ")";
       }

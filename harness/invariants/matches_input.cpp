@@ -1,6 +1,5 @@
 // matches_input: every output pixel equals the resolve's input colour bit for bit (RGB),
 // in every frame. What pass-through and alpha 1 promise: the temporal pass adds nothing.
-#include <cstring>
 
 #include "invariants/invariant_support.h"
 
@@ -27,7 +26,7 @@ class MatchesInput : public Invariant {
       for (int x = 0; x < out.width; ++x)
         for (int c = 0; c < 3; ++c) {
           const float a = out.at(x, y, c), b = in.at(x, y, c);
-          if (std::memcmp(&a, &b, sizeof(float)) == 0) continue;
+          if (sameBits(a, b)) continue;
           if (differing_++ == 0)
             first_ = "frame " + std::to_string(f.frame) + " (" + std::to_string(x) + ", " + std::to_string(y) +
                      ") channel " + std::to_string(c) + ": " + num(a) + " vs input " + num(b);

@@ -2,7 +2,6 @@
 //   - pixels outside the TAA share equal the CMAA output (TAA touched nothing else);
 //   - pixels off the edge list equal the input colour (CMAA touched nothing else).
 // Reads the CMAA image, the edge mask and the input ("current") beside the output.
-#include <cstring>
 
 #include "invariants/invariant_support.h"
 #include "spec/taa_modes.h"
@@ -12,14 +11,6 @@ namespace taa::invariants {
 namespace {
 
 using namespace taa::spec;
-
-bool sameRgb(const Image& a, const Image& b, int x, int y) {
-  for (int c = 0; c < 3; ++c) {
-    const float u = a.at(x, y, c), v = b.at(x, y, c);
-    if (std::memcmp(&u, &v, sizeof(float)) != 0) return false;
-  }
-  return true;
-}
 
 class TscmaaNonEdge : public Invariant {
  public:
@@ -35,9 +26,9 @@ class TscmaaNonEdge : public Invariant {
       for (int x = 0; x < out.width; ++x) {
         const auto bits = uint32_t(edges.at(x, y));
         if ((bits & mask::kTscmaaTaa) == 0u)
-          note(sameRgb(out, cmaa, x, y), f.frame, x, y, nonTaa_, nonTaaBad_);
+          note(sameRgbBits(out, cmaa, x, y), f.frame, x, y, nonTaa_, nonTaaBad_);
         if ((bits & mask::kTscmaaEdges) == 0u)
-          note(sameRgb(cmaa, in, x, y), f.frame, x, y, nonEdge_, nonEdgeBad_);
+          note(sameRgbBits(cmaa, in, x, y), f.frame, x, y, nonEdge_, nonEdgeBad_);
       }
   }
 

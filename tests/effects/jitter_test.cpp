@@ -108,9 +108,9 @@ TEST(EffectJitter, LockPinsOneStepOfTheSequence) {
   const auto& free = renderOnce(kRaw, "{}", kJitterAll, currentJitter());
   const auto& locked = renderOnce(kRaw, R"({"jitter": {"lock": 3}})", kJitterAll, currentJitter());
   for (int f = 0; f < 9; ++f) {
-    EXPECT_TRUE(test::bitIdentical(raw(locked, f), raw(free, 3))) << "frame " << f;
+    EXPECT_TRUE(sameBits(raw(locked, f), raw(free, 3))) << "frame " << f;
     if (f > 0) {
-      EXPECT_FALSE(test::bitIdentical(raw(free, f), raw(free, f - 1))) << "frame " << f;
+      EXPECT_FALSE(sameBits(raw(free, f), raw(free, f - 1))) << "frame " << f;
     }
   }
 }
@@ -119,8 +119,8 @@ TEST(EffectJitter, SlowdownHoldsEachStepForKFrames) {
   const auto& free = renderOnce(kRaw, "{}", kJitterAll, currentJitter());
   const auto& slow = renderOnce(kRaw, R"({"jitter": {"slowdown": 3}})", kJitterAll, currentJitter());
   for (int f = 0; f < 9; ++f)
-    EXPECT_TRUE(test::bitIdentical(raw(slow, f), raw(free, f / 3))) << "frame " << f;
-  EXPECT_FALSE(test::bitIdentical(raw(slow, 2), raw(slow, 3)));
+    EXPECT_TRUE(sameBits(raw(slow, f), raw(free, f / 3))) << "frame " << f;
+  EXPECT_FALSE(sameBits(raw(slow, 2), raw(slow, 3)));
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ TEST(EffectPassThrough, OutputIsTheInputBitForBit) {
   o.captures |= {Capture::Current};
   const auto& run = renderOnce(moving, "{}", {0, 1, 2, 3}, o);
   for (int f = 0; f < 4; ++f)
-    EXPECT_TRUE(test::bitIdentical(run[f].color, test::capturedImage(run[f], Capture::Current)))
+    EXPECT_TRUE(sameBits(run[f].color, test::capturedImage(run[f], Capture::Current)))
         << "frame " << f;
 }
 

@@ -145,7 +145,7 @@ TEST(SeedExtrasNoise, ChangesEveryFrameWithinTheAmount) {
   const auto& a = test::renderOnce(kStillJittered, noisy, {2, 3});
   const auto spec = test::effectCase(kStillJittered, noisy);
   const auto b = test::renderCase(spec, {3});
-  EXPECT_TRUE(test::bitIdentical(a[3].color, b[3].color));
+  EXPECT_TRUE(sameBits(a[3].color, b[3].color));
   EXPECT_LE(test::maxAbs(a[3].color, still[3].color), 0.01 + 1e-6);
   EXPECT_GT(test::meanAbs(a[3].color, still[3].color), 0.003);  // uniform: mean |n| = amount / 2
   EXPECT_GT(test::differing(a[2].color, a[3].color, 1e-4), 160 * 90 / 2);

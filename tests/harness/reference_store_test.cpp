@@ -10,7 +10,6 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -50,11 +49,6 @@ Image pattern(int w, int h, float seed) {
   Image image(w, h, 4);
   for (size_t i = 0; i < image.data.size(); ++i) image.data[i] = seed + float(i) * 0.25f;
   return image;
-}
-
-bool sameBits(const Image& a, const Image& b) {
-  return a.sameShape(b) && a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 void writeAll(const fs::path& file, const std::string& bytes) {

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -131,8 +130,7 @@ TEST(AdaptiveUnmarked, UnmarkedPixelsAreTheResolveOutputBitForBit) {
     size_t unmarked = 0, differing = 0, changedMarked = 0;
     for (int y = 0; y < f.color.height; ++y)
       for (int x = 0; x < f.color.width; ++x) {
-        const bool same = std::memcmp(&f.color.data[f.color.index(x, y)],
-                                      &resolved.data[resolved.index(x, y)], 3 * sizeof(float)) == 0;
+        const bool same = sameRgbBits(f.color, resolved, x, y);
         if (uint32_t(mask.at(x, y)) == ADAPTIVE_MASK_NONE) {
           ++unmarked;
           differing += same ? 0 : 1;
@@ -163,10 +161,7 @@ TEST(AdaptiveUnmarked, TheResolveIsThePlainFullResolve) {
   const auto a = test::renderCaseWith(adaptive, o, {0});
   const auto p = test::renderCase(plain, {0});
   const Image& resolved = test::capturedImage(a[0], Capture::Resolved);
-  ASSERT_TRUE(resolved.sameShape(p[0].color));
-  EXPECT_EQ(std::memcmp(resolved.data.data(), p[0].color.data.data(),
-                        resolved.data.size() * sizeof(float)),
-            0);
+  EXPECT_TRUE(sameBits(resolved, p[0].color));
 }
 
 // One ray a traced pixel: how many it gets does not move the marks (these tests' shares are

@@ -104,9 +104,9 @@ TEST(CmaaGpu, LeavesPixelsOffTheEdgeListUnchanged) {
       const bool edge = (uint32_t(mask.at(x, y)) & TSCMAA_EDGES) != 0u;
       edgePixels += edge;
       if (!edge)
-        ASSERT_TRUE(tscmaatest::samePixel(cmaa, current, x, y)) << x << "," << y;
+        ASSERT_TRUE(sameRgbBits(cmaa, current, x, y)) << x << "," << y;
       else
-        changed += !tscmaatest::samePixel(cmaa, current, x, y);
+        changed += !sameRgbBits(cmaa, current, x, y);
     }
   EXPECT_GT(edgePixels, 500);
   EXPECT_GT(changed, edgePixels / 4) << changed << " of " << edgePixels;

@@ -160,9 +160,7 @@ void expectSameImages(const FrameRecord& a, const FrameRecord& b, const std::str
   for (size_t i = 0; i < a.aux.size(); ++i) {
     const Image& x = a.aux[i].image;
     const Image& y = b.aux[i].image;
-    ASSERT_EQ(x.data.size(), y.data.size()) << what << " " << a.aux[i].name;
-    EXPECT_EQ(std::memcmp(x.data.data(), y.data.data(), x.data.size() * sizeof(float)), 0)
-        << what << " " << a.aux[i].name << " differs";
+    EXPECT_TRUE(sameBits(x, y)) << what << " " << a.aux[i].name << " differs";
   }
 }
 

@@ -61,7 +61,7 @@ TEST(ModeRules, AStandInReplacesOnlyTheModesThatRenderAsTheFullResolve) {
   for (const ModeRule& r : spec::kModeRules) {
     const char* name = spec::enumToString(r.mode);
     const Image out = lastFrame(test::renderCase(inMode(kPan, r.mode)));
-    EXPECT_EQ(r.standIn, test::bitIdentical(out, full)) << name;
+    EXPECT_EQ(r.standIn, sameBits(out, full)) << name;
     // Validation asks the same column.
     const std::string user = withMode(R"({"scene": {"builtin": "checkerboard"},
                                           "taa": {"shader": "user/sample_count.comp"}})",
@@ -84,7 +84,7 @@ TEST(ModeRules, TheStillImageModesShowNothingOfTheHiddenScene) {
     const char* name = spec::enumToString(r.mode);
     const Image a = lastFrame(test::renderCase(inMode(still("checkerboard"), r.mode)));
     const Image b = lastFrame(test::renderCase(inMode(still("foliage"), r.mode)));
-    EXPECT_EQ(r.stillImage, test::bitIdentical(a, b)) << name;
+    EXPECT_EQ(r.stillImage, sameBits(a, b)) << name;
     EXPECT_EQ(!r.stillImage, refuses(withMode(still("checkerboard"), r.mode), "debug.image"))
         << name;
   }

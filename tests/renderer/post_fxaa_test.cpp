@@ -86,7 +86,7 @@ TEST(Fxaa, LeavesFlatImagesAndPixelsAwayFromEdgesBitExact) {
       if (!uniform) continue;
       ++checked;
       for (int c = 0; c < 4; ++c)
-        ASSERT_TRUE(bitEqual(out.at(x, y, c), in.at(x, y, c))) << x << "," << y;
+        ASSERT_TRUE(sameBits(out.at(x, y, c), in.at(x, y, c))) << x << "," << y;
     }
   EXPECT_GT(checked, 1000);
 }

@@ -143,7 +143,7 @@ TEST(FxaaTie, ACentreOnTheEdgeMeanCountsAsAboveItAsInLottesStrictTest) {
   for (int t = 0; t < rows * kTilesPerRow; ++t) {
     const int x = (t % kTilesPerRow) * kTileW + 2, y = (t / kTilesPerRow) * kTileH + 1;
     bool same = true;
-    for (int c = 0; c < 4; ++c) same &= bitEqual(out.at(x, y, c), in.at(x, y, c));
+    for (int c = 0; c < 4; ++c) same &= sameBits(out.at(x, y, c), in.at(x, y, c));
     moved += !same;
   }
   std::printf("%zu one-ulp pairs, %d centres moved\n", pairs.size(), moved);

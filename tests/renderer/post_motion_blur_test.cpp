@@ -53,7 +53,7 @@ TEST(MotionBlur, StaticPixelsAreCopiedBitForBit) {
   for (int y = kPostMotionBlurH / 2; y < kPostMotionBlurH; ++y)
     for (int x = 0; x < kPostMotionBlurW; ++x)
       for (int c = 0; c < 4; ++c)
-        ASSERT_TRUE(bitEqual(out.at(x, y, c), expected.at(x, y, c))) << x << "," << y;
+        ASSERT_TRUE(sameBits(out.at(x, y, c), expected.at(x, y, c))) << x << "," << y;
 }
 
 TEST(MotionBlur, MovingStepEdgeBecomesARampOfTheMotionLength) {

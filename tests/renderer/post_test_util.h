@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <limits>
 
@@ -48,15 +47,6 @@ Image runFilter(Pass& pass, const Image& input) {
   return test::downloadImage(out);
 }
 
-inline bool bitEqual(float a, float b) {
-  return std::memcmp(&a, &b, sizeof(float)) == 0;
-}
-
-inline bool sameBits(const Image& a, const Image& b) {
-  return a.sameShape(b) &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
-
 inline bool pixelFinite(const Image& img, int x, int y) {
   for (int c = 0; c < img.channels; ++c)
     if (!std::isfinite(img.at(x, y, c))) return false;
@@ -84,7 +74,7 @@ inline int differingPixels(const Image& a, const Image& b,
       bool skipped = false;
       for (const auto& s : skip) skipped |= s.first == x && s.second == y;
       bool same = true;
-      for (int c = 0; c < a.channels; ++c) same &= bitEqual(a.at(x, y, c), b.at(x, y, c));
+      for (int c = 0; c < a.channels; ++c) same &= sameBits(a.at(x, y, c), b.at(x, y, c));
       n += !skipped && !same;
     }
   return n;

@@ -13,7 +13,6 @@ namespace {
 
 using tscmaatest::aux;
 using tscmaatest::counter;
-using tscmaatest::samePixel;
 
 // A strafing camera over the fence: history moves, many thin edges.
 const char* kTscmaaMoving = R"("scene": {"builtin": "fence"}, "script": {"frames": 6},
@@ -37,9 +36,9 @@ TEST(TscmaaGpu, PixelsOutsideTheTaaShareEqualTheCmaaOutput) {
     for (int y = 0; y < mask.height; ++y)
       for (int x = 0; x < mask.width; ++x) {
         if (bits(mask, x, y) & TSCMAA_TAA)
-          taaChanged += !samePixel(r.color, cmaa, x, y);
+          taaChanged += !sameRgbBits(r.color, cmaa, x, y);
         else
-          ASSERT_TRUE(samePixel(r.color, cmaa, x, y))
+          ASSERT_TRUE(sameRgbBits(r.color, cmaa, x, y))
               << "frame " << r.frame << " at " << x << "," << y;
       }
   }
@@ -50,7 +49,7 @@ TEST(TscmaaGpu, TaaShareZeroGivesTheCmaaImage) {
   for (const auto& r :
        tscmaatest::renderAll(tscmaatest::tscmaaCase(R"("taa_share": 0)", kTscmaaMoving), captures())) {
     EXPECT_EQ(counter(r, "tscmaa_taa_pixels"), 0.0);
-    EXPECT_TRUE(posttest::sameBits(r.color, aux(r, "cmaa"))) << r.frame;
+    EXPECT_TRUE(sameBits(r.color, aux(r, "cmaa"))) << r.frame;
   }
 }
 
@@ -64,7 +63,7 @@ TEST(TscmaaGpu, HistoryWeightChangesOnlyTaaPixels) {
     const Image& mask = aux(a[f], "tscmaa_mask");
     for (int y = 0; y < mask.height; ++y)
       for (int x = 0; x < mask.width; ++x) {
-        if (samePixel(a[f].color, b[f].color, x, y)) continue;
+        if (sameRgbBits(a[f].color, b[f].color, x, y)) continue;
         ++differing;
         ASSERT_TRUE(bits(mask, x, y) & TSCMAA_TAA) << "frame " << f << " at " << x << "," << y;
       }

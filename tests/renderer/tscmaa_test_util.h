@@ -105,12 +105,4 @@ inline double counter(const FrameRecord& r, const std::string& name) {
   throw std::runtime_error("no counter " + name);
 }
 
-inline bool samePixel(const Image& a, const Image& b, int x, int y) {
-  for (int c = 0; c < 3; ++c) {
-    const float u = a.at(x, y, c), v = b.at(x, y, c);
-    if (std::memcmp(&u, &v, sizeof(float)) != 0) return false;
-  }
-  return true;
-}
-
 }  // namespace taa::tscmaatest

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -153,11 +152,6 @@ int differing(const Image& a, const Image& b, double tolerance, const Mask& mask
   return n;
 }
 
-bool bitIdentical(const Image& a, const Image& b) {
-  return a.sameShape(b) &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
-
 double localContrast(const Image& img, const Mask& mask) {
   double sum = 0.0;
   int n = 0;
@@ -196,9 +190,9 @@ double meanFlicker(const EffectRun& run, int first, int last, const Mask& mask) 
 
 bool rgbIdentical(const Image& a, const Image& b) {
   if (!a.sameShape(b) || a.channels < 3) return false;
-  for (size_t p = 0; p < a.pixelCount(); ++p)
-    if (std::memcmp(&a.data[p * a.channels], &b.data[p * b.channels], 3 * sizeof(float)) != 0)
-      return false;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      if (!sameRgbBits(a, b, x, y)) return false;
   return true;
 }
 

@@ -62,8 +62,6 @@ double meanAbs(const Image& a, const Image& b, const Mask& mask = {});
 double maxAbs(const Image& a, const Image& b, const Mask& mask = {});
 // Pixels of the mask whose largest RGB difference exceeds `tolerance`.
 int differing(const Image& a, const Image& b, double tolerance = 0.0, const Mask& mask = {});
-// Every RGBA value identical, bit for bit (NaNs compare by bits too).
-bool bitIdentical(const Image& a, const Image& b);
 
 // Mean over the mask of the local contrast |p - mean of its 4 neighbours| (luma): a
 // blurrier image of the same content has less of it.

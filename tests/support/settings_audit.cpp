@@ -76,7 +76,7 @@ std::string firstDifference(const AuditRun& a, const AuditRun& b) {
   for (size_t i = 0; i < a.frames.size(); ++i) {
     const auto &x = a.frames[i], &y = b.frames[i];
     if (x.color.width != y.color.width || x.color.height != y.color.height ||
-        !bitIdentical(x.color, y.color))
+        !sameBits(x.color, y.color))
       return "frame " + std::to_string(i) + " colour";
     if (x.stats != y.stats) return "frame " + std::to_string(i) + " stats";
   }

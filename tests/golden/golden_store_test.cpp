@@ -209,8 +209,9 @@ TEST(GoldenStore, AManifestWhoseFrameHashDisagreesWithItsSequenceIsRefused) {
   // Images without a manifest are no set at all, not an absent one.
   fs::remove(root / "c" / "manifest.json");
   const std::string missing = loadError(root);
-  EXPECT_NE(missing.find("manifest.json: does not exist"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("manifest.json: missing"), std::string::npos) << missing;
   EXPECT_NE(missing.find("git checkout -- "), std::string::npos) << missing;
+  EXPECT_NE(missing.find("or re-bless"), std::string::npos) << missing;  // bless starts afresh
 }
 
 TEST(GoldenStore, ManifestRoundTripKeepsEveryField) {

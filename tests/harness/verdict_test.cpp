@@ -265,6 +265,14 @@ TEST_F(Verdicts, AMissingGoldenExrOrABrokenManifestIsAFailureNamingTheFile) {
   r = bless("small");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(run("small").exitCode, 0);
+  // Without a manifest at all there is no history to continue: a plain re-bless is the fix.
+  fs::remove(root_ / "goldens/small/manifest.json");
+  r = run("small");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("manifest.json: missing"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("or re-bless the case"), std::string::npos) << r.output;
+  EXPECT_EQ(bless("small").exitCode, 0);
+  EXPECT_EQ(run("small").exitCode, 0);
 }
 
 TEST_F(Verdicts, AManifestWithoutFrameHashesFailsWithTheReblessCommand) {

@@ -1,5 +1,6 @@
 #include "golden/manifest.h"
 
+#include <climits>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -155,6 +156,26 @@ nlohmann::json Manifest::toJson() const {
   return j;
 }
 
+namespace {
+
+// A frame number or size as written, at least LOW: nlohmann's get<int>() would truncate 2.5 to
+// 2 and wrap 10^12 to a negative number, so a forged value would be reported as another one.
+int wholeNumber(const nlohmann::json& frame, const char* key, int low,
+                const std::filesystem::path& where) {
+  const nlohmann::json& v = frame.at(key);
+  const bool inRange =
+      v.is_number_unsigned()
+          ? v.get<uint64_t>() >= uint64_t(low) && v.get<uint64_t>() <= uint64_t(INT_MAX)
+          : v.is_number_integer() && v.get<int64_t>() >= low && v.get<int64_t>() <= INT_MAX;
+  if (!inRange)
+    throw GoldenError(where.string() + ": frames[]." + key + " is " + v.dump() +
+                      ", not a whole number from " + std::to_string(low) + " to " +
+                      std::to_string(INT_MAX) + "; " + manifestRestoreHint(where.parent_path()));
+  return v.get<int>();
+}
+
+}  // namespace
+
 Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path& where) {
   Manifest m;
   try {
@@ -173,9 +194,9 @@ Manifest Manifest::fromJson(const nlohmann::json& j, const std::filesystem::path
     for (const auto& h : j.value("history", nlohmann::json::array()))
       m.history.push_back(blessFrom(h));
     for (const auto& f : j.at("frames"))
-      m.frames.push_back({f.at("frame").get<int>(), f.at("file").get<std::string>(),
-                          f.at("sha256").get<std::string>(), f.at("width").get<int>(),
-                          f.at("height").get<int>()});
+      m.frames.push_back({wholeNumber(f, "frame", 0, where), f.at("file").get<std::string>(),
+                          f.at("sha256").get<std::string>(), wholeNumber(f, "width", 1, where),
+                          wholeNumber(f, "height", 1, where)});
     // Absent in manifests blessed before every frame was hashed; the runner reports those.
     if (j.contains("frame_sha256"))
       m.sequence = runLengthValues(j.at("frame_sha256"), "frame_sha256");

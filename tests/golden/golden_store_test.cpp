@@ -286,5 +286,32 @@ TEST(GoldenStore, AHostileRepeatCountIsRefusedByName) {
   }
 }
 
+// A forged frame number or size is named as written: get<int>() would report 10^12 as
+// -727379968 and take 2.5 for 2.
+TEST(GoldenStore, AForgedFrameNumberOrSizeIsNamedAsWritten) {
+  const auto good = manifestFor("forged", {7}, 0.25f).toJson();
+  const std::vector<std::pair<const char*, nlohmann::json>> forged = {
+      {"frame", uint64_t(1000000000000)},
+      {"frame", -1},
+      {"frame", 2.5},
+      {"width", 0},
+      {"height", "3"},
+      {"width", int64_t(1) << 31}};
+  for (const auto& [key, value] : forged) {
+    auto j = good;
+    j["frames"][0][key] = value;
+    try {
+      Manifest::fromJson(j, "m.json");
+      ADD_FAILURE() << "accepted " << key << " = " << value;
+    } catch (const GoldenError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("frames[].") + key + " is " + value.dump()),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("git checkout -- "), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(Manifest::fromJson(good, "m.json").toJson(), good);
+}
+
 }  // namespace
 }  // namespace taa::golden

@@ -5,7 +5,6 @@ before writing its report each reach the suite's ctest test as running the suite
 
     run_shard_selftest.py CMAKE
 """
-import json
 import os
 import subprocess
 import sys
@@ -91,54 +90,5 @@ with tempfile.TemporaryDirectory() as tmp:
     status, out = shard(tmp, report, ["Beta"])
     check(status == 0, "a shard of passing suites passes", str(status))
     check(not os.path.exists(os.path.join(out, "Alpha.txt")), "and writes no verdict of a suite it was not given")
-
-# shard_plan.py: every suite placed once; files sharing a suite in one shard; longest first to
-# the least-loaded shard; an unlisted file weighs the median; a bad cost line names its place.
-def plan(tmp, costs, files, shards=2):
-    tests = os.path.join(tmp, "plan_tests")
-    os.makedirs(tests, exist_ok=True)
-    paths = []
-    for name, suites in files.items():
-        paths.append(os.path.join(tests, name))
-        with open(paths[-1], "w") as f:
-            f.write("".join(f"TEST_F({s}, Case{i}) {{}}\n" for i, s in enumerate(suites)))
-    with open(os.path.join(tmp, "costs.txt"), "w") as f:
-        f.write("# comment\n" + "".join(f"{k} {v}\n" for k, v in costs.items()))
-    r = subprocess.run([sys.executable, os.path.join(HERE, "shard_plan.py"), "plan",
-                        os.path.join(tmp, "costs.txt"), str(shards), tests] + paths,
-                       capture_output=True, text=True)
-    return r.returncode, {s: int(n) for n, s in (l.split() for l in r.stdout.split("\n") if l)}, r.stderr
-
-
-with tempfile.TemporaryDirectory() as tmp:
-    rc, placed, err = plan(tmp, {"a_test.cpp": 10, "b_test.cpp": 6, "c_test.cpp": 5, "d_test.cpp": 4.5},
-                           {"a_test.cpp": ["A"], "b_test.cpp": ["B"], "c_test.cpp": ["C"], "d_test.cpp": ["D"]})
-    check(rc == 0 and sorted(placed) == ["A", "B", "C", "D"], "the plan places every suite once", err)
-    check(placed.get("A") != placed.get("B") and placed.get("B") == placed.get("C") and placed.get("A") == placed.get("D"),
-          "longest first, each to the least-loaded shard (10+4.5 against 6+5)", str(placed))
-    rc, placed, err = plan(tmp, {"a_test.cpp": 10, "b_test.cpp": 9, "c_test.cpp": 1},
-                           {"a_test.cpp": ["A", "Shared"], "b_test.cpp": ["B"], "c_test.cpp": ["Shared2", "Shared"]})
-    check(placed.get("A") == placed.get("Shared") == placed.get("Shared2") and placed.get("B") != placed.get("A"),
-          "files that share a suite run in one shard", str(placed))
-    rc, placed, err = plan(tmp, {"a_test.cpp": 1, "b_test.cpp": 2, "c_test.cpp": 9},
-                           {"a_test.cpp": ["A"], "b_test.cpp": ["B"], "c_test.cpp": ["C"], "new_test.cpp": ["N"]})
-    check("9.0, 5.0" in err, "a file the costs do not list weighs the median (2 s: 9 against 2+2+1)", err)
-    with open(os.path.join(tmp, "costs.txt"), "a") as f:
-        f.write("x_test.cpp many\n")
-    r = subprocess.run([sys.executable, os.path.join(HERE, "shard_plan.py"), "plan",
-                        os.path.join(tmp, "costs.txt"), "2", tmp], capture_output=True, text=True)
-    check(r.returncode != 0 and "costs.txt:5" in r.stderr and "measure" in r.stderr,
-          "a malformed cost line fails naming its line and how to regenerate the file", r.stderr)
-    report = os.path.join(tmp, "gtest.json")
-    with open(report, "w") as f:
-        json.dump({"testsuites": [{"testsuite": [
-            {"file": os.path.join(tmp, "t", "x_test.cpp"), "time": "1.25s"},
-            {"file": os.path.join(tmp, "t", "x_test.cpp"), "time": "0.5s"},
-            {"file": os.path.join(tmp, "t", "sub", "y_test.cpp"), "time": "2s"}]}]}, f)
-    subprocess.run([sys.executable, os.path.join(HERE, "shard_plan.py"), "measure",
-                    os.path.join(tmp, "measured.txt"), os.path.join(tmp, "t"), report], check=True)
-    with open(os.path.join(tmp, "measured.txt")) as f:
-        lines = [l.strip() for l in f if not l.startswith("#")]
-    check(lines == ["sub/y_test.cpp 2.00", "x_test.cpp 1.75"], "measure sums each file's test seconds", str(lines))
 
 check.finish()

@@ -7,12 +7,14 @@
 // render of the same inputs read back.
 #pragma once
 
+#include <condition_variable>
 #include <cstddef>
 #include <list>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/image.h"
@@ -43,6 +45,38 @@ class ReferenceCache {
   // The image kept under `key`, in memory or in the store, if any.
   std::shared_ptr<const Image> find(const std::string& key);
   void insert(const std::string& key, Image image);
+
+  // A miss's promise to render its key. Until it is fulfilled or dropped, other threads that
+  // ask for the key wait (two workers starting cases with one reference rendered it twice);
+  // dropped unfulfilled (the frame threw, or read no reference), it lets one of them render.
+  class Claim {
+   public:
+    Claim() = default;
+    Claim(Claim&& other) noexcept { *this = std::move(other); }
+    Claim& operator=(Claim&& other) noexcept;
+    Claim(const Claim&) = delete;
+    Claim& operator=(const Claim&) = delete;
+    ~Claim() { release(); }
+    explicit operator bool() const { return cache_ != nullptr; }
+    void fulfil(Image image);  // insert(key, image), then wake the waiters
+
+   private:
+    friend class ReferenceCache;
+    Claim(ReferenceCache* cache, std::string key) : cache_(cache), key_(std::move(key)) {}
+    void release();
+    ReferenceCache* cache_ = nullptr;
+    std::string key_;
+  };
+  struct Lookup {
+    std::shared_ptr<const Image> image;  // found (in memory or the store), or
+    Claim claim;                         // this caller renders it
+  };
+  // find(), except that a key another thread has claimed is waited for, and a miss claims it.
+  // A thread must not hold a claim while it asks for another key (the renderer holds one for
+  // the frame it records).
+  Lookup findOrClaim(const std::string& key);
+  // Threads waiting in findOrClaim now (for tests).
+  size_t waiting() const;
   ReferenceCacheStats stats() const;
   // The keys held, most recently used first (for tests that compare two caches' images).
   std::vector<std::string> keys() const;
@@ -54,9 +88,14 @@ class ReferenceCache {
   };
   void keep(const std::string& key, std::shared_ptr<const Image> image);  // under mutex_
 
+  void unclaim(const std::string& key);
+
   size_t maxBytes_;
   ReferenceStore* store_;
   mutable std::mutex mutex_;
+  std::condition_variable claimsChanged_;
+  std::unordered_set<std::string> claimed_;  // keys a thread is rendering
+  size_t waiting_ = 0;
   std::unordered_map<std::string, Entry> entries_;
   std::list<std::string> recent_;  // most recently used first
   ReferenceCacheStats stats_;

@@ -311,14 +311,16 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   // The reference is only ever read back with the frame's images; rendering it for other
   // frames would cost reference.samples scene renders each for nothing.
   std::shared_ptr<const Image> cachedReference;
-  std::string referenceKey;
+  ReferenceCache::Claim referenceClaim;  // released when the frame ends, fulfilled or not
   if (s.reference && readImages) {
     for (int eye = 0; eye < eyes; ++eye)
       s.reference->prepare(eyeFrameState(state, eye, eyes, s.spec.tscmaa.eye_separation), shadows,
                            eye);
     if (s.options.referenceCache && !s.options.referenceKey.empty()) {
-      referenceKey = s.reference->frameKey(s.options.referenceKey, draws, shadows);
-      cachedReference = s.options.referenceCache->find(referenceKey);
+      auto lookup = s.options.referenceCache->findOrClaim(
+          s.reference->frameKey(s.options.referenceKey, draws, shadows));
+      cachedReference = std::move(lookup.image);
+      referenceClaim = std::move(lookup.claim);
     }
     if (!cachedReference) {
       s.timer.begin(cmd, "reference");
@@ -363,8 +365,8 @@ FrameRecord Renderer::renderFrame(int frame, bool readImages) {
   if (cachedReference) {
     record.reference = *cachedReference;
     record.hasReference = true;
-  } else if (!referenceKey.empty() && record.hasReference) {
-    s.options.referenceCache->insert(referenceKey, record.reference);
+  } else if (referenceClaim && record.hasReference) {
+    referenceClaim.fulfil(record.reference);
   }
   return record;
 }

@@ -132,7 +132,7 @@ void main() {
     }
   vec3 current = valid[4] ? centre : (finiteCount > 0.0 ? finiteSum / finiteCount : vec3(0.0));
 
-  if (taaUniforms.view.w == 0.0) {  // frame 0, a cut, a reset: no history to read
+  if (!kHasHistory) {
     writeOutput(s, q, current, 1.0, 0.0, vec2(0.0));
     if (kRejectMask) imageStore(rejectOut, q, uvec4(TAA_REJECT_NO_HISTORY));
     return;

@@ -119,6 +119,7 @@ const std::vector<std::pair<int, std::string>> kBoolValues = {{0, "false"}, {1, 
 std::vector<Constant> resolveConstants() {
   std::vector<Constant> out = {
       {TAA_SPEC_RESOLVE, "kResolve", {TAA_RESOLVE_VALUES(COV_GLSL_VALUE)}},
+      {TAA_SPEC_HAS_HISTORY, "kHasHistory", kBoolValues},
       {TAA_SPEC_UPSAMPLE, "kUpsample", kBoolValues},
       {TAA_SPEC_DEBUG, "kDebug", {TAA_DEBUG_OUTPUT_VALUES(COV_GLSL_VALUE)}},
       {TAA_SPEC_REJECT_MASK, "kRejectMask", kBoolValues}};
@@ -186,7 +187,8 @@ std::vector<CoverageRow> resolveBranchCoverage(
       const auto it = traced.find(c.id);
       if (it == traced.end()) continue;
       for (const auto& [value, name] : c.values)
-        if (value == it->second) table.reach(c.name, name, caseName);
+        if (value == it->second || (c.id == TAA_SPEC_HAS_HISTORY && value == 0))
+          table.reach(c.name, name, caseName);
     }
   }
   return table.take();

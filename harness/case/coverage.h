@@ -29,8 +29,9 @@ std::vector<CoverageRow> settingValueCoverage(const std::vector<spec::CheckedCas
 
 // Every value of every specialization constant of taa_resolve.comp, from each case's trace of
 // the constants in force (its run log's "taa_resolve spec constants:" line, as `run` writes
-// it into results.json); `logs` maps a case's name to its log. Frames with and without
-// history run the same pipeline (TaaUniforms::view.w tells them apart).
+// it into results.json); `logs` maps a case's name to its log. The log shows the history
+// pipeline; the no-history one (frame 0, cuts, resets) differs from it in kHasHistory only,
+// so every traced case reaches kHasHistory 0 too.
 // The specialization constants a run log traces ("taa_resolve spec constants: 0=2 1=1 ..."),
 // id -> value; empty when no built-in resolve ran. Throws std::invalid_argument, naming the
 // word, when the line holds something other than ID=VALUE whole numbers in int's range.

@@ -10,6 +10,7 @@
 
 #include "api/device.h"
 #include "core/errors.h"
+#include "spec/taa_spec.h"  // the settings table: TAA_SPEC_HAS_HISTORY
 
 namespace taa::cases {
 
@@ -242,6 +243,8 @@ std::vector<SourceLine> resolveLineCoverage(const std::vector<uint32_t>& spirv,
       std::unordered_map<uint32_t, std::vector<uint32_t>> values;
       for (const auto& [id, value] : traced) values[uint32_t(id)] = {uint32_t(value)};
       it->second = reachedMarkers(module, &values);
+      values[TAA_SPEC_HAS_HISTORY] = {0u};
+      for (int m : reachedMarkers(module, &values)) it->second.insert(m);
     }
     for (int m : it->second)
       if (const auto row = rows.find(m); row != rows.end()) row->second.push_back(name);

@@ -19,8 +19,8 @@ struct SourceLine {
 
 // `spirv`: taa_resolve.comp compiled with debug line information (OpLine). `constants`: for
 // each case, the spec constant values in force (id -> value, as the run log traces them).
-// Each case is specialized as traced; its frames with and without history run that one
-// pipeline (a uniform tells them apart). Every block of every line carries a marker (a store
+// Each case is specialized twice: as traced, and with kHasHistory false (its first frame,
+// cuts and resets run that pipeline). Every block of every line carries a marker (a store
 // into a buffer of its own); a specialization's constants are folded and its dead branches
 // and code removed (SPIRV-Tools), and the markers that survive are the blocks it runs. The
 // rows are every line with code in the unspecialized module, in file and line order.

@@ -131,7 +131,7 @@ uint32_t taaResolveReadBytes(const CaseSpec& spec) {
   return bytes;
 }
 
-vk::SpecConstants taaSpecConstants(const CaseSpec& spec) {
+vk::SpecConstants taaSpecConstants(const CaseSpec& spec, bool hasHistory) {
   const TaaSpec t = resolveTaa(spec);
   const Resolve path = modeRule(t.mode).path;
   // A setting the path has no use for gets 0, so a pipeline depends only on what it runs.
@@ -139,6 +139,7 @@ vk::SpecConstants taaSpecConstants(const CaseSpec& spec) {
   const bool upsample = spec.render.upsample != 1.0f || !spec.render.scale_schedule.empty();
   vk::SpecConstants c;
   c.set(TAA_SPEC_RESOLVE, int(path))
+      .set(TAA_SPEC_HAS_HISTORY, hasHistory)
       .set(TAA_SPEC_UPSAMPLE, upsample)
       .set(TAA_SPEC_DEBUG, int(spec.debug.output))
       .set(TAA_SPEC_REJECT_MASK, modeRule(t.mode).adaptive);
@@ -192,7 +193,9 @@ TaaResolvePass::TaaResolvePass(vk::Context& ctx, const CaseSpec& spec, const Pas
       uniforms_(ctx, sizeof(gpu::TaaUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       linear_(ctx, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE),
       point_(ctx, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE) {
-  pipeline_ = vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec));
+  withHistory_ = vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, true));
+  withoutHistory_ =
+      vk::createComputePipeline(ctx, "taa_resolve.comp", taaSpecConstants(spec, false));
   const VkFormat format = historyFormat(effectiveTaa(spec.taa));
   history_[0] = storageImage(ctx, "history_a", resolveOutputSize(spec), format);
   history_[1] = storageImage(ctx, "history_b", resolveOutputSize(spec), format);
@@ -211,7 +214,7 @@ glm::ivec2 TaaResolvePass::outputSize() const {
 std::vector<std::string> TaaResolvePass::describe() const {
   const glm::ivec2 size = resolveOutputSize(spec_);
   std::vector<std::string> out = {
-      "pass taa_resolve", "taa_resolve spec constants: " + taaSpecConstants(spec_).describe(),
+      "pass taa_resolve", "taa_resolve spec constants: " + taaSpecConstants(spec_, true).describe(),
       "buffer history 2x " + std::to_string(size.x) + "x" + std::to_string(size.y)};
   if (spec_.taa.velocity_in_alpha && !spec_.post.motion_blur)
     out.push_back(
@@ -241,16 +244,16 @@ void TaaResolvePass::record(VkCommandBuffer cmd, vk::GpuTimer& timer,
   if (eye != 0) throw std::logic_error("TaaResolvePass: the built-in resolve has one eye");
   timer.begin(cmd, "taa_resolve");
   const glm::ivec2 prevSize = state.frame == 0 ? state.renderSize : prevRenderSize_;
-  gpu::TaaUniforms u = makeTaaUniforms(spec_, state, prevSize);
-  u.view.w = state.resetHistory ? 0.0f : 1.0f;
+  const gpu::TaaUniforms u = makeTaaUniforms(spec_, state, prevSize);
   std::memcpy(uniforms_.mapped(), &u, sizeof(u));
   prevRenderSize_ = state.renderSize;
 
   vk::Image& previous = history_[current_];
   current_ ^= 1;
   vk::Image& next = history_[current_];
+  const bool hasHistory = !state.resetHistory;
 
-  vk::Dispatch d(pipeline_);
+  vk::Dispatch d(hasHistory ? withHistory_ : withoutHistory_);
   d.uniform(TAA_BINDING_UNIFORMS, uniforms_.handle(), 0, sizeof(gpu::TaaUniforms));
   const ResolveInputSet reads = taaResolveInputs(spec_);
   ResolveInputs bound = in;

@@ -32,7 +32,7 @@ std::vector<ResolveRead> taaResolveReads(const spec::CaseSpec& spec);
 uint32_t taaResolveReadBytes(const spec::CaseSpec& spec);
 
 // The specialization constants of a case's resolve (exposed for the log and tests).
-vk::SpecConstants taaSpecConstants(const spec::CaseSpec& spec);
+vk::SpecConstants taaSpecConstants(const spec::CaseSpec& spec, bool hasHistory);
 
 gpu::TaaUniforms makeTaaUniforms(const spec::CaseSpec& spec, const script::FrameState& state,
                                  glm::ivec2 prevRenderSize);
@@ -57,9 +57,8 @@ class TaaResolvePass final : public ResolveStage {
   void checkResolveReads(const ResolveInputs& in, ResolveInputSet reads) const;
   vk::Context& ctx_;
   const spec::CaseSpec& spec_;
-  // Frames with and without history run one pipeline (TaaUniforms::view.w says which): a
-  // second one cost every process another front-end pass over the whole resolve.
-  vk::Pipeline pipeline_;
+  vk::Pipeline withHistory_;
+  vk::Pipeline withoutHistory_;
   vk::Image history_[2];
   int current_ = 0;
   vk::Image debug_;

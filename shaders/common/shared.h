@@ -151,8 +151,7 @@ TAA_BLOCK(TaaUniforms) {
   vec4 prevRenderSize;    // last frame's render size (previous G-buffer content)
   vec4 outputSize;        // w, h, 1/w, 1/h
   vec4 jitter;            // xy: this frame's jitter (render pixels); z: frame index; w: 0
-  vec4 view;              // near, far, debug scale; w: 1 with history, 0 without (frame 0,
-                          // a cut, a scripted reset): a uniform, so one pipeline runs both
+  vec4 view;              // near, far, debug scale, 0
   vec4 settings[TAA_SETTING_VEC4S];  // float settings at their slots (common/taa_settings.h)
 };
 

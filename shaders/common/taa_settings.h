@@ -83,17 +83,18 @@
 
 // The resolve's own specialization constants, which no case key sets, beside the settings'
 // ids so that a new one is picked against all of them (renderer/passes/taa_resolve.cpp
-// refuses to compile when two ids collide). The next free ids are 1 (kHasHistory until it
-// became TaaUniforms::view.w) and 28.
+// refuses to compile when two ids collide). The next free id is 28.
 // X(id, GLSL type, GLSL constant, GLSL default)
 #define TAA_SPEC_RESOLVE 0       // RESOLVE_*: which path (renderer/spec/taa_modes.h)
+#define TAA_SPEC_HAS_HISTORY 1   // false on frame 0, cuts and scripted resets
 #define TAA_SPEC_UPSAMPLE 19     // the output is larger than the render size
 #define TAA_SPEC_DEBUG 20        // DEBUG_OUTPUT_*
 #define TAA_SPEC_REJECT_MASK 21  // write TAA_BINDING_REJECT_OUT (adaptive mode only)
-#define TAA_RESOLVE_CONSTANTS(X)                    \
-  X(TAA_SPEC_RESOLVE, int, kResolve, RESOLVE_FULL)  \
-  X(TAA_SPEC_UPSAMPLE, bool, kUpsample, false)      \
-  X(TAA_SPEC_DEBUG, int, kDebug, DEBUG_OUTPUT_NONE) \
+#define TAA_RESOLVE_CONSTANTS(X)                         \
+  X(TAA_SPEC_RESOLVE, int, kResolve, RESOLVE_FULL)       \
+  X(TAA_SPEC_HAS_HISTORY, bool, kHasHistory, true)       \
+  X(TAA_SPEC_UPSAMPLE, bool, kUpsample, false)           \
+  X(TAA_SPEC_DEBUG, int, kDebug, DEBUG_OUTPUT_NONE)      \
   X(TAA_SPEC_REJECT_MASK, bool, kRejectMask, false)
 
 // clang-format off

@@ -82,6 +82,8 @@ TEST(Coverage, ResolveConstantsComeFromTheRunLogsTrace) {
   EXPECT_EQ(reaching(rows, "kHistoryFilter", "HISTORY_FILTER_BILINEAR"), Names{"a"});
   EXPECT_EQ(reaching(rows, "kHistoryFilter", "HISTORY_FILTER_CATMULL_ROM_5"), Names{"b"});
   EXPECT_EQ(reaching(rows, "kDepthCulling", "true"), Names{"a"});
+  // The no-history pipeline runs on every traced case's first frame.
+  EXPECT_EQ(reaching(rows, "kHasHistory", "false"), (Names{"a", "b"}));
   EXPECT_TRUE(reaching(rows, "kShaped", "true").empty());
 }
 

@@ -84,9 +84,9 @@ TEST_F(ResolveLines, AConditionFoldedAwayStillCountsAsRun) {
             (Names{"bilinear", "bspline"}));
 }
 
-TEST_F(ResolveLines, EveryCaseAlsoRunsTheNoHistoryBranch) {
-  // One pipeline for every frame: the first frame's branch (TaaUniforms::view.w 0) writes the
-  // current colour as it is and returns, and stays in every case's specialization.
+TEST_F(ResolveLines, EveryCaseAlsoRunsTheNoHistoryPipeline) {
+  // Traced with history; the first frame's pipeline (kHasHistory false) writes the current
+  // colour as it is and returns.
   const std::string f = "taa_resolve.comp";
   EXPECT_EQ(runBy(*rows_, f, lineOf(f, "writeOutput(s, q, current, 1.0, 0.0, vec2(0.0));")),
             (Names{"bilinear", "bspline"}));

@@ -108,18 +108,27 @@ std::optional<int> earlierVerdict(const run::CaseBatch& batch, const fs::path& f
   const std::string text = earlierFolder.readResultsText(fix);
   // A file that is no results at all is bad input (exit 2), sealed or not.
   run::RunResults earlier = earlierFolder.parseResults(text, fix);
-  if (const std::string why = run::sealProblem(from, text); !why.empty()) {
+  // Said, not silent: a run that renders what the user expected to reuse (a rebuild or an
+  // edited tree since the main job) is otherwise a mystery of a slow ctest.
+  auto notReused = [&](const std::string& why) {
     std::cerr << "note: --verdict-from " << from.string() << ": not reused (" << why
               << "); the cases render\n";
     return std::nullopt;
-  }
-  if (earlier.build != build || earlier.commit != golden::rendererCommit()) return std::nullopt;
+  };
+  if (const std::string why = run::sealProblem(from, text); !why.empty()) return notReused(why);
+  if (earlier.build != build)
+    return notReused(
+        "made by another build: its executable, SPIR-V, CPU level, CI setting or "
+        "device differs from this run's");
+  if (const std::string commit = golden::rendererCommit(); earlier.commit != commit)
+    return notReused("made at commit " + earlier.commit + ", this tree is " + commit);
   // The same build on another driver or Mesa version renders other bytes.
   DeviceOptions probe;
   probe.device = device;
   const std::string fingerprint =
       golden::currentEnvironment(Device(probe).identity()).fingerprint();
-  if (earlier.fingerprint != fingerprint) return std::nullopt;
+  if (earlier.fingerprint != fingerprint)
+    return notReused("made on another driver or environment: " + earlier.fingerprint);
   std::vector<run::CaseResult> found;
   for (const auto& c : batch.cases) {
     const auto it = std::find_if(earlier.cases.begin(), earlier.cases.end(), [&](const auto& r) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "case/case_error.h"
+#include "case/json_number.h"
 #include "spec/fields.h"
 
 namespace taa::cases {
@@ -130,8 +131,9 @@ class JsonReader {
   }
   bool read(const nlohmann::json& j, const std::string& path, int& out) {
     if (!j.is_number_integer()) return typeError(path, "an integer");
-    const auto wide = j.get<long long>();
-    if (wide < -(1LL << 31) || wide >= (1LL << 31)) return typeError(path, "an integer within 32 bits");
+    int64_t wide = 0;
+    if (!jsonWholeIn(j, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), wide))
+      return typeError(path, "an integer within 32 bits");
     out = static_cast<int>(wide);
     return true;
   }

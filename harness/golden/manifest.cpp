@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "case/json_number.h"
 #include "core/input_file.h"
 #include "core/json_guard.h"
 #include "golden/case_owner.h"
@@ -158,20 +159,16 @@ nlohmann::json Manifest::toJson() const {
 
 namespace {
 
-// A frame number or size as written, at least LOW: nlohmann's get<int>() would truncate 2.5 to
-// 2 and wrap 10^12 to a negative number, so a forged value would be reported as another one.
+// A frame number or size as written, at least LOW (case/json_number.h says why not get<int>).
 int wholeNumber(const nlohmann::json& frame, const char* key, int low,
                 const std::filesystem::path& where) {
   const nlohmann::json& v = frame.at(key);
-  const bool inRange =
-      v.is_number_unsigned()
-          ? v.get<uint64_t>() >= uint64_t(low) && v.get<uint64_t>() <= uint64_t(INT_MAX)
-          : v.is_number_integer() && v.get<int64_t>() >= low && v.get<int64_t>() <= INT_MAX;
-  if (!inRange)
+  int64_t n = 0;
+  if (!jsonWholeIn(v, low, INT_MAX, n))
     throw GoldenError(where.string() + ": frames[]." + key + " is " + v.dump() +
                       ", not a whole number from " + std::to_string(low) + " to " +
                       std::to_string(INT_MAX) + "; " + manifestRestoreHint(where.parent_path()));
-  return v.get<int>();
+  return int(n);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "run/results_visitors.h"
 
+#include "case/json_number.h"
 #include "compare/metric_table.h"
 
 namespace taa::run {
@@ -20,21 +21,6 @@ void ResultsWriter::namedNumbers(const char* key,
   auto& o = out_[key] = nlohmann::json::object();
   for (const auto& [k, v] : values) o[k] = encodeNumber(v);
 }
-
-namespace {
-
-// A whole number from lo to hi (a uint64 past int64's range must not wrap into it).
-bool wholeIn(const nlohmann::json& j, int64_t lo, int64_t hi, int64_t& out) {
-  if (j.is_number_unsigned()) {
-    if (j.get<uint64_t>() > uint64_t(std::numeric_limits<int64_t>::max())) return false;
-  } else if (!j.is_number_integer()) {
-    return false;
-  }
-  out = j.get<int64_t>();
-  return out >= lo && out <= hi;
-}
-
-}  // namespace
 
 ResultsReader::ResultsReader(const nlohmann::json& node, std::string path)
     : node_(node), path_(std::move(path)) {}
@@ -71,7 +57,7 @@ void ResultsReader::version(const char* key, int expected) {
     fail(key, "missing: written before results.json carried a format version (this build reads " +
                   std::to_string(expected) + "); run the cases again to write it");
   int64_t found = 0;
-  if (!wholeIn(*it, 0, std::numeric_limits<int>::max(), found) || found != expected)
+  if (!jsonWholeIn(*it, 0, std::numeric_limits<int>::max(), found) || found != expected)
     fail(key, (it->is_number() ? "format " + it->dump() : std::string("not a version number")) +
                   ", where this build reads format " + std::to_string(expected) +
                   "; run the cases again with this build to write it");
@@ -99,7 +85,7 @@ void ResultsReader::ints(const char* key, std::initializer_list<int*> values, in
   for (int* v : values) {
     // 4294967298 must not wrap to 2, nor 2.5 truncate to 2.
     int64_t x = 0;
-    if (!wholeIn(j[i++], lo, hi, x)) fail(keyPath(key), "expected " + what);
+    if (!jsonWholeIn(j[i++], lo, hi, x)) fail(keyPath(key), "expected " + what);
     *v = int(x);
   }
 }
@@ -140,7 +126,7 @@ void ResultsReader::read(const nlohmann::json& j, const std::string& path, bool&
 
 void ResultsReader::read(const nlohmann::json& j, const std::string& path, int& out) {
   int64_t x = 0;
-  expect(wholeIn(j, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), x), path,
+  expect(jsonWholeIn(j, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), x), path,
          "a whole number within 32 bits");
   out = int(x);
 }

@@ -62,6 +62,18 @@ TEST(CaseHostile, NumberOverflowingADoubleIsBadInput) {
                   "cases/big.json: a number is too large for a double"));
 }
 
+// A whole number past int64's range is refused as written, not wrapped to -1 and then
+// reported out of range as -1.
+TEST(CaseHostile, AHugeIntegerIsRefusedAsNotFittingNotAsAnotherValue) {
+  for (const char* huge : {"18446744073709551615", "9223372036854775808", "4294967297"}) {
+    const std::string p = problems([&] {
+      parseCase(std::string(R"({"script": {"frames": )") + huge + "}}", "cases/huge.json");
+    });
+    EXPECT_TRUE(has(p, "script.frames: expected an integer within 32 bits")) << huge;
+    EXPECT_EQ(p.find("-1 is out of range"), std::string::npos) << p;
+  }
+}
+
 TEST(CaseHostile, CaseFileThatIsNotARegularFile) {
   const fs::path dir = scratch();
   ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);

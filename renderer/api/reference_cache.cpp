@@ -12,24 +12,7 @@ size_t imageBytes(const Image& image) { return image.data.size() * sizeof(float)
 }  // namespace
 
 std::shared_ptr<const Image> ReferenceCache::find(const std::string& key) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = entries_.find(key);
-    if (it != entries_.end()) {
-      recent_.splice(recent_.begin(), recent_, it->second.recent);
-      ++stats_.reused;
-      return it->second.image;
-    }
-  }
-  if (!store_) return nullptr;
-  // Outside the lock: the other workers' look-ups need not wait for this file.
-  std::optional<Image> loaded = store_->load(key);
-  if (!loaded) return nullptr;
-  auto image = std::make_shared<const Image>(std::move(*loaded));
-  std::lock_guard<std::mutex> lock(mutex_);
-  ++stats_.fromDisk;
-  keep(key, image);
-  return image;
+  return findOrClaim(key).image;  // a miss's claim goes at once: nothing renders it here
 }
 
 void ReferenceCache::insert(const std::string& key, Image image) {
@@ -59,6 +42,7 @@ ReferenceCache::Lookup ReferenceCache::findOrClaim(const std::string& key) {
     if (keeps) claimed_.insert(key);  // held while the store is read too
   }
   Claim claim(this, key);
+  // The file is read outside the lock: other keys' look-ups need not wait for it.
   if (store_) {
     if (std::optional<Image> loaded = store_->load(key)) {
       auto image = std::make_shared<const Image>(std::move(*loaded));

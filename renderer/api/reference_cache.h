@@ -42,7 +42,8 @@ class ReferenceCache {
   explicit ReferenceCache(size_t maxBytes = kDefaultReferenceMemoryBytes, ReferenceStore* store = nullptr)
       : maxBytes_(maxBytes), store_(store) {}
 
-  // The image kept under `key`, in memory or in the store, if any.
+  // The image kept under `key`, in memory or in the store, if any (findOrClaim without the
+  // claim: for callers that render nothing on a miss).
   std::shared_ptr<const Image> find(const std::string& key);
   void insert(const std::string& key, Image image);
 
@@ -71,7 +72,8 @@ class ReferenceCache {
     std::shared_ptr<const Image> image;  // found (in memory or the store), or
     Claim claim;                         // this caller renders it
   };
-  // find(), except that a key another thread has claimed is waited for, and a miss claims it.
+  // The image, as find() gives it, or on a miss a claim to render it; a key another thread has
+  // claimed is waited for.
   // A thread must not hold a claim while it asks for another key (the renderer holds one for
   // the frame it records).
   Lookup findOrClaim(const std::string& key);

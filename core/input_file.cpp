@@ -45,7 +45,9 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out, LastLink 
   if (f.fd < 0) {
     const int err = errno;
     if (err == ENOENT)
-      refuse(file, "does not exist; check the path (relative paths start at the case's folder)");
+      throw InputFileMissing(file.string() +
+                             ": does not exist; check the path (relative paths start at the "
+                             "case's folder)");
     if (err == ELOOP && last == LastLink::Refuse)
       refuse(file, "is a symbolic link; give the file itself");
     if (err == ELOOP) refuse(file, "is a symbolic-link loop; point the link at a file");

@@ -30,6 +30,12 @@ class InputFileError : public InputError {
  public:
   using InputError::InputError;
 };
+// The refusal of a file that is not there (open(2) said ENOENT), for callers to whom absence
+// means something else than a broken file (a golden manifest not yet blessed).
+class InputFileMissing : public InputFileError {
+ public:
+  using InputFileError::InputFileError;
+};
 
 // The real path of `file` (symbolic links resolved) after checking that it lies inside the
 // real path of `root`. Throws InputFileError when it does not exist or leads outside; `what`

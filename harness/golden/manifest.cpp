@@ -235,17 +235,16 @@ const GoldenFrame* Manifest::find(int frame) const {
 }
 
 Manifest readManifest(const std::filesystem::path& file) {
-  // With no manifest at all, a bless starts the set afresh (as cmd_bless checks: exists()); a
-  // manifest that is there but unreadable it refuses to replace. A path that cannot be looked
-  // at (a folder without search permission) is not "missing": readInputFile names its error.
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec) && !ec)
-    throw GoldenError(file.string() + ": missing (the golden manifest); " +
-                      restoreHint(file.parent_path()));
   const std::string hint = manifestRestoreHint(file.parent_path());
   std::string text;
   try {
     text = readInputFile(file, kMaxCaseFileBytes);
+  } catch (const InputFileMissing&) {
+    // With no manifest at all, a bless starts the set afresh (as cmd_bless checks: exists()); a
+    // manifest that is there but unreadable it refuses to replace. A path that cannot be looked
+    // at (a folder without search permission) is not "missing": readInputFile names its error.
+    throw GoldenError(file.string() + ": missing (the golden manifest); " +
+                      restoreHint(file.parent_path()));
   } catch (const InputFileError& e) {
     throw GoldenError(std::string(e.what()) + " (the golden manifest); " + hint);
   }

@@ -44,7 +44,7 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out, LastLink 
                                       (last == LastLink::Refuse ? O_NOFOLLOW : 0))};
   if (f.fd < 0) {
     const int err = errno;
-    if (err == ENOENT)
+    if (err == ENOENT || err == ENOTDIR)  // ENOTDIR: a file where a folder of the path should be
       throw InputFileMissing(file.string() +
                              ": does not exist; check the path (relative paths start at the "
                              "case's folder)");
@@ -82,6 +82,14 @@ size_t readFully(char* buf, size_t size, const std::function<ssize_t(char*, size
     done += size_t(n);
   }
   return done;
+}
+
+std::string refusalProblem(const InputFileError& e, const fs::path& file) {
+  std::string problem = e.what();
+  const std::string prefix = file.string() + ": ";  // refuse()'s form
+  if (problem.rfind(prefix, 0) == 0) problem.erase(0, prefix.size());
+  if (const size_t fix = problem.rfind("; "); fix != std::string::npos) problem.resize(fix);
+  return problem;
 }
 
 fs::path followLinks(fs::path p) {

@@ -30,12 +30,17 @@ class InputFileError : public InputError {
  public:
   using InputError::InputError;
 };
-// The refusal of a file that is not there (open(2) said ENOENT), for callers to whom absence
-// means something else than a broken file (a golden manifest not yet blessed).
+// The refusal of a file that is not there (open(2) said ENOENT or ENOTDIR), for callers to whom
+// absence means something else than a broken file (a golden manifest not yet blessed).
 class InputFileMissing : public InputFileError {
  public:
   using InputFileError::InputFileError;
 };
+
+// What a refusal of `file` says is wrong with it ("is a FIFO (named pipe), not a regular file"):
+// its message without the path before and the fix for an input after, for callers with a fix
+// of their own (a cache drops the entry; a missing build file wants a build).
+std::string refusalProblem(const InputFileError& e, const std::filesystem::path& file);
 
 // The real path of `file` (symbolic links resolved) after checking that it lies inside the
 // real path of `root`. Throws InputFileError when it does not exist or leads outside; `what`

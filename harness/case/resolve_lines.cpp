@@ -1,7 +1,6 @@
 #include "case/resolve_lines.h"
 
 #include <algorithm>
-#include <fstream>
 #include <initializer_list>
 #include <optional>
 #include <set>
@@ -267,13 +266,7 @@ std::vector<SourceLine> resolveLineCoverage(const std::vector<uint32_t>& spirv,
 }
 
 std::vector<uint32_t> loadResolveWithLines() {
-  const std::string path = shaderFolder() + "/taa_resolve.comp.lines.spv";
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw EnvironmentError(path + " not found; build the project (its shaders target) or set TAA_SHADER_DIR");
-  std::vector<uint32_t> words(size_t(in.tellg()) / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
-  return words;
+  return shaderFolderWords("taa_resolve.comp.lines.spv");
 }
 
 }  // namespace taa::cases

@@ -51,6 +51,10 @@ std::string shaderFolder() {
   return vk::shaderDir();
 }
 
+std::vector<uint32_t> shaderFolderWords(const std::string& fileName) {
+  return vk::readSpirvFile(vk::shaderDir() + "/" + fileName);
+}
+
 ShaderUseRecord::ShaderUseRecord() : outer_(vk::setShaderUseSet(&names_)) {}
 
 ShaderUseRecord::~ShaderUseRecord() {

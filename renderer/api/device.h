@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <set>
@@ -67,6 +68,9 @@ class Device {
 
 // The folder SPIR-V is loaded from (build tree or install prefix).
 std::string shaderFolder();
+// The words of `fileName` in shaderFolder() (e.g. "taa_resolve.comp.lines.spv"), not counted
+// as a shader a case runs. Throws EnvironmentError when it is missing or not SPIR-V.
+std::vector<uint32_t> shaderFolderWords(const std::string& fileName);
 
 // The build's shaders (SPIR-V file names in shaderFolder()) that renderers load on this thread
 // while the record lives, cached pipelines included: which shaders a case runs, so a change

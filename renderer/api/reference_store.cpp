@@ -1,16 +1,19 @@
 #include "api/reference_store.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
 #include "core/cache_folder.h"
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "core/output_file.h"
 #include "core/sha256.h"
 
@@ -23,6 +26,8 @@ namespace {
 constexpr char kMagic[8] = {'T', 'A', 'A', 'R', 'E', 'F', '1', '\n'};
 constexpr size_t kDigestBytes = 32;
 constexpr int kMaxSide = 1 << 15;
+// An entry is its header and at most kMaxSide^2 RGBA floats; anything larger is not one.
+constexpr uint64_t kMaxEntryBytes = uint64_t(kMaxSide) * kMaxSide * 16 + 4096;
 // A temporary file this old belongs to a writer that was killed: writing one entry takes
 // well under a second.
 constexpr auto kStaleTemp = std::chrono::minutes(10);
@@ -126,25 +131,41 @@ fs::path ReferenceStore::entryPath(const std::string& key) const {
 std::optional<Image> ReferenceStore::load(const std::string& key) {
   if (!validKey(key)) return std::nullopt;
   const fs::path path = entryPath(key);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::error_code ec;
-  const uintmax_t size = fs::file_size(path, ec);
-  // An entry is its header and at most kMaxSide^2 RGBA floats; anything larger is not one.
-  if (ec || size > (uint64_t(kMaxSide) * kMaxSide * 16 + 4096)) return std::nullopt;
-  std::string bytes(size_t(size), '\0');
-  in.read(bytes.data(), std::streamsize(bytes.size()));
-  const bool whole = in.gcount() == std::streamsize(bytes.size()) && in.peek() == EOF;
-  std::optional<Image> image = whole ? decodeReferenceEntry(bytes, key) : std::nullopt;
-  if (!image) {
-    fs::remove(path, ec);
-    note("dropped " + path.filename().string() +
-         " (torn, truncated or altered: it failed its check); the reference is rendered again");
+  std::string bytes;
+  std::string problem = "torn, truncated or altered: it failed its check";
+  try {
+    // The one hardened reader: the cache folder may be shared or restored from elsewhere, and a
+    // FIFO, device or link under an entry's name must neither hang the run nor lead outside.
+    bytes = readInputFile(path, kMaxEntryBytes, LastLink::Refuse);
+  } catch (const InputFileMissing&) {
     return std::nullopt;
+  } catch (const InputFileError& e) {
+    problem = refusalProblem(e, path);  // the note names the file; the fix is the drop
   }
-  // Recently used: trim() keeps it over entries not read since.
-  fs::last_write_time(path, fs::file_time_type::clock::now(), ec);
-  return image;
+  if (std::optional<Image> image =
+          bytes.empty() ? std::nullopt : decodeReferenceEntry(bytes, key)) {
+    // Recently used: trim() keeps it over entries not read since. The entry itself, never
+    // where a link put in its place since would lead.
+    ::utimensat(AT_FDCWD, path.c_str(), nullptr, AT_SYMLINK_NOFOLLOW);
+    return image;
+  }
+  std::error_code ec;
+  if (fs::remove(path, ec)) {  // a link goes, not what it points at
+    note("dropped " + path.filename().string() + " (" + problem +
+         "); the reference is rendered again");
+  } else if (ec && firstTime(dropFailed_)) {
+    // A folder that cannot be searched, or a folder under an entry's name: once, not per frame.
+    note("cannot drop " + path.filename().string() + " (" + problem + "; " + ec.message() +
+         "); such entries are rendered again");
+  }
+  return std::nullopt;
+}
+
+bool ReferenceStore::firstTime(bool& flag) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const bool first = !flag;
+  flag = true;
+  return first;
 }
 
 void ReferenceStore::save(const std::string& key, const Image& image) {
@@ -157,13 +178,14 @@ void ReferenceStore::save(const std::string& key, const Image& image) {
     createOutputDirectory(folder_);
     writeFileAtomically(entryPath(key), encodeReferenceEntry(key, image));
   } catch (const std::exception& e) {
-    bool first = false;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      first = !writeFailed_;
-      writeFailed_ = true;
+    // A folder in the entry's place (load could not drop it) costs that entry, not the cache.
+    std::error_code ec;
+    if (fs::is_directory(fs::symlink_status(entryPath(key), ec))) {
+      note("not written " + entryPath(key).filename().string() +
+           ": a folder is in its place; remove it to keep this reference");
+      return;
     }
-    if (first)
+    if (firstTime(writeFailed_))
       note(std::string("not written (") + e.what() +
            "); this run renders its references as without the cache. Set "
            "TAA_REFERENCE_CACHE_DIR to a writable folder to keep them");
@@ -182,7 +204,8 @@ void ReferenceStore::trim() {
   for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code e2;
     const std::string name = it->path().filename().string();
-    if (!it->is_regular_file(e2)) continue;
+    // Only files the store wrote count: a link would count (and date) what it points at.
+    if (!it->is_regular_file(e2) || it->is_symlink(e2)) continue;
     const auto time = it->last_write_time(e2);
     if (e2) continue;
     if (isTempName(name)) {

@@ -58,13 +58,16 @@ class ReferenceStore {
 
  private:
   void note(const std::string& line);
+  // Sets `flag`; true the first time: a problem that would repeat for every reference is one note.
+  bool firstTime(bool& flag);
   std::filesystem::path entryPath(const std::string& key) const;
 
   std::filesystem::path folder_;
   uint64_t maxBytes_;
   std::ostream& notes_;
-  std::mutex mutex_;  // notes_ and the once-only flag
+  std::mutex mutex_;  // notes_ and the once-only flags
   bool writeFailed_ = false;
+  bool dropFailed_ = false;
 };
 
 }  // namespace taa

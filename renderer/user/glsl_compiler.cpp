@@ -15,6 +15,7 @@
 
 #include "api/shader_defines.h"
 #include "core/input_file.h"
+#include "core/output_file.h"
 #include "core/sha256.h"
 #include "user/compile_sandbox.h"
 #include "user/entry_checks.h"
@@ -478,9 +479,24 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
                                " has constant_id " + std::to_string(c.id) +
                                "; taa_user.h allows 0 to " + std::to_string(kMaxUserConstantId));
   checked(out);
-  writeSpirvCache(cacheDir, key, out);
+  // The cache only saves compile time: a folder that cannot be written costs the next run a
+  // compile, not this run its shader. The run log's line says so.
+  std::string kept;
+  if (cacheDir.empty()) {
+    kept = "; not cached: no cache folder (set TAA_SHADER_CACHE, XDG_CACHE_HOME or HOME)";
+  } else {
+    try {
+      writeSpirvCache(cacheDir, key, out);
+    } catch (const OutputError& e) {
+      kept = std::string("; not cached: ") + e.what();
+    } catch (const OutputPathError& e) {  // something not a file in an entry's place
+      kept = std::string("; not cached: ") + e.what();
+    }
+  }
   out.provenance = provenanceOf(
-      key, miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss,
+      key,
+      (miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss) +
+          kept,
       true);
   return out;
 }

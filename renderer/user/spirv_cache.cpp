@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "core/cache_folder.h"
@@ -25,8 +24,22 @@ std::string fileSha(const fs::path& file) {
 }  // namespace
 
 bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader& out, std::string& why) {
-  std::ifstream deps(dir / (key + ".deps"));
-  if (!deps) return false;
+  if (dir.empty()) return false;
+  std::string depsText;
+  try {
+    // The hardened reader: a FIFO or device under the entry's name would otherwise hang the
+    // compile or feed it without end; a link is not an entry this cache wrote.
+    depsText = readInputFile(dir / (key + ".deps"), kMaxShaderFileBytes, LastLink::Refuse);
+  } catch (const InputFileMissing&) {
+    return false;
+  } catch (const InputFileError&) {
+    // Dropped, as a damaged entry is rewritten: the compile's fresh entry takes the name.
+    std::error_code ec;
+    fs::remove(dir / (key + ".deps"), ec);  // a link goes, not what it points at
+    why = "the cache entry was not a file the cache wrote";
+    return false;
+  }
+  std::istringstream deps(depsText);
   why = "the cache entry was damaged";
   std::string kind, sha, spvSha;
   std::vector<fs::path> includes;
@@ -73,8 +86,12 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
   if (spvSha.empty()) return false;
   std::string bytes;
   try {
-    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16);
+    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16, LastLink::Refuse);
+  } catch (const InputFileMissing&) {
+    return false;
   } catch (const InputFileError&) {
+    std::error_code ec;
+    fs::remove(dir / (key + ".spv"), ec);
     return false;
   }
   if (bytes.size() % 4 != 0 || sha256Hex(bytes.data(), bytes.size()) != spvSha) return false;
@@ -103,8 +120,9 @@ void writeSpirvCache(const fs::path& dir, const std::string& key, const Compiled
 
 fs::path userShaderCacheDir() {
   if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;
-  if (fs::path dir = userCacheFolder("spirv"); !dir.empty()) return dir;
-  return fs::temp_directory_path() / "taa-harness-spirv";
+  // No shared fallback such as /tmp: another user could put SPIR-V there under a key we ask
+  // for. Without a folder of the user's own, shaders compile every time.
+  return userCacheFolder("spirv");
 }
 
 }  // namespace taa::user

@@ -9,13 +9,15 @@
 
 namespace taa::user {
 
-// $TAA_SHADER_CACHE, else $XDG_CACHE_HOME/taa-harness/spirv, else ~/.cache/taa-harness/spirv.
+// $TAA_SHADER_CACHE, else $XDG_CACHE_HOME/taa-harness/spirv, else ~/.cache/taa-harness/spirv;
+// empty (no cache: every shader compiles) when none of them is set.
 std::filesystem::path userShaderCacheDir();
 
 // The cache entry KEY.deps lists the SPIR-V's hash, each include's real path and hash, and the
 // capabilities and specialization constants (type, id, name) the shader declares; KEY.spv holds
 // the words. A hit needs every include unchanged and the words intact; on a miss `why` says
-// what changed ("" when there is no entry at all).
+// what changed ("" when there is no entry at all, or no folder). Anything under an entry's
+// name that is not a regular file (a FIFO, a device, a link) is a miss, never waited on.
 bool readSpirvCache(const std::filesystem::path& dir, const std::string& key, CompiledShader& out,
                     std::string& why);
 

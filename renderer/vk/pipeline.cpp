@@ -4,9 +4,9 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <fstream>
 #include <utility>
 
+#include "core/input_file.h"
 #include "core/sha256.h"
 #include "scene/scene.h"
 #include "vk/check.h"
@@ -100,18 +100,27 @@ std::set<std::string>* setShaderUseSet(std::set<std::string>* names) {
   return previous;
 }
 
+std::vector<uint32_t> readSpirvFile(const std::string& path) {
+  const std::string fix = "build the project (ninja -C build) or set TAA_SHADER_DIR";
+  std::string bytes;
+  try {
+    bytes = readInputFile(path, kMaxBuiltSpirvBytes);
+  } catch (const InputFileMissing&) {
+    throw EnvironmentError("shader " + path + " not found; " + fix);
+  } catch (const InputFileError& e) {
+    throw EnvironmentError("shader " + path + " " + refusalProblem(e, path) + "; " + fix);
+  }
+  if (bytes.empty() || bytes.size() % 4 != 0)
+    throw EnvironmentError("shader " + path + " is " + std::to_string(bytes.size()) +
+                           " bytes, not whole 32-bit SPIR-V words; " + fix);
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), bytes.size());
+  return words;
+}
+
 std::vector<uint32_t> loadSpirv(const std::string& name) {
   if (tShaderUse) tShaderUse->insert(name);
-  const std::string dir = shaderDir();
-  const std::string path = dir + "/" + name + ".spv";
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in)
-    throw EnvironmentError("shader " + path + " not found; build the project (ninja -C build) or set TAA_SHADER_DIR");
-  const auto size = static_cast<size_t>(in.tellg());
-  std::vector<uint32_t> words(size / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
-  return words;
+  return readSpirvFile(shaderDir() + "/" + name + ".spv");
 }
 
 namespace {

@@ -87,6 +87,14 @@ class Pipeline {
 // installed binary, else the build's shader folder.
 std::string shaderDir();
 
+// Largest SPIR-V file the shader folder may hold (the largest, the resolve with line info, is
+// 0.2 MB).
+inline constexpr uint64_t kMaxBuiltSpirvBytes = uint64_t(64) << 20;
+
+// The words of a SPIR-V file of the shader folder, read through the hardened reader (a FIFO
+// there cannot hang the harness). Throws EnvironmentError naming the file and the fix.
+std::vector<uint32_t> readSpirvFile(const std::string& path);
+
 // SPIR-V compiled at build time, found by file name (e.g. "taa_resolve.comp") in shaderDir().
 // The name goes into this thread's shader-use set, if one is installed.
 std::vector<uint32_t> loadSpirv(const std::string& name);

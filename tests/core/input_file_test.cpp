@@ -90,6 +90,28 @@ TEST(InputFile, RefusesWhatIsNotARegularFileWithoutReadingIt) {
   EXPECT_NE(refusal(dir / "zero.json").find("zero.json: is a device"), std::string::npos);
   EXPECT_NE(refusal(dir / "folder.gltf").find("folder.gltf: is a directory"), std::string::npos);
   EXPECT_NE(refusal(dir / "missing.json").find("missing.json: does not exist"), std::string::npos);
+  // A file where a folder of the path should be: not there either, for callers that tell
+  // absence apart (a cache, a golden manifest).
+  EXPECT_THROW(readInputFile(dir / "fifo.json" / "x.json", 100), InputFileMissing);
+}
+
+// The problem alone, for callers with a fix of their own: no path before it, no input's fix
+// after it.
+TEST(InputFile, TheRefusalsProblemStandsWithoutPathOrFix) {
+  const fs::path dir = scratch();
+  ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);
+  std::ofstream(dir / "big.csv") << std::string(1000, 'x');
+  for (const auto& [file, problem] :
+       {std::pair<fs::path, std::string>{dir / "fifo.json",
+                                         "is a FIFO (named pipe), not a regular file"},
+        {dir / "big.csv", "is 1000 bytes, over the limit of 0 MiB for this kind of input"}}) {
+    try {
+      readInputFile(file, 999);
+      ADD_FAILURE() << file << " read";
+    } catch (const InputFileError& e) {
+      EXPECT_EQ(refusalProblem(e, file), problem) << e.what();
+    }
+  }
 }
 
 TEST(InputFile, RefusesAFileOverItsLimitBeforeReading) {

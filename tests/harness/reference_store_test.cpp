@@ -3,8 +3,10 @@
 // under its limit, and the key (run/reference_key.h) misses when any input of the reference does.
 #include "api/reference_store.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -128,6 +131,62 @@ TEST(ReferenceStore, AStrayTemporaryFileIsIgnoredAndRemovedLater) {
   store.trim();
   EXPECT_FALSE(fs::exists(old));
   EXPECT_TRUE(fs::exists(fresh));  // perhaps a writer still at work
+}
+
+// Under an entry's name, nothing but a regular file is read: a FIFO is never waited on, a link
+// never followed (nor what it leads to dated) and a device never read; each is dropped with a
+// note and its reference rendered again. A folder that cannot be dropped costs its own entry,
+// not the cache. Should a load wait on the FIFO, the test opens the FIFO's other end so that
+// the bug fails the test instead of hanging it.
+TEST(ReferenceStore, NothingButAFileTheStoreWroteIsReadAsAnEntry) {
+  const fs::path dir = freshFolder();
+  std::ostringstream notes;
+  ReferenceStore store(dir, kDefaultReferenceCacheBytes, notes);
+  const Image image = pattern(4, 4, 1.0f);
+  const auto entryOf = [&](const char* name) { return dir / (keyOf(name) + ".ref"); };
+  const fs::path outside = dir.parent_path() / (dir.filename().string() + "-outside.ref");
+  writeAll(outside, encodeReferenceEntry(keyOf("link"), image));  // a valid entry, elsewhere
+  const auto outsideTime = fs::file_time_type::clock::now() - std::chrono::hours(3);
+  fs::last_write_time(outside, outsideTime);
+  fs::create_symlink(outside, entryOf("link"));
+  fs::create_symlink("/dev/zero", entryOf("device"));
+  ASSERT_EQ(::mkfifo(entryOf("fifo").c_str(), 0600), 0);
+  fs::create_directories(entryOf("folder") / "inside");
+  for (const char* name : {"fifo", "link", "device", "folder"}) {
+    auto loaded = std::async(std::launch::async, [&] { return store.load(keyOf(name)); });
+    if (loaded.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
+      ADD_FAILURE() << name << ": the load waits on it";
+      const int writer = ::open(entryOf(name).c_str(), O_WRONLY | O_NONBLOCK);
+      if (writer >= 0) ::close(writer);
+    }
+    EXPECT_FALSE(loaded.get()) << name;
+    const std::string said = std::string(name) == "folder" ? "cannot drop " : "dropped ";
+    EXPECT_NE(notes.str().find(said + keyOf(name) + ".ref"), std::string::npos) << name << "\n"
+                                                                                << notes.str();
+  }
+  EXPECT_TRUE(fs::exists(outside));
+  EXPECT_EQ(fs::last_write_time(outside), outsideTime);
+  for (const char* name : {"fifo", "link", "device", "folder", "after"})
+    store.save(keyOf(name), image);
+  for (const char* name : {"fifo", "link", "device", "after"}) {
+    // Checked first, so that a FIFO left in place fails here instead of blocking the load.
+    ASSERT_TRUE(fs::is_regular_file(fs::symlink_status(entryOf(name))))
+        << name << ": its name was not taken back\n"
+        << notes.str();
+    EXPECT_TRUE(store.load(keyOf(name))) << name;
+  }
+  EXPECT_NE(notes.str().find("a folder is in its place"), std::string::npos) << notes.str();
+  // trim() counts the store's files only: a link to something big and recent, counted, would
+  // push every real entry out.
+  const fs::path big = dir.parent_path() / (dir.filename().string() + "-big");
+  writeAll(big, "x");
+  fs::resize_file(big, uint64_t(64) << 20);
+  fs::last_write_time(big, fs::file_time_type::clock::now() + std::chrono::hours(1));
+  fs::create_symlink(big, entryOf("big"));
+  ReferenceStore(dir, uint64_t(1) << 20, notes).trim();
+  for (const char* name : {"fifo", "link", "device", "after"})
+    EXPECT_TRUE(fs::exists(entryOf(name))) << name << ": trimmed for a link's target";
+  EXPECT_TRUE(fs::exists(big));
 }
 
 // kill -9 of a writer at any moment: every entry the folder then holds is complete and

@@ -1,10 +1,15 @@
 // The SPIR-V cache of users' resolves (user/spirv_cache.h): a second compile comes from the
 // cache until a file it read changes, a damaged entry is compiled again, the key keeps its parts
 // apart, and an entry keeps what the source declares.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 
 #include "support/shader_folder.h"
 #include "support/text.h"
@@ -115,6 +120,62 @@ void main() {
     ASSERT_EQ(again.constants.size(), 1u);
     EXPECT_EQ(again.constants[0].id, 3);
   }
+}
+
+// Under an entry's names only files the cache wrote are read: a FIFO is never waited on (the
+// compile would hang), a link never followed; the shader is compiled again and the name taken
+// back. A cache folder that cannot be written costs the next run a compile, not this one its
+// shader, and the run log's provenance says so.
+TEST_F(SpirvCacheTest, OnlyFilesTheCacheWroteAreReadAndAnUnwritableFolderIsANote) {
+  options_.cacheDir = dir_ / "cache_hostile";
+  const auto file = write("hostile.comp", R"(#version 450
+#include "taa_user.h"
+void main() {
+  ivec2 p;
+  if (!taa_pixel(p)) return;
+  imageStore(taa_output, p, vec4(taa_color_at(p) * 0.75, 1.0));
+}
+)");
+  const auto first = compileComputeShader(file, options_);
+  fs::path deps, spv;
+  for (const auto& e : fs::directory_iterator(options_.cacheDir))
+    (e.path().extension() == ".deps" ? deps : spv) = e.path();
+  ASSERT_FALSE(deps.empty());
+  ASSERT_FALSE(spv.empty());
+
+  fs::remove(deps);
+  ASSERT_EQ(::mkfifo(deps.c_str(), 0600), 0);
+  auto compiling =
+      std::async(std::launch::async, [&] { return compileComputeShader(file, options_); });
+  if (compiling.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
+    ADD_FAILURE() << "the compile waits on a FIFO in the cache";
+    const int writer = ::open(deps.c_str(), O_WRONLY | O_NONBLOCK);  // lets it go on
+    if (writer >= 0) ::close(writer);
+  }
+  const auto second = compiling.get();
+  EXPECT_FALSE(second.fromCache);
+  EXPECT_EQ(second.spirv, first.spirv);
+  EXPECT_NE(second.provenance.find("not a file the cache wrote"), std::string::npos)
+      << second.provenance;
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(deps)));
+
+  const fs::path elsewhere = dir_ / "elsewhere.spv";  // the same words, outside the folder
+  fs::copy_file(spv, elsewhere, fs::copy_options::overwrite_existing);
+  fs::remove(spv);
+  fs::create_symlink(elsewhere, spv);
+  const auto third = compileComputeShader(file, options_);
+  EXPECT_FALSE(third.fromCache) << "a link in the cache was followed";
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(spv)));
+  EXPECT_TRUE(compileComputeShader(file, options_).fromCache);
+
+  write("a_file", "x");
+  options_.cacheDir = dir_ / "src" / "a_file" / "cache";
+  const auto fourth = compileComputeShader(file, options_);
+  EXPECT_FALSE(fourth.fromCache);
+  EXPECT_EQ(fourth.spirv, first.spirv);
+  EXPECT_NE(fourth.provenance.find("compiled by glslang: no cache entry; not cached: cannot write"),
+            std::string::npos)
+      << fourth.provenance;
 }
 
 }  // namespace taa::user::spirv_cache_test

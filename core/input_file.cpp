@@ -48,7 +48,10 @@ void readInto(const fs::path& file, uint64_t maxBytes, Container& out, LastLink 
       throw InputFileMissing(file.string() +
                              ": does not exist; check the path (relative paths start at the "
                              "case's folder)");
-    if (err == ELOOP && last == LastLink::Refuse)
+    // With O_NOFOLLOW, ELOOP is the last part being a link, or a loop in the folders before it.
+    struct stat own {};
+    if (err == ELOOP && last == LastLink::Refuse && ::lstat(file.c_str(), &own) == 0 &&
+        S_ISLNK(own.st_mode))
       refuse(file, "is a symbolic link; give the file itself");
     if (err == ELOOP) refuse(file, "is a symbolic-link loop; point the link at a file");
     refuse(file,

@@ -95,6 +95,28 @@ TEST(InputFile, RefusesWhatIsNotARegularFileWithoutReadingIt) {
   EXPECT_THROW(readInputFile(dir / "fifo.json" / "x.json", 100), InputFileMissing);
 }
 
+// A path resolved once is read without following a link put in its place: the link is named
+// as such, and a loop in the folders before it as a loop, not as a link.
+TEST(InputFile, ALastLinkRefusedIsNamedApartFromALoopBeforeIt) {
+  const fs::path dir = scratch();
+  std::ofstream(dir / "real.json") << "{}";
+  fs::create_symlink(dir / "real.json", dir / "link.json");
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  EXPECT_EQ(readInputFile(dir / "link.json", 100), "{}");
+  auto refused = [](const fs::path& f) {
+    try {
+      readInputFile(f, 100, LastLink::Refuse);
+    } catch (const InputFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_NE(refused(dir / "link.json").find("link.json: is a symbolic link;"), std::string::npos);
+  const std::string loop = refused(dir / "loop_a" / "x.json");
+  EXPECT_NE(loop.find("x.json: is a symbolic-link loop"), std::string::npos) << loop;
+}
+
 // The problem alone, for callers with a fix of their own: no path before it, no input's fix
 // after it.
 TEST(InputFile, TheRefusalsProblemStandsWithoutPathOrFix) {

@@ -71,35 +71,34 @@ void anisotropicGradients(inout vec2 dx, inout vec2 dy, vec2 texels) {
     dy /= ratio;
 }
 
-#define TRACE_TEXTURE_CASE(i)                                                                \
-  case i: {                                                                                  \
-    if (i >= kTextureSlots) break;                                                           \
-    vec2 gx = dx * trace.params.x, gy = dy * trace.params.x;                                 \
-    if (kAniso > 1.0) anisotropicGradients(gx, gy, vec2(textureSize(textures[i], 0)));       \
-    return kRayLod ? textureGrad(textures[i], uv, gx, gy) : textureLod(textures[i], uv, 0.0); \
+// Every slot of `textures` as a case running LOOKUP(i), for both lookups below; a case past
+// the scene's slot count is compiled out (the guard written once, here).
+#define TRACE_TEXTURE_SLOT(LOOKUP, i) \
+  case i:                             \
+    if (i >= kTextureSlots) break;    \
+    LOOKUP(i)
+#define TRACE_TEXTURE_SLOTS(LOOKUP)                                                            \
+  TRACE_TEXTURE_SLOT(LOOKUP, 0) TRACE_TEXTURE_SLOT(LOOKUP, 1) TRACE_TEXTURE_SLOT(LOOKUP, 2)    \
+  TRACE_TEXTURE_SLOT(LOOKUP, 3) TRACE_TEXTURE_SLOT(LOOKUP, 4) TRACE_TEXTURE_SLOT(LOOKUP, 5)    \
+  TRACE_TEXTURE_SLOT(LOOKUP, 6) TRACE_TEXTURE_SLOT(LOOKUP, 7) TRACE_TEXTURE_SLOT(LOOKUP, 8)    \
+  TRACE_TEXTURE_SLOT(LOOKUP, 9) TRACE_TEXTURE_SLOT(LOOKUP, 10) TRACE_TEXTURE_SLOT(LOOKUP, 11)  \
+  TRACE_TEXTURE_SLOT(LOOKUP, 12) TRACE_TEXTURE_SLOT(LOOKUP, 13) TRACE_TEXTURE_SLOT(LOOKUP, 14) \
+  TRACE_TEXTURE_SLOT(LOOKUP, 15)
+#define TRACE_TEXTURE_LOOKUP(i)                                                                \
+  {                                                                                            \
+    vec2 gx = dx * trace.params.x, gy = dy * trace.params.x;                                   \
+    if (kAniso > 1.0) anisotropicGradients(gx, gy, vec2(textureSize(textures[i], 0)));         \
+    return kRayLod ? textureGrad(textures[i], uv, gx, gy) : textureLod(textures[i], uv, 0.0);  \
   }
-#define TRACE_TEXTURE_LOD0_CASE(i)  \
-  case i:                           \
-    if (i >= kTextureSlots) break;  \
-    return textureLod(textures[i], uv, 0.0);
+#define TRACE_TEXTURE_LOD0_LOOKUP(i) return textureLod(textures[i], uv, 0.0);
 
 vec4 sampleTexture(uint slot, vec2 uv, vec2 dx, vec2 dy) {
-  switch (slot) {
-    TRACE_TEXTURE_CASE(0) TRACE_TEXTURE_CASE(1) TRACE_TEXTURE_CASE(2) TRACE_TEXTURE_CASE(3)
-    TRACE_TEXTURE_CASE(4) TRACE_TEXTURE_CASE(5) TRACE_TEXTURE_CASE(6) TRACE_TEXTURE_CASE(7)
-    TRACE_TEXTURE_CASE(8) TRACE_TEXTURE_CASE(9) TRACE_TEXTURE_CASE(10) TRACE_TEXTURE_CASE(11)
-    TRACE_TEXTURE_CASE(12) TRACE_TEXTURE_CASE(13) TRACE_TEXTURE_CASE(14) TRACE_TEXTURE_CASE(15)
-  }
+  switch (slot) { TRACE_TEXTURE_SLOTS(TRACE_TEXTURE_LOOKUP) }
   return vec4(1.0);
 }
 
 vec4 sampleTextureLod0(uint slot, vec2 uv) {
-  switch (slot) {
-    TRACE_TEXTURE_LOD0_CASE(0) TRACE_TEXTURE_LOD0_CASE(1) TRACE_TEXTURE_LOD0_CASE(2) TRACE_TEXTURE_LOD0_CASE(3)
-    TRACE_TEXTURE_LOD0_CASE(4) TRACE_TEXTURE_LOD0_CASE(5) TRACE_TEXTURE_LOD0_CASE(6) TRACE_TEXTURE_LOD0_CASE(7)
-    TRACE_TEXTURE_LOD0_CASE(8) TRACE_TEXTURE_LOD0_CASE(9) TRACE_TEXTURE_LOD0_CASE(10) TRACE_TEXTURE_LOD0_CASE(11)
-    TRACE_TEXTURE_LOD0_CASE(12) TRACE_TEXTURE_LOD0_CASE(13) TRACE_TEXTURE_LOD0_CASE(14) TRACE_TEXTURE_LOD0_CASE(15)
-  }
+  switch (slot) { TRACE_TEXTURE_SLOTS(TRACE_TEXTURE_LOD0_LOOKUP) }
   return vec4(1.0);
 }
 

@@ -29,7 +29,7 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
   try {
     // The hardened reader: a FIFO or device under the entry's name would otherwise hang the
     // compile or feed it without end; a link is not an entry this cache wrote.
-    depsText = readInputFile(dir / (key + ".deps"), kMaxShaderFileBytes, LastLink::Refuse);
+    depsText = readInputFile(dir / (key + ".deps"), kMaxShaderFileBytes * 16, LastLink::Refuse);
   } catch (const InputFileMissing&) {
     return false;
   } catch (const InputFileError&) {

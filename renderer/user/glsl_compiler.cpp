@@ -34,7 +34,18 @@ namespace {
 
 // Bumped when what this file passes to glslang, or what a cache entry holds, changes, so older
 // cache entries are ignored ("entry2": a constant's id is stored).
-constexpr const char* kCompilerTag = "taa-user 3 glslang 12 vulkan1.2 spv1.5 params19 entry2";
+constexpr const char* kCompilerTag = "taa-user 3 vulkan1.2 spv1.5 params19 entry2";
+
+// The tag and the version of the glslang this program links: two builds sharing one cache
+// folder (a distribution's and a newer glslang's) must not take each other's SPIR-V.
+const std::string& compilerKey() {
+  static const std::string key = [] {
+    const glslang::Version v = glslang::GetVersion();
+    return std::string(kCompilerTag) + " glslang " + std::to_string(v.major) + "." +
+           std::to_string(v.minor) + "." + std::to_string(v.patch) + v.flavor;
+  }();
+  return key;
+}
 
 fs::path absoluteNormal(const fs::path& p) {
   std::error_code ec;
@@ -445,7 +456,7 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
     throw ShaderCompileError(source.string() + ": " + problems.front());
   Sha256 h;
   for (const std::string& part :
-       {std::string(kCompilerTag), std::string(languageName(o.language)), o.entry, real.string(),
+       {compilerKey(), std::string(languageName(o.language)), o.entry, real.string(),
         fs::weakly_canonical(headerDir).string(), fs::weakly_canonical(o.root).string(),
         shaderDefinePreamble(o.defines), text}) {
     h.update(part.data(), part.size());

@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstring>
 
@@ -71,18 +70,29 @@ void writeFileAtomically(const fs::path& file, std::string_view content) {
   // squatting on the name is left to the rename, whose failure is the environment's (exit 3).
   if (const std::string kind = notRegular(file); !kind.empty() && kind != "a directory")
     refuseType(file, kind, "");
-  static std::atomic<unsigned> counter{0};
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  const fs::path tmp = dir / ("." + file.filename().string() + ".tmp-" +
-                              std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  // The temporary name is created, never opened: O_EXCL | O_NOFOLLOW, so that a file or a link
+  // someone put under a name we would pick (in a shared folder such as a cache) is passed over,
+  // never written through. A name taken (a killed writer's, another thread's) tries the next.
+  fs::path tmp;
+  int fd = -1;
+  int openErr = EEXIST;
+  for (int n = 0; fd < 0 && openErr == EEXIST && n < kMaxTemporaryNames; ++n) {
+    tmp = dir / ("." + file.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                 std::to_string(n));
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    openErr = fd < 0 ? errno : 0;
+  }
+  if (fd < 0)
+    throw OutputError(file, std::string("cannot create a file in ") + dir.string() + ": " +
+                                (openErr == EEXIST ? "every temporary name is taken; delete "
+                                                     "the hidden .tmp- files there"
+                                                   : std::strerror(openErr)));
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
     throw OutputError(file, why);
   };
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    fail(std::string("cannot create a file in ") + dir.string() + ": " + std::strerror(errno));
   size_t done = 0;
   while (done < content.size()) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);

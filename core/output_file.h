@@ -42,7 +42,11 @@ void checkOutputPath(const std::filesystem::path& file,
 // failure, which is where a full disk shows for delayed allocation.
 void syncDirectory(const std::filesystem::path& dir);
 
-// Writes `content` to a hidden temporary file in the same folder, checks every write,
+// How many hidden temporary names (".NAME.tmp-PID-N", N from 0) a write tries before it gives up.
+inline constexpr int kMaxTemporaryNames = 1000;
+
+// Writes `content` to a hidden temporary file in the same folder, created exclusively (a file or
+// link already under that name is passed over, never written through), checks every write,
 // flushes it to disk and renames it over `file`. Throws OutputError; `file` is then as it was.
 // Throws OutputPathError (checkOutputPath's type rule) when `file` exists and is a device node,
 // FIFO, socket or link, which a rename would replace with a regular file (a directory there

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -83,6 +84,43 @@ TEST(OutputPath, AFifoOrALinkIsRefusedAndSurvives) {
   EXPECT_EQ(fs::directory_iterator(dir) == fs::directory_iterator(), false);
   for (const auto& e : fs::directory_iterator(dir))  // no temporary left beside them
     EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+// The temporary file is created, never opened: a link or a file someone put under the name a
+// write would pick (".NAME.tmp-PID-N" is predictable, and a cache folder may be shared) is passed
+// over and left as it was. A child process writes, so that the test knows its PID beforehand.
+TEST(OutputPath, ATemporaryNameTakenByALinkOrAFileIsPassedOver) {
+  const fs::path dir = outputScratch();
+  std::ofstream(dir / "victim") << "kept";
+  int go[2];
+  ASSERT_EQ(::pipe(go), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::close(go[1]);
+    char c = 0;
+    if (::read(go[0], &c, 1) != 1) ::_exit(3);
+    try {
+      writeFileAtomically(dir / "out.txt", "written");
+    } catch (...) {
+      ::_exit(2);
+    }
+    ::_exit(0);
+  }
+  ::close(go[0]);
+  const std::string taken = ".out.txt.tmp-" + std::to_string(child) + "-";
+  fs::create_symlink(dir / "victim", dir / (taken + "0"));
+  std::ofstream(dir / (taken + "1")) << "someone else's";
+  ASSERT_EQ(::write(go[1], "x", 1), 1);
+  ::close(go[1]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(test::readFile(dir / "out.txt"), "written");
+  EXPECT_EQ(test::readFile(dir / "victim"), "kept");
+  EXPECT_TRUE(fs::is_symlink(dir / (taken + "0")));
+  EXPECT_EQ(test::readFile(dir / (taken + "1")), "someone else's");
 }
 
 TEST(OutputPath, ADeviceIsRefusedAndSurvives) {

@@ -142,8 +142,7 @@ std::optional<Image> ReferenceStore::load(const std::string& key) {
   } catch (const InputFileError& e) {
     problem = refusalProblem(e, path);  // the note names the file; the fix is the drop
   }
-  if (std::optional<Image> image =
-          bytes.empty() ? std::nullopt : decodeReferenceEntry(bytes, key)) {
+  if (std::optional<Image> image = decodeReferenceEntry(bytes, key)) {  // "" decodes to none
     // Recently used: trim() keeps it over entries not read since. The entry itself, never
     // where a link put in its place since would lead.
     ::utimensat(AT_FDCWD, path.c_str(), nullptr, AT_SYMLINK_NOFOLLOW);

@@ -6,7 +6,6 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -15,7 +14,6 @@
 
 #include "api/shader_defines.h"
 #include "core/input_file.h"
-#include "core/output_file.h"
 #include "core/sha256.h"
 #include "user/compile_sandbox.h"
 #include "user/entry_checks.h"
@@ -23,6 +21,7 @@
 #include "user/spirv_cache.h"
 #include "user/spirv_check.h"
 #include "user/user_capabilities.h"
+#include "user/user_includer.h"
 #include "user/user_interface.h"
 #include "vk/pipeline.h"
 
@@ -46,119 +45,6 @@ const std::string& compilerKey() {
   }();
   return key;
 }
-
-fs::path absoluteNormal(const fs::path& p) {
-  std::error_code ec;
-  return fs::absolute(p, ec).lexically_normal();
-}
-
-// Resolves #include against the including file's folder, then the installed headers. A file
-// found beside the includer but outside the allowed folders is refused, not skipped, so a
-// header can never be taken from somewhere the user did not mean.
-class UserIncluder : public glslang::TShader::Includer {
- public:
-  UserIncluder(fs::path root, fs::path headerDir)
-      : root_(std::move(root)), headerDir_(std::move(headerDir)) {}
-
-  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
-    return resolve(header, includer, depth, true);
-  }
-  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
-    return resolve(header, includer, depth, false);
-  }
-  void releaseInclude(IncludeResult* r) override {
-    if (r) delete static_cast<std::string*>(r->userData);
-    delete r;
-  }
-
-  // A new includer with the same folders, for a second pass over the same text.
-  UserIncluder fresh() const { return UserIncluder(root_, headerDir_); }
-  const std::vector<fs::path>& files() const { return files_; }
-  const std::string& problem() const { return problem_; }
-
- private:
-  IncludeResult* resolve(const char* header, const char* includer, size_t depth, bool local) {
-    if (stopped_) return nullptr;  // a bound was reached: glslang's error recovery asks on
-    if (depth > kMaxIncludeDepth)
-      return stop(std::string(includer) + ": includes nest deeper than " +
-                  std::to_string(kMaxIncludeDepth) + " (a header including itself?); break the cycle");
-    if (++count_ > kMaxIncludes)
-      return stop(std::string(includer) + ": resolves more than " + std::to_string(kMaxIncludes) +
-                  " #include directives, counting repeats (a header including itself twice?); "
-                  "guard the header or include it fewer times");
-    std::vector<fs::path> candidates;
-    if (local) candidates.push_back(fs::path(includer).parent_path() / header);
-    if (!headerDir_.empty()) candidates.push_back(headerDir_ / header);
-    const std::string what = std::string(includer) + ": #include \"" + header + "\"";
-    // Whether a path outside the folders exists is not the shader's business: the text of the
-    // path decides first, then its real path; both refusals read the same.
-    const std::string leaves = what + " leads outside the shader's folder; move the header under "
-                               "that folder";
-    std::error_code ec;
-    for (const auto& c : candidates) {
-      const fs::path lexical = absoluteNormal(c);
-      if (!allowed(lexical)) return stop(leaves);
-      if (!fs::exists(fs::symlink_status(lexical, ec))) continue;
-      const fs::path real = followLinks(lexical);
-      if (real.empty() || !allowed(real)) return stop(leaves);
-      if (!fs::exists(real, ec)) continue;
-      std::string text;
-      try {
-        text = readShaderText(real, what);
-      } catch (const ShaderCompileError& e) {
-        return stop(e.what());
-      }
-      bytes_ += text.size();
-      if (bytes_ > kMaxIncludedBytes)
-        return stop(what + ": the headers read add up to more than " +
-                    std::to_string(kMaxIncludedBytes >> 20) + " MiB, counting repeats");
-      auto* kept = new std::string(std::move(text));
-      files_.push_back(real);
-      return new IncludeResult(real.string(), kept->data(), kept->size(), kept);
-    }
-    // glslang asks the system paths after a failed local lookup: keep the first, sharper reason.
-    if (!problem_.empty()) return nullptr;
-    problem_ = what + " not found beside it" +
-               (headerDir_.empty() ? "" : " nor in the installed headers") +
-               "; check the name, or put the header in the shader's folder";
-    return nullptr;
-  }
-
-  IncludeResult* stop(const std::string& why) {
-    if (problem_.empty() || !stopped_) problem_ = why;
-    stopped_ = true;
-    return nullptr;
-  }
-
-  // Inside the case's folder or the installed headers, by the path's text or its real path.
-  bool allowed(const fs::path& p) {
-    return isInsideFolder(absoluteNormal(root_), p) || isInsideFolder(rootReal(), p) ||
-           (!headerDir_.empty() && isInsideFolder(absoluteNormal(headerDir_), p)) ||
-           isInsideFolder(headerReal(), p);
-  }
-
-  const fs::path& rootReal() {
-    if (rootReal_.empty()) {
-      std::error_code ec;
-      rootReal_ = fs::canonical(root_, ec);
-    }
-    return rootReal_;
-  }
-  const fs::path& headerReal() {
-    if (headerReal_.empty() && !headerDir_.empty()) {
-      std::error_code ec;
-      headerReal_ = fs::canonical(headerDir_, ec);
-    }
-    return headerReal_;
-  }
-
-  fs::path root_, headerDir_, rootReal_, headerReal_;
-  std::vector<fs::path> files_;
-  std::string problem_;
-  bool stopped_ = false;
-  size_t count_ = 0;
-  uint64_t bytes_ = 0;
-};
 
 void initGlslangOnce() {
   static const bool done = [] {
@@ -490,24 +376,11 @@ CompiledShader compileComputeShader(const fs::path& source, const CompileOptions
                                " has constant_id " + std::to_string(c.id) +
                                "; taa_user.h allows 0 to " + std::to_string(kMaxUserConstantId));
   checked(out);
-  // The cache only saves compile time: a folder that cannot be written costs the next run a
-  // compile, not this run its shader. The run log's line says so.
-  std::string kept;
-  if (cacheDir.empty()) {
-    kept = "; not cached: no cache folder (set TAA_SHADER_CACHE, XDG_CACHE_HOME or HOME)";
-  } else {
-    try {
-      writeSpirvCache(cacheDir, key, out);
-    } catch (const OutputError& e) {
-      kept = std::string("; not cached: ") + e.what();
-    } catch (const OutputPathError& e) {  // something not a file in an entry's place
-      kept = std::string("; not cached: ") + e.what();
-    }
-  }
+  const std::string notCached = writeSpirvCache(cacheDir, key, out);  // said in the run log
   out.provenance = provenanceOf(
       key,
       (miss.empty() ? "compiled by glslang: no cache entry" : "recompiled by glslang: " + miss) +
-          kept,
+          (notCached.empty() ? "" : "; not cached: " + notCached),
       true);
   return out;
 }

@@ -49,7 +49,8 @@ struct CompiledShader {
   std::vector<DeclaredConstant> constants;
 };
 
-// Throws ShaderCompileError (bad shader or path) or OutputError (the cache cannot be written).
+// Throws ShaderCompileError (bad shader or path); a cache that cannot be written is said in
+// `provenance` (spirv_cache.h), not thrown.
 CompiledShader compileComputeShader(const std::filesystem::path& source,
                                     const CompileOptions& options);
 

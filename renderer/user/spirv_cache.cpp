@@ -2,7 +2,9 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/cache_folder.h"
 #include "core/input_file.h"
@@ -21,25 +23,37 @@ std::string fileSha(const fs::path& file) {
   return sha256Hex(bytes.data(), bytes.size());
 }
 
+// One of an entry's files as the cache wrote it, through the hardened reader: nullopt when it is
+// not there, or (with `foreign` set) when something else is under its name (a FIFO that would
+// hang the compile, a device, a link), which is deleted so that the fresh entry takes the name
+// (a link goes, not what it points at).
+std::optional<std::string> readEntryFile(const fs::path& file, bool& foreign) {
+  try {
+    return readInputFile(file, kMaxShaderFileBytes * 16, LastLink::Refuse);
+  } catch (const InputFileMissing&) {
+    return std::nullopt;
+  } catch (const InputFileError&) {
+    std::error_code ec;
+    fs::remove(file, ec);
+    foreign = true;
+    return std::nullopt;
+  }
+}
+
+void writeEntry(const fs::path& dir, const std::string& key, const CompiledShader& c);
+
 }  // namespace
 
-bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader& out, std::string& why) {
+bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader& out,
+                    std::string& why) {
   if (dir.empty()) return false;
-  std::string depsText;
-  try {
-    // The hardened reader: a FIFO or device under the entry's name would otherwise hang the
-    // compile or feed it without end; a link is not an entry this cache wrote.
-    depsText = readInputFile(dir / (key + ".deps"), kMaxShaderFileBytes * 16, LastLink::Refuse);
-  } catch (const InputFileMissing&) {
-    return false;
-  } catch (const InputFileError&) {
-    // Dropped, as a damaged entry is rewritten: the compile's fresh entry takes the name.
-    std::error_code ec;
-    fs::remove(dir / (key + ".deps"), ec);  // a link goes, not what it points at
-    why = "the cache entry was not a file the cache wrote";
+  bool foreign = false;
+  const std::optional<std::string> depsText = readEntryFile(dir / (key + ".deps"), foreign);
+  if (!depsText) {
+    if (foreign) why = "the cache entry was not a file the cache wrote";
     return false;
   }
-  std::istringstream deps(depsText);
+  std::istringstream deps(*depsText);
   why = "the cache entry was damaged";
   std::string kind, sha, spvSha;
   std::vector<fs::path> includes;
@@ -84,16 +98,9 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
     }
   }
   if (spvSha.empty()) return false;
-  std::string bytes;
-  try {
-    bytes = readInputFile(dir / (key + ".spv"), kMaxShaderFileBytes * 16, LastLink::Refuse);
-  } catch (const InputFileMissing&) {
-    return false;
-  } catch (const InputFileError&) {
-    std::error_code ec;
-    fs::remove(dir / (key + ".spv"), ec);
-    return false;
-  }
+  const std::optional<std::string> words = readEntryFile(dir / (key + ".spv"), foreign);
+  if (!words) return false;
+  const std::string& bytes = *words;
   if (bytes.size() % 4 != 0 || sha256Hex(bytes.data(), bytes.size()) != spvSha) return false;
   out.spirv.resize(bytes.size() / 4);
   std::memcpy(out.spirv.data(), bytes.data(), bytes.size());
@@ -104,7 +111,19 @@ bool readSpirvCache(const fs::path& dir, const std::string& key, CompiledShader&
   return true;
 }
 
-void writeSpirvCache(const fs::path& dir, const std::string& key, const CompiledShader& c) {
+std::string writeSpirvCache(const fs::path& dir, const std::string& key, const CompiledShader& c) {
+  if (dir.empty()) return "no cache folder (set TAA_SHADER_CACHE, XDG_CACHE_HOME or HOME)";
+  try {
+    writeEntry(dir, key, c);
+  } catch (const std::runtime_error& e) {  // the folder, an entry's name, an include gone since
+    return e.what();
+  }
+  return "";
+}
+
+namespace {
+
+void writeEntry(const fs::path& dir, const std::string& key, const CompiledShader& c) {
   createOutputDirectory(dir);
   const std::string_view bytes(reinterpret_cast<const char*>(c.spirv.data()), c.spirv.size() * 4);
   // Words first: a deps file never names SPIR-V that is not there.
@@ -117,6 +136,8 @@ void writeSpirvCache(const fs::path& dir, const std::string& key, const Compiled
             con.name + "\n";
   writeFileAtomically(dir / (key + ".deps"), deps);
 }
+
+}  // namespace
 
 fs::path userShaderCacheDir() {
   if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;

@@ -22,7 +22,10 @@ bool readSpirvCache(const std::filesystem::path& dir, const std::string& key, Co
                     std::string& why);
 
 // Writes entry KEY (the words first, so a deps file never names SPIR-V that is not there).
-// Throws OutputError when the folder cannot be written.
-void writeSpirvCache(const std::filesystem::path& dir, const std::string& key, const CompiledShader& c);
+// Returns "" when written, else why not (no folder, one that cannot be written, something not a
+// file under the entry's name): the cache only saves compile time, so its failure costs the
+// next run a compile, never this one its shader.
+std::string writeSpirvCache(const std::filesystem::path& dir, const std::string& key,
+                            const CompiledShader& c);
 
 }  // namespace taa::user

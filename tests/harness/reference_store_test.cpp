@@ -3,7 +3,6 @@
 // under its limit, and the key (run/reference_key.h) misses when any input of the reference does.
 #include "api/reference_store.h"
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -14,7 +13,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -28,6 +26,7 @@
 #include "run/build_identity.h"
 #include "run/reference_key.h"
 #include "scene/build_scene.h"
+#include "support/fifo_guard.h"
 #include "support/gpu.h"
 #include "support/text.h"
 
@@ -136,8 +135,7 @@ TEST(ReferenceStore, AStrayTemporaryFileIsIgnoredAndRemovedLater) {
 // Under an entry's name, nothing but a regular file is read: a FIFO is never waited on, a link
 // never followed (nor what it leads to dated) and a device never read; each is dropped with a
 // note and its reference rendered again. A folder that cannot be dropped costs its own entry,
-// not the cache. Should a load wait on the FIFO, the test opens the FIFO's other end so that
-// the bug fails the test instead of hanging it.
+// not the cache.
 TEST(ReferenceStore, NothingButAFileTheStoreWroteIsReadAsAnEntry) {
   const fs::path dir = freshFolder();
   std::ostringstream notes;
@@ -153,13 +151,8 @@ TEST(ReferenceStore, NothingButAFileTheStoreWroteIsReadAsAnEntry) {
   ASSERT_EQ(::mkfifo(entryOf("fifo").c_str(), 0600), 0);
   fs::create_directories(entryOf("folder") / "inside");
   for (const char* name : {"fifo", "link", "device", "folder"}) {
-    auto loaded = std::async(std::launch::async, [&] { return store.load(keyOf(name)); });
-    if (loaded.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
-      ADD_FAILURE() << name << ": the load waits on it";
-      const int writer = ::open(entryOf(name).c_str(), O_WRONLY | O_NONBLOCK);
-      if (writer >= 0) ::close(writer);
-    }
-    EXPECT_FALSE(loaded.get()) << name;
+    EXPECT_FALSE(test::readWithoutWaitingOn(entryOf(name), [&] { return store.load(keyOf(name)); }))
+        << name;
     const std::string said = std::string(name) == "folder" ? "cannot drop " : "dropped ";
     EXPECT_NE(notes.str().find(said + keyOf(name) + ".ref"), std::string::npos) << name << "\n"
                                                                                 << notes.str();

@@ -2,18 +2,15 @@
 // reader, so whatever sits there under a shader's name (a FIFO, a link to a device, a file cut
 // short) is an environment error naming the file and the fix, never a hang or a module of
 // partial words.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <string>
 
 #include "core/errors.h"
+#include "support/fifo_guard.h"
 #include "vk/pipeline.h"
 
 namespace taa::vk {
@@ -23,7 +20,7 @@ namespace fs = std::filesystem;
 
 // The message readSpirvFile refuses `path` with; a failure (not a hang) when it reads or waits.
 std::string refusal(const fs::path& path) {
-  auto reading = std::async(std::launch::async, [&]() -> std::string {
+  const std::string what = test::readWithoutWaitingOn(path, [&]() -> std::string {
     try {
       readSpirvFile(path.string());
     } catch (const EnvironmentError& e) {
@@ -31,12 +28,6 @@ std::string refusal(const fs::path& path) {
     }
     return "read";
   });
-  if (reading.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
-    ADD_FAILURE() << path << ": the read waits on it";
-    const int writer = ::open(path.c_str(), O_WRONLY | O_NONBLOCK);  // lets it go on
-    if (writer >= 0) ::close(writer);
-  }
-  const std::string what = reading.get();
   EXPECT_NE(what, "read") << path;
   return what;
 }

@@ -1,16 +1,13 @@
 // The SPIR-V cache of users' resolves (user/spirv_cache.h): a second compile comes from the
 // cache until a file it read changes, a damaged entry is compiled again, the key keeps its parts
 // apart, and an entry keeps what the source declares.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <future>
 
+#include "support/fifo_guard.h"
 #include "support/shader_folder.h"
 #include "support/text.h"
 #include "user/glsl_compiler.h"
@@ -145,14 +142,8 @@ void main() {
 
   fs::remove(deps);
   ASSERT_EQ(::mkfifo(deps.c_str(), 0600), 0);
-  auto compiling =
-      std::async(std::launch::async, [&] { return compileComputeShader(file, options_); });
-  if (compiling.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
-    ADD_FAILURE() << "the compile waits on a FIFO in the cache";
-    const int writer = ::open(deps.c_str(), O_WRONLY | O_NONBLOCK);  // lets it go on
-    if (writer >= 0) ::close(writer);
-  }
-  const auto second = compiling.get();
+  const auto second =
+      test::readWithoutWaitingOn(deps, [&] { return compileComputeShader(file, options_); });
   EXPECT_FALSE(second.fromCache);
   EXPECT_EQ(second.spirv, first.spirv);
   EXPECT_NE(second.provenance.find("not a file the cache wrote"), std::string::npos)

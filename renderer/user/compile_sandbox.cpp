@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -80,11 +81,12 @@ bool sandboxWriteAll(int fd, const char* data, size_t size) {
   return true;
 }
 
-// The child's state for sandboxCpuBudget: the pipe, the whole's CPU limit, and the reply
-// the SIGXCPU handler writes (prepared beforehand: a handler may only write and exit).
+// The child's state for sandboxCpuBudget: the pipe, the reply the SIGXCPU handler writes
+// (prepared beforehand: a handler may only write and exit) and the phase's CPU timer.
 int gSandboxFd = -1;
-int gSandboxCpuSeconds = 0;
 std::string* gSandboxBudgetReply = nullptr;
+timer_t gSandboxPhaseTimer{};
+bool gSandboxPhaseTimerMade = false;
 
 void sandboxBudgetHandler(int) {
   if (gSandboxBudgetReply) {
@@ -95,24 +97,27 @@ void sandboxBudgetHandler(int) {
   _exit(4);
 }
 
-// The soft CPU limit at `seconds` of the child's whole life (the hard one stays).
-void sandboxSetCpuLimit(long seconds) {
-  rlimit cpu{};
-  getrlimit(RLIMIT_CPU, &cpu);
-  cpu.rlim_cur = std::min<rlim_t>(rlim_t(seconds), cpu.rlim_max);
-  setrlimit(RLIMIT_CPU, &cpu);
-}
-
-long sandboxCpuSpent() {
-  rusage used{};
-  getrusage(RUSAGE_SELF, &used);
-  return long(used.ru_utime.tv_sec + used.ru_stime.tv_sec) + 1;
+// Arms the phase timer `ms` of the child's CPU time (all its threads) from now; 0 disarms it.
+// A CPU-clock timer, not RLIMIT_CPU: the limit counts whole seconds, so a phase of 3 s
+// stopped anywhere up to 4 s.
+// Without a timer (timer_create failed) a phase has only the whole's limit, which ends it too.
+void sandboxArmPhase(long ms) {
+  if (!gSandboxPhaseTimerMade) {
+    sigevent ev{};
+    ev.sigev_notify = SIGEV_SIGNAL;
+    ev.sigev_signo = SIGXCPU;
+    if (timer_create(CLOCK_PROCESS_CPUTIME_ID, &ev, &gSandboxPhaseTimer) != 0) return;
+    gSandboxPhaseTimerMade = true;
+  }
+  itimerspec t{};
+  t.it_value.tv_sec = ms / 1000;
+  t.it_value.tv_nsec = (ms % 1000) * 1000000L;
+  timer_settime(gSandboxPhaseTimer, 0, &t, nullptr);
 }
 
 [[noreturn]] void sandboxChild(int fd, const std::function<std::string()>& work,
                                const SandboxLimits& limits) {
   gSandboxFd = fd;
-  gSandboxCpuSeconds = limits.cpuSeconds;
   const rlimit core{0, 0};
   setrlimit(RLIMIT_CORE, &core);
   const rlimit cpu{rlim_t(limits.cpuSeconds), rlim_t(limits.cpuSeconds + 1)};
@@ -142,18 +147,18 @@ std::mutex& sandboxMutex() {
 
 }  // namespace
 
-void sandboxCpuBudget(int seconds, const std::string& result) {
+void sandboxCpuBudget(std::chrono::milliseconds budget, const std::string& result) {
   if (gSandboxFd < 0) return;  // not in a sandbox's child
   if (result.empty()) {
+    sandboxArmPhase(0);
     signal(SIGXCPU, SIG_DFL);
-    sandboxSetCpuLimit(gSandboxCpuSeconds);
     return;
   }
   static std::string reply;
   reply = std::string(1, kSandboxDone) + result;
   gSandboxBudgetReply = &reply;
   signal(SIGXCPU, &sandboxBudgetHandler);
-  sandboxSetCpuLimit(std::min<long>(sandboxCpuSpent() + seconds, gSandboxCpuSeconds));
+  sandboxArmPhase(std::max<long>(1, long(budget.count())));
 }
 
 SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits,

@@ -4,6 +4,7 @@
 // the harness at most those limits and a message, never a crash or a hang of its own.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -35,10 +36,11 @@ struct SandboxOutcome {
 SandboxOutcome runSandboxed(const std::function<std::string()>& work, const SandboxLimits& limits,
                             const std::function<void()>& inParent = {});
 
-// Inside `work` only: from now on the child may use `seconds` more of CPU; past them it ends
-// at once as if `work` had returned `result` (a phase of the work with a tighter budget than
-// the whole, such as glslang's preprocessor). An empty `result` restores the whole's limit.
-void sandboxCpuBudget(int seconds, const std::string& result);
+// Inside `work` only: from now on the child may use `budget` more of CPU; past it the child
+// ends at once as if `work` had returned `result` (a phase of the work with a tighter budget
+// than the whole, such as glslang's preprocessor). An empty `result` ends the phase. The
+// whole's limit holds throughout: a phase that outlasts it ends with `result` too.
+void sandboxCpuBudget(std::chrono::milliseconds budget, const std::string& result);
 
 // "more than 20 s of CPU", "more than 1024 MiB of memory", "signal 11 (Segmentation fault)".
 std::string describeSandboxEnd(const SandboxOutcome& outcome, const SandboxLimits& limits);

@@ -6,6 +6,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -145,6 +146,13 @@ void warmBuiltinsOnce(ShaderLanguage language) {
   });
 }
 
+// "3 s", "0.25 s".
+std::string secondsText(std::chrono::milliseconds d) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", double(d.count()) / 1000.0);
+  return buf;
+}
+
 // glslang's log, less its "ERROR: " prefixes, the trailing "N compilation errors" line,
 // lines containing `drop` and the echoes of a #error (it stops the preprocessor, which then
 // reports each #if still open as a "missing #endif"), so each line starts with the user's file
@@ -229,14 +237,14 @@ std::string glslangInChild(const fs::path& source, const std::string& text, cons
     UserIncluder includer(root, headerDir);
     glslang::TShader shader(EShLangCompute);
     configure(shader);
-    sandboxCpuBudget(kPreprocessCpuSeconds,
+    sandboxCpuBudget(o.preprocessCpu,
                      "E" + name + ": its preprocessor ran more than " +
-                         std::to_string(kPreprocessCpuSeconds) +
-                         " s of CPU, the bound for macros and includes (a macro that expands "
+                         secondsText(o.preprocessCpu) +
+                         " of CPU, the bound for macros and includes (a macro that expands "
                          "itself many times over?); simplify the macros");
     const bool preprocessedOk = shader.preprocess(GetDefaultResources(), version, ENoProfile, false,
                                                   false, messages, &preprocessed, includer);
-    sandboxCpuBudget(0, "");
+    sandboxCpuBudget({}, "");
     if (!preprocessedOk) return fail(includer, shader.getInfoLog());
     if (preprocessed.size() > kMaxPreprocessedBytes)
       return "E" + name + ": expands to " + std::to_string(preprocessed.size()) +

@@ -6,6 +6,7 @@
 // includes, so a second run skips glslang and an edited header is never served stale.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "api/loader_errors.h"  // ShaderCompileError
 #include "user/declared_constants.h"
+#include "user/shader_bounds.h"
 
 namespace taa::user {
 
@@ -31,6 +33,8 @@ struct CompileOptions {
   // taa.shader_defines, valid (api/shader_defines.h): #define lines before the source, part of the
   // cache key.
   std::vector<std::string> defines;
+  // The preprocessor's CPU bound; the tests of the bound itself shorten it.
+  std::chrono::milliseconds preprocessCpu = kPreprocessCpu;
 };
 
 struct CompiledShader {

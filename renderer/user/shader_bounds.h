@@ -5,6 +5,7 @@
 // arises, and everything glslang does runs in a child process under compileLimits().
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -23,7 +24,7 @@ inline constexpr uint64_t kMaxIncludedBytes = uint64_t(16) << 20;      // all he
 inline constexpr uint64_t kMaxPreprocessedBytes = uint64_t(4) << 20;  // after macros and includes
 // CPU for the preprocessor alone: a 4 MiB expansion takes well under a second, a macro bomb
 // would take minutes.
-inline constexpr int kPreprocessCpuSeconds = 3;
+inline constexpr std::chrono::milliseconds kPreprocessCpu{3000};
 inline constexpr int kMaxExpressionDepth = 16384;  // operators and brackets nested in one statement
 // Private (Function and Private storage) bytes per invocation: a per-pixel resolve needs a few
 // hundred bytes (a 5x5 neighbourhood of vec4 is 400); lavapipe compiles arrays far beyond this

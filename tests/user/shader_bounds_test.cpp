@@ -2,9 +2,13 @@
 // the driver (expression depth, macro and include bombs, private and shared memory) and what
 // it may declare (taa_user.h's interface only). Each is refused with a message naming the
 // shader and the bound, from a compile in a child process that cannot take the harness down.
+#include "user/shader_bounds.h"
+
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <time.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <new>
@@ -13,7 +17,6 @@
 #include "support/shader_folder.h"
 #include "user/compile_sandbox.h"
 #include "user/glsl_compiler.h"
-#include "user/shader_bounds.h"
 #include "user/user_interface.h"
 
 namespace taa::user {
@@ -103,14 +106,15 @@ TEST_F(ShaderBoundsTest, ExpressionDepthCountsOperatorsAndBracketsPerStatement) 
 
 TEST_F(ShaderBoundsTest, MacroBombIsStoppedByThePreprocessorsCpuBound) {
   // 30 doublings: 2^30 tokens from 600 bytes (the bomb: 9 s and 2.2 GB, then SIGSEGV).
+  // A quarter of a second stops it as the shipped 3 s would, twelve times sooner.
+  options_.preprocessCpu = std::chrono::milliseconds(250);
   std::string defs = "#define A0 x\n";
   for (int i = 1; i <= 30; ++i)
     defs += "#define A" + std::to_string(i) + " (A" + std::to_string(i - 1) + "+A" +
             std::to_string(i - 1) + ")\n";
   const auto file = resolve("bomb.comp", defs + "float f(float x) { return A30; }", "vec3(f(1.0))");
   const std::string msg = refusal(file);
-  EXPECT_HAS(msg, "bomb.comp: its preprocessor ran more than " +
-                      std::to_string(kPreprocessCpuSeconds) + " s of CPU");
+  EXPECT_HAS(msg, "bomb.comp: its preprocessor ran more than 0.25 s of CPU");
   // Fewer doublings of a long name expand past the preprocessed-size bound instead, in a
   // fraction of the CPU bound: 2^15 names of 200 letters make 6.6 MB from 130k tokens, where
   // 2^20 one-letter names (4.2M tokens) took over 3 s of CPU under ASan on a busy CI machine.
@@ -283,6 +287,18 @@ TEST_F(ShaderBoundsTest, ConstantIdsAboveTheHeadersRangeAreRefused) {
                    "taa_color_at(p) * k"));
 }
 
+// Spins until this process has used `d` more of CPU.
+void spinCpu(std::chrono::milliseconds d) {
+  const auto used = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
+  };
+  const auto end = used() + d;
+  while (used() < end) {
+  }
+}
+
 TEST(CompileSandbox, ReportsHowTheChildEnded) {
   SandboxLimits l;
   l.cpuSeconds = 1;
@@ -304,7 +320,7 @@ TEST(CompileSandbox, ReportsHowTheChildEnded) {
   // A phase with its own budget ends with the reply prepared for it.
   const SandboxOutcome phase = runSandboxed(
       [] {
-        sandboxCpuBudget(1, "phase over");
+        sandboxCpuBudget(std::chrono::milliseconds(100), "phase over");
         volatile unsigned long n = 0;
         for (;;) n = n + 1;
         return std::string();
@@ -312,6 +328,17 @@ TEST(CompileSandbox, ReportsHowTheChildEnded) {
       SandboxLimits{});
   EXPECT_EQ(phase.end, SandboxEnd::Done);
   EXPECT_EQ(phase.output, "phase over");
+  // An ended phase's budget no longer counts: the work runs on past it.
+  const SandboxOutcome after = runSandboxed(
+      [] {
+        sandboxCpuBudget(std::chrono::milliseconds(50), "phase over");
+        sandboxCpuBudget({}, "");
+        spinCpu(std::chrono::milliseconds(200));
+        return std::string("whole");
+      },
+      SandboxLimits{});
+  EXPECT_EQ(after.end, SandboxEnd::Done);
+  EXPECT_EQ(after.output, "whole");
 }
 
 // What the parent makes before the fork (glslang's built-in tables), the child inherits; what

@@ -63,10 +63,8 @@ TEST_F(HarnessCli, ManifestRecordsReasonDriverCommitAndHistory) {
 
 TEST_F(HarnessCli, ChangedPixelsInTheSameEnvironmentAreARegression) {
   ASSERT_EQ(bless("small").exitCode, 0);
-  // A different alpha is a real change of the output.
-  writeCase("small",
-            std::string(kSmallCase)
-                .replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.5}})"));
+  // A brighter sun is a real change of the output.
+  writeCase("small", test::smallCaseWith(R"("lighting": {"intensity": 4.5})"));
   const auto r = run("small");
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("pixels differ from this environment's positive"),
@@ -106,9 +104,7 @@ TEST_F(HarnessCli, OtherCpuFeatureLevelUsesTolerancesAndStillCatchesARegression)
   EXPECT_NE(res["fingerprint"].get<std::string>().find("override:sse4.1"), std::string::npos);
   EXPECT_TRUE(res["cases"][0]["frames"][1]["tolerance_mode"].get<bool>());
   // The same environment change with a real regression (no jitter: the frame aliases).
-  writeCase("small", std::string(kSmallCase)
-                         .replace(std::string(kSmallCase).rfind('}'), 1,
-                                  R"(, "jitter": {"pattern": "none"}})"));
+  writeCase("small", test::smallCaseWith(R"("jitter": {"pattern": "none"})"));
   r = run("small", "", sse);
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("FAIL small frame 5 golden tolerance"), std::string::npos) << r.output;
@@ -186,9 +182,7 @@ TEST_F(HarnessCli, ReblessOnlyTheCasesThatFailedLastRun) {
 
 TEST_F(HarnessCli, MetricModeBoundsDriftInsteadOfBitExactness) {
   ASSERT_EQ(bless("small").exitCode, 0);
-  writeCase("small",
-            std::string(kSmallCase)
-                .replace(std::string(kSmallCase).rfind('}'), 1, R"(, "taa": {"alpha": 0.11}})"));
+  writeCase("small", test::smallCaseWith(R"("lighting": {"intensity": 3.1})"));
   EXPECT_EQ(run("small").exitCode, 1);
   EXPECT_EQ(run("small", "--metric flip_mean --above 0.5").exitCode, 0);
   const auto r = run("small", "--metric flip_mean --above 0.0000001");

@@ -14,7 +14,7 @@ TEST_F(HarnessCli, SweepFindsThePresetsOfTheCasesFolderAboveTheCase) {
   fs::create_directories(root_ / "cases/presets");
   fs::create_directories(root_ / "cases/deeper");
   std::ofstream(root_ / "cases/presets/presets.json") << R"({"mine": {"taa": {"alpha": 0.2}}})";
-  std::ofstream(root_ / "cases/deeper/small.json") << kSmallCase;
+  std::ofstream(root_ / "cases/deeper/small.json") << test::smallTaaCase();
   const fs::path out = root_ / "sweep";
   auto r = harness("sweep " + (root_ / "cases/deeper/small.json").string() + " --presets mine --out " +
                    out.string());

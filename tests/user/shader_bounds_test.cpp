@@ -116,8 +116,8 @@ TEST_F(ShaderBoundsTest, MacroBombIsStoppedByThePreprocessorsCpuBound) {
   const std::string msg = refusal(file);
   EXPECT_HAS(msg, "bomb.comp: its preprocessor ran more than 0.25 s of CPU");
   // Fewer doublings of a long name expand past the preprocessed-size bound instead, in a
-  // fraction of the shipped CPU bound: 2^15 names of 200 letters make 6.6 MB from 130k tokens, where
-  // 2^20 one-letter names (4.2M tokens) took over 3 s of CPU under ASan on a busy CI machine.
+  // fraction of the shipped CPU bound: 2^15 names of 200 letters make 6.6 MB from 130k tokens,
+  // where 2^20 one-letter names (4.2M tokens) took over 3 s of CPU under ASan on a busy CI machine.
   options_.preprocessCpu = kPreprocessCpu;
   const std::string name(200, 'x');
   std::string small = "#define B0 " + name + "\n";

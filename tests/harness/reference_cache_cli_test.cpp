@@ -18,8 +18,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Moving (every frame a new reference), with the energy invariant reading the reference.
+// Moving (every frame a new reference), with the energy invariant reading the reference. No
+// temporal pass: the reference reads none of its settings, and a run costs half the CPU without
+// the resolve's pipelines. kRefTaaCase has it, for the test that edits the resolve's SPIR-V.
 const char* kRefCase = R"({
+  "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
+  "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
+  "script": {"frames": 6}, "output": {"frames": [5]}, "reference": {"samples": 4},
+  "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 1}},
+  "taa": {"mode": "off"}
+})";
+const char* kRefTaaCase = R"({
   "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
   "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
   "script": {"frames": 6}, "output": {"frames": [5]}, "reference": {"samples": 4},
@@ -130,6 +139,7 @@ TEST_F(ReferenceCacheCli, TwoRunsAtOnceOnOneCacheGiveTheResultsOfOne) {
 // The SPIR-V of a shader the reference runs is part of the key; the resolve's is not. The
 // header's generator word (word 2) is read by no consumer: the shader runs the same.
 TEST_F(ReferenceCacheCli, AReferenceShaderEditMissesAResolveShaderEditHits) {
+  writeCase("ref", kRefTaaCase);
   const fs::path shaders = root_ / "shaders";
   fs::copy(shaderFolder(), shaders, fs::copy_options::recursive);
   const std::string env = "TAA_SHADER_DIR=" + shaders.string();

@@ -40,7 +40,19 @@ std::optional<std::string> readEntryFile(const fs::path& file, bool& foreign) {
   }
 }
 
-void writeEntry(const fs::path& dir, const std::string& key, const CompiledShader& c);
+void writeEntry(const fs::path& dir, const std::string& key, const CompiledShader& c) {
+  createOutputDirectory(dir);
+  const std::string_view bytes(reinterpret_cast<const char*>(c.spirv.data()), c.spirv.size() * 4);
+  // Words first: a deps file never names SPIR-V that is not there.
+  writeFileAtomically(dir / (key + ".spv"), bytes);
+  std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
+  for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
+  for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
+  for (const auto& con : c.constants)
+    deps += std::string("con ") + paramTypeName(con.type) + " " + std::to_string(con.id) + " " +
+            con.name + "\n";
+  writeFileAtomically(dir / (key + ".deps"), deps);
+}
 
 }  // namespace
 
@@ -120,24 +132,6 @@ std::string writeSpirvCache(const fs::path& dir, const std::string& key, const C
   }
   return "";
 }
-
-namespace {
-
-void writeEntry(const fs::path& dir, const std::string& key, const CompiledShader& c) {
-  createOutputDirectory(dir);
-  const std::string_view bytes(reinterpret_cast<const char*>(c.spirv.data()), c.spirv.size() * 4);
-  // Words first: a deps file never names SPIR-V that is not there.
-  writeFileAtomically(dir / (key + ".spv"), bytes);
-  std::string deps = "spv " + sha256Hex(bytes.data(), bytes.size()) + "\n";
-  for (const auto& inc : c.includes) deps += "inc " + fileSha(inc) + " " + inc.string() + "\n";
-  for (const auto& cap : c.capabilities) deps += "cap " + cap + "\n";
-  for (const auto& con : c.constants)
-    deps += std::string("con ") + paramTypeName(con.type) + " " + std::to_string(con.id) + " " +
-            con.name + "\n";
-  writeFileAtomically(dir / (key + ".deps"), deps);
-}
-
-}  // namespace
 
 fs::path userShaderCacheDir() {
   if (const char* env = std::getenv("TAA_SHADER_CACHE"); env && *env) return env;

@@ -18,22 +18,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Moving (every frame a new reference), with the energy invariant reading the reference. No
-// temporal pass: the reference reads none of its settings, and a run costs half the CPU without
-// the resolve's pipelines. kRefTaaCase has it, for the test that edits the resolve's SPIR-V.
-const char* kRefCase = R"({
+// Moving (every frame a new reference), with the energy invariant reading the reference, in
+// taa.mode `mode`. "off" unless the test is about the resolve: the reference reads none of its
+// settings, and a run costs half the CPU without the resolve's pipelines.
+std::string refCase(const std::string& mode = "off") {
+  return R"({
   "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
   "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
   "script": {"frames": 6}, "output": {"frames": [5]}, "reference": {"samples": 4},
   "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 1}},
-  "taa": {"mode": "off"}
+  "taa": {"mode": ")" +
+         mode + R"("}
 })";
-const char* kRefTaaCase = R"({
-  "scene": {"builtin": "checkerboard"}, "render": {"width": 48, "height": 27},
-  "camera": {"strafe": {"speed": 0.5, "distance": 0.2}},
-  "script": {"frames": 6}, "output": {"frames": [5]}, "reference": {"samples": 4},
-  "checks": {"golden": false, "invariants": ["energy"], "energy": {"epsilon": 1}}
-})";
+}
 
 struct Counts {
   long rendered = -1, fromDisk = -1, reused = -1;
@@ -52,7 +49,7 @@ class ReferenceCacheCli : public test::HarnessCli {
   void SetUp() override {
     HarnessCli::SetUp();
     cache_ = root_ / "reference-cache";
-    writeCase("ref", kRefCase);
+    writeCase("ref", refCase());
   }
   test::ProcessResult runRef(const std::string& extra = "", const std::string& env = "") {
     return run("ref", extra, "TAA_REFERENCE_CACHE_DIR=" + cache_.string() + " " + env);
@@ -139,7 +136,7 @@ TEST_F(ReferenceCacheCli, TwoRunsAtOnceOnOneCacheGiveTheResultsOfOne) {
 // The SPIR-V of a shader the reference runs is part of the key; the resolve's is not. The
 // header's generator word (word 2) is read by no consumer: the shader runs the same.
 TEST_F(ReferenceCacheCli, AReferenceShaderEditMissesAResolveShaderEditHits) {
-  writeCase("ref", kRefTaaCase);
+  writeCase("ref", refCase("full"));  // the resolve's SPIR-V is edited
   const fs::path shaders = root_ / "shaders";
   fs::copy(shaderFolder(), shaders, fs::copy_options::recursive);
   const std::string env = "TAA_SHADER_DIR=" + shaders.string();
